@@ -1,0 +1,418 @@
+# The grasps class: a set of joint-angle recordings with their metadata.
+# Every reader, the simulator and every generator returns one; every model,
+# plot and exporter takes one. Stored as a list with five fields:
+#   recordings  list of numeric matrices, frames x DoF, colnames = dofs
+#   meta        data.frame, one row per recording (id, grasp, subject, object,
+#               trial, n_frames, source, and any extra columns)
+#   dofs        character, the DoF names
+#   rate        sampling rate in Hz
+#   unit        angle unit: "deg", "rad" or "raw" (raw sensor counts)
+
+grasp_units <- c("deg", "rad", "raw")
+
+#' Create a set of grasp recordings
+#'
+#' `grasps()` is the package's one data class: a set of recordings, each a
+#' frames x DoF numeric matrix of joint angles, with one row of metadata per
+#' recording and set-level attributes (DoF names, sampling rate, angle unit).
+#' Readers ([read_hust()], [read_graspdb14()]), the simulator
+#' ([simulate_grasps()]) and generators ([generate()]) all return this class.
+#'
+#' @param recordings A list of numeric matrices (frames x DoF), or a single
+#'   matrix for a set of one. Every matrix must have `length(dofs)` columns,
+#'   at least one row and only finite values.
+#' @param meta A data frame with one row per recording. Recognised columns:
+#'   `id` (character, unique), `grasp` (Feix type as name or id 1-33; `NA` for
+#'   unlabelled motion), `subject`, `object`, `trial`, `source`. Missing
+#'   columns are filled in (ids `"r1"`, `"r2"`, ...; others `NA`); extra
+#'   columns are kept. `n_frames` is always recomputed.
+#' @param dofs DoF names. Defaults to the column names of the first recording,
+#'   or to the 16 HUST DoFs ([hust_dofs]) when those are absent and the
+#'   recordings have 16 columns.
+#' @param rate Sampling rate in Hz (positive number).
+#' @param unit Angle unit: `"deg"`, `"rad"` or `"raw"` (raw sensor counts).
+#' @return An object of class `grasps`.
+#' @seealso [simulate_grasps()], [as.data.frame.grasps()], [autoplot.grasps()]
+#' @export
+#' @examples
+#' set.seed(1)
+#' recs <- replicate(3, matrix(rnorm(40 * 16), 40, 16), simplify = FALSE)
+#' g <- grasps(recs, meta = data.frame(grasp = c("Tripod", "Tripod", "Ring"),
+#'                                     subject = c("s1", "s2", "s1")))
+#' g
+#' g[g$meta$grasp == "Tripod"]
+grasps <- function(recordings, meta = NULL, dofs = NULL, rate = 50, unit = "deg") {
+  call <- rlang::caller_env()
+  if (is.matrix(recordings) || is.data.frame(recordings)) recordings <- list(recordings)
+  if (!is.list(recordings)) {
+    hm_abort("{.arg recordings} must be a list of numeric matrices, not {.obj_type_friendly {recordings}}.",
+             "bad_input", argument = "recordings", call = call)
+  }
+  if (length(recordings) == 0L) {
+    hm_abort("{.arg recordings} is empty: a grasps set needs at least one recording.",
+             "bad_input", argument = "recordings", call = call)
+  }
+  check_rate(rate, call = call)
+  unit <- check_unit(unit, call = call)
+  ids <- if (!is.null(meta) && "id" %in% names(meta)) as.character(meta$id) else NULL
+  if (is.null(ids)) ids <- names(recordings)
+  if (is.null(ids) || anyNA(ids) || any(ids == "")) ids <- paste0("r", seq_along(recordings))
+  recordings <- lapply(seq_along(recordings), function(i) {
+    as_recording_matrix(recordings[[i]], ids[i], call = call)
+  })
+  dofs <- resolve_dofs(dofs, recordings, call = call)
+  for (i in seq_along(recordings)) {
+    if (ncol(recordings[[i]]) != length(dofs)) {
+      hm_abort(c("Recording {.val {ids[i]}} has {ncol(recordings[[i]])} DoF column{?s}, expected {length(dofs)}.",
+                 i = "Every recording must have one column per DoF ({.val {dofs}})."),
+               "bad_recording", recording = ids[i], call = call)
+    }
+    colnames(recordings[[i]]) <- dofs
+  }
+  meta <- build_meta(meta, recordings, ids, call = call)
+  names(recordings) <- meta$id
+  new_grasps(recordings, meta, dofs, rate, unit)
+}
+
+# Low-level constructor: no validation, for internal use by code that already
+# guarantees the invariants (subsetting, generators).
+new_grasps <- function(recordings, meta, dofs, rate, unit) {
+  meta$n_frames <- vapply(recordings, nrow, integer(1))
+  rownames(meta) <- NULL
+  structure(list(recordings = recordings, meta = meta, dofs = dofs,
+                 rate = rate, unit = unit), class = "grasps")
+}
+
+check_rate <- function(rate, call = rlang::caller_env()) {
+  if (!is.numeric(rate) || length(rate) != 1L || !is.finite(rate) || rate <= 0) {
+    hm_abort("{.arg rate} must be one positive number of frames per second, not {.val {format(rate)}}.",
+             "bad_input", argument = "rate", call = call)
+  }
+  invisible(rate)
+}
+
+check_unit <- function(unit, call = rlang::caller_env()) {
+  if (!is.character(unit) || length(unit) != 1L || !unit %in% grasp_units) {
+    hm_abort("{.arg unit} must be one of {.val {grasp_units}}, not {.val {format(unit)}}.",
+             "bad_input", argument = "unit", call = call)
+  }
+  unit
+}
+
+as_recording_matrix <- function(x, id, call = rlang::caller_env()) {
+  if (is.data.frame(x)) {
+    num <- vapply(x, is.numeric, logical(1))
+    if (!all(num)) {
+      hm_abort("Recording {.val {id}} has non-numeric column{?s} {.val {names(x)[!num]}}.",
+               "bad_recording", recording = id, call = call)
+    }
+    x <- as.matrix(x)
+  }
+  if (is.numeric(x) && is.null(dim(x))) {
+    hm_abort("Recording {.val {id}} is a vector; it must be a frames x DoF matrix.",
+             "bad_recording", recording = id, call = call)
+  }
+  if (!is.matrix(x) || !is.numeric(x)) {
+    hm_abort("Recording {.val {id}} must be a numeric matrix, not {.obj_type_friendly {x}}.",
+             "bad_recording", recording = id, call = call)
+  }
+  if (nrow(x) == 0L || ncol(x) == 0L) {
+    hm_abort("Recording {.val {id}} has zero length ({nrow(x)} frame{?s} x {ncol(x)} DoF{?s}).",
+             "bad_recording", recording = id, call = call)
+  }
+  bad <- which(!is.finite(x), arr.ind = TRUE)
+  if (nrow(bad) > 0L) {
+    hm_abort(c("Recording {.val {id}} has {nrow(bad)} missing or infinite value{?s}.",
+               i = "First at frame {bad[1, 1]}, DoF column {bad[1, 2]}."),
+             "bad_recording", recording = id, call = call)
+  }
+  storage.mode(x) <- "double"
+  x
+}
+
+resolve_dofs <- function(dofs, recordings, call = rlang::caller_env()) {
+  if (is.null(dofs)) dofs <- colnames(recordings[[1]])
+  if (is.null(dofs)) {
+    p <- ncol(recordings[[1]])
+    dofs <- if (p == nrow(handmotion::hust_dofs)) handmotion::hust_dofs$name else paste0("dof", seq_len(p))
+  }
+  if (!is.character(dofs) || anyNA(dofs) || anyDuplicated(dofs)) {
+    hm_abort("{.arg dofs} must be unique, non-missing names.", "bad_input",
+             argument = "dofs", call = call)
+  }
+  dofs
+}
+
+build_meta <- function(meta, recordings, ids, call = rlang::caller_env()) {
+  n <- length(recordings)
+  if (is.null(meta)) meta <- data.frame(row.names = seq_len(n))
+  if (!is.data.frame(meta)) {
+    hm_abort("{.arg meta} must be a data frame, not {.obj_type_friendly {meta}}.",
+             "bad_input", argument = "meta", call = call)
+  }
+  if (nrow(meta) != n) {
+    hm_abort("{.arg meta} has {nrow(meta)} row{?s} but there {?is/are} {n} recording{?s}.",
+             "bad_input", argument = "meta", call = call)
+  }
+  meta <- as.data.frame(meta, stringsAsFactors = FALSE)
+  meta$id <- ids
+  if (anyDuplicated(ids)) {
+    hm_abort("Recording ids must be unique; duplicated: {.val {unique(ids[duplicated(ids)])}}.",
+             "bad_input", argument = "meta", call = call)
+  }
+  meta$grasp <- as_feix_grasp(if ("grasp" %in% names(meta)) meta$grasp else rep(NA, n),
+                              ids = ids, call = call)
+  meta$subject <- if ("subject" %in% names(meta)) as.character(meta$subject) else NA_character_
+  meta$object <- if ("object" %in% names(meta)) as.character(meta$object) else NA_character_
+  meta$trial <- if ("trial" %in% names(meta)) as.integer(meta$trial) else NA_integer_
+  meta$source <- if ("source" %in% names(meta)) as.character(meta$source) else NA_character_
+  meta$n_frames <- vapply(recordings, nrow, integer(1))
+  core <- c("id", "grasp", "subject", "object", "trial", "n_frames", "source")
+  meta[c(core, setdiff(names(meta), core))]
+}
+
+#' Feix grasp type names, in id order 1-33
+#' @noRd
+feix_levels <- function() handmotion::feix_taxonomy$name
+
+#' Convert grasp ids or names to a factor over the 33 Feix types
+#'
+#' Accepts integer ids (1-33), names in any case with spaces, hyphens or
+#' underscores ("power sphere", "Sphere-4-Finger"), an existing factor, or NA.
+#' @noRd
+as_feix_grasp <- function(x, ids = NULL, call = rlang::caller_env()) {
+  lev <- feix_levels()
+  if (is.factor(x)) x <- as.character(x)
+  out <- rep(NA_integer_, length(x))
+  if (is.numeric(x)) {
+    ok <- !is.na(x) & x %in% seq_along(lev)
+    out[ok] <- as.integer(x[ok])
+    bad <- !is.na(x) & !ok
+  } else {
+    key <- function(s) gsub("[^a-z0-9]", "", tolower(s))
+    num <- suppressWarnings(as.integer(x))
+    by_id <- !is.na(num) & num %in% seq_along(lev)
+    out[by_id] <- num[by_id]
+    m <- match(key(x), key(lev))
+    out[!by_id] <- m[!by_id]
+    # the thesis prints type 33 as "Inferrior Pincer"
+    out[!by_id & key(x) == "inferriorpincer"] <- 33L
+    bad <- !is.na(x) & is.na(out)
+  }
+  if (any(bad)) {
+    where <- if (!is.null(ids)) ids[bad] else which(bad)
+    hm_abort(c("Unknown grasp type{?s} {.val {unique(as.character(x[bad]))}}.",
+               i = "In recording{?s} {.val {where}}.",
+               i = "Use a Feix type name (see {.code feix_taxonomy$name}) or an id from 1 to 33."),
+             "unknown_grasp", recording = where, call = call)
+  }
+  factor(lev[out], levels = lev)
+}
+
+#' Access the recordings and metadata of a grasps set
+#'
+#' @param x A [grasps()] object.
+#' @return `recordings()` gives the list of frames x DoF matrices, named by
+#'   recording id; `grasp_meta()` the metadata data frame.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 2, grasps = 1:2, objects = 1, trials = 1)
+#' dim(recordings(g)[[1]])
+#' grasp_meta(g)
+recordings <- function(x) {
+  check_grasps(x)
+  x$recordings
+}
+
+#' @rdname recordings
+#' @export
+grasp_meta <- function(x) {
+  check_grasps(x)
+  x$meta
+}
+
+check_grasps <- function(x, arg = "x", call = rlang::caller_env()) {
+  if (!inherits(x, "grasps")) {
+    hm_abort("{.arg {arg}} must be a {.cls grasps} object, not {.obj_type_friendly {x}}.",
+             "bad_input", argument = arg, call = call)
+  }
+  invisible(x)
+}
+
+#' @export
+length.grasps <- function(x) length(x$recordings)
+
+#' Subset a grasps set
+#'
+#' @param x A [grasps()] object.
+#' @param i Recording indices, logical vector, or recording ids.
+#' @param ... Unused.
+#' @return A `grasps` object with the selected recordings.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 2, grasps = 1:3, objects = 1, trials = 1)
+#' g[1:2]
+#' g[g$meta$grasp == "Medium Wrap"]
+`[.grasps` <- function(x, i, ...) {
+  if (missing(i)) return(x)
+  n <- length(x)
+  if (is.character(i)) {
+    idx <- match(i, x$meta$id)
+    if (anyNA(idx)) {
+      hm_abort("Unknown recording id{?s} {.val {i[is.na(idx)]}}.", "bad_input", argument = "i")
+    }
+  } else if (is.logical(i)) {
+    if (length(i) != n) {
+      hm_abort("A logical index must have length {n}, not {length(i)}.", "bad_input", argument = "i")
+    }
+    idx <- which(i & !is.na(i))
+  } else {
+    idx <- seq_len(n)[i]
+    if (anyNA(idx)) hm_abort("Index out of range (the set has {n} recording{?s}).", "bad_input", argument = "i")
+  }
+  meta <- x$meta[idx, , drop = FALSE]
+  new_grasps(x$recordings[idx], meta, x$dofs, x$rate, x$unit)
+}
+
+#' @export
+print.grasps <- function(x, ...) {
+  m <- x$meta
+  cat(sprintf("<grasps> %d recording%s of %d DoF%s at %g Hz, in %s\n",
+              length(x), if (length(x) == 1) "" else "s", length(x$dofs),
+              if (length(x$dofs) == 1) "" else "s", x$rate, x$unit))
+  if (length(x) > 0) {
+    nf <- m$n_frames
+    cat(sprintf("  frames: %d to %d (mean %.1f)\n", min(nf), max(nf), mean(nf)))
+    ntypes <- length(unique(stats::na.omit(m$grasp)))
+    cat(sprintf("  grasp types: %d%s; subjects: %d; objects: %d\n", ntypes,
+                if (anyNA(m$grasp)) sprintf(" (+%d unlabelled)", sum(is.na(m$grasp))) else "",
+                length(unique(stats::na.omit(m$subject))),
+                length(unique(stats::na.omit(m$object)))))
+    cat("  DoFs:", paste(utils::head(x$dofs, 16), collapse = " "),
+        if (length(x$dofs) > 16) "..." else "", "\n")
+  }
+  invisible(x)
+}
+
+#' Summarise a grasps set by grasp type
+#'
+#' @param object A [grasps()] object.
+#' @param ... Unused.
+#' @return A data frame with one row per grasp type present: number of
+#'   recordings, subjects, objects, and frame-count statistics.
+#' @export
+#' @examples
+#' summary(simulate_grasps(subjects = 3, grasps = 1:4, seed = 1))
+summary.grasps <- function(object, ...) {
+  m <- object$meta
+  g <- addNA(droplevels(m$grasp), ifany = TRUE)
+  rows <- lapply(split(m, g, drop = TRUE), function(d) {
+    data.frame(grasp = as.character(d$grasp[1]), recordings = nrow(d),
+               subjects = length(unique(d$subject)), objects = length(unique(d$object)),
+               min_frames = min(d$n_frames), mean_frames = mean(d$n_frames),
+               max_frames = max(d$n_frames), stringsAsFactors = FALSE)
+  })
+  out <- do.call(rbind, rows)
+  rownames(out) <- NULL
+  structure(out, class = c("summary_grasps", "data.frame"),
+            rate = object$rate, unit = object$unit, dofs = object$dofs)
+}
+
+#' @export
+print.summary_grasps <- function(x, ...) {
+  cat(sprintf("Grasps by type (%d DoFs at %g Hz, %s)\n", length(attr(x, "dofs")),
+              attr(x, "rate"), attr(x, "unit")))
+  print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
+  invisible(x)
+}
+
+#' Long-form data frame of a grasps set
+#'
+#' One row per recording, frame and DoF: columns `id`, `frame`, `time`
+#' (seconds), `dof`, `angle`, and the metadata columns `grasp`, `subject`,
+#' `object`, `trial`.
+#'
+#' @param x A [grasps()] object.
+#' @param row.names,optional Unused, for compatibility with the generic.
+#' @param ... Unused.
+#' @return A data frame in long form.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 1, grasps = 1, objects = 1, trials = 1)
+#' head(as.data.frame(g))
+as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
+  nf <- x$meta$n_frames
+  p <- length(x$dofs)
+  rec <- rep(seq_along(nf), nf * p)
+  frame <- unlist(lapply(nf, function(n) rep(seq_len(n), p)), use.names = FALSE)
+  dof <- unlist(lapply(nf, function(n) rep(seq_len(p), each = n)), use.names = FALSE)
+  m <- x$meta
+  data.frame(
+    id = m$id[rec], frame = frame, time = (frame - 1) / x$rate,
+    dof = factor(x$dofs[dof], levels = x$dofs),
+    angle = unlist(lapply(x$recordings, as.vector), use.names = FALSE),
+    grasp = m$grasp[rec], subject = m$subject[rec], object = m$object[rec],
+    trial = m$trial[rec], stringsAsFactors = FALSE
+  )
+}
+
+#' Plot joint-angle trajectories of a grasps set
+#'
+#' One panel per DoF, one line per recording, coloured by grasp type or subject.
+#'
+#' @param object A [grasps()] object.
+#' @param colour Metadata column to colour by: `"grasp"` (default) or `"subject"`
+#'   (or any other metadata column).
+#' @param dofs DoFs to show (names or indices); all by default.
+#' @param max_recordings Draw at most this many recordings (a random sample,
+#'   seeded) so large sets stay readable and fast.
+#' @param ... Unused.
+#' @return A ggplot object.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 3, grasps = c(1, 17), objects = 1, trials = 1, seed = 1)
+#' ggplot2::autoplot(g)
+#' @method autoplot grasps
+autoplot.grasps <- function(object, colour = "grasp", dofs = NULL, max_recordings = 200, ...) {
+  if (!colour %in% names(object$meta)) {
+    hm_abort("{.arg colour} must name a metadata column ({.val {names(object$meta)}}), not {.val {colour}}.",
+             "bad_input", argument = "colour")
+  }
+  if (length(object) > max_recordings) {
+    keep <- sort(sample_seeded(length(object), max_recordings, seed = 1L))
+    object <- object[keep]
+  }
+  df <- as.data.frame(object)
+  df$colour <- object$meta[[colour]][match(df$id, object$meta$id)]
+  if (!is.null(dofs)) {
+    sel <- if (is.numeric(dofs)) object$dofs[dofs] else dofs
+    df <- df[df$dof %in% sel, , drop = FALSE]
+  }
+  ylab <- switch(object$unit, deg = "angle (degrees)", rad = "angle (radians)", raw = "sensor value")
+  ggplot2::ggplot(df, ggplot2::aes(x = .data$time, y = .data$angle, group = .data$id,
+                                   colour = .data$colour)) +
+    ggplot2::geom_line(alpha = 0.6, linewidth = 0.4) +
+    ggplot2::facet_wrap(~dof, scales = "free_y") +
+    ggplot2::labs(x = "time (s)", y = ylab, colour = colour) +
+    ggplot2::theme_minimal()
+}
+
+# Draw `k` of `n` indices with a fixed seed without disturbing the caller's RNG.
+sample_seeded <- function(n, k, seed) {
+  with_seed(seed, sample.int(n, k))
+}
+
+# Evaluate `expr` with the RNG seeded, restoring the global RNG state after.
+with_seed <- function(seed, expr) {
+  if (is.null(seed)) return(expr)
+  old <- if (exists(".Random.seed", envir = globalenv(), inherits = FALSE))
+    get(".Random.seed", envir = globalenv()) else NULL
+  on.exit({
+    if (is.null(old)) {
+      if (exists(".Random.seed", envir = globalenv(), inherits = FALSE))
+        rm(".Random.seed", envir = globalenv())
+    } else assign(".Random.seed", old, envir = globalenv())
+  })
+  set.seed(seed)
+  expr
+}

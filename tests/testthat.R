@@ -1,0 +1,4 @@
+library(testthat)
+library(handmotion)
+
+test_check("handmotion")

@@ -1,0 +1,59 @@
+#!/usr/bin/env bash
+# Installs everything handmotion needs on a fresh Debian machine, then the package itself.
+# Idempotent: each step checks first, so a second run takes seconds.
+#   Debian's prebuilt r-cran-* packages for whatever Debian has (far faster than compiling);
+#   CRAN only for what Debian lacks (fda.usc with its fda chain, dtw).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+DEBIAN_PKGS=(
+  r-base-dev pandoc
+  # imports and suggests of handmotion
+  r-cran-cli r-cran-rlang r-cran-ggplot2 r-cran-mixtools r-cran-mclust r-cran-future
+  r-cran-future.apply r-cran-progressr r-cran-generics r-cran-xml2 r-cran-knitr
+  r-cran-rmarkdown r-cran-roxygen2 r-cran-testthat r-cran-bench r-cran-withr
+  r-cran-pkgbuild r-cran-pkgload r-cran-rcmdcheck
+  # dependencies of the CRAN-only packages (fda.usc, fda, fds, rainbow, hdrcde, dtw)
+  r-cran-proxy r-cran-ks r-cran-pcapp r-cran-desolve r-cran-rcurl r-cran-iterators
+  r-cran-foreach r-cran-doparallel r-cran-mvtnorm r-cran-ksamples r-cran-suppdists
+  r-cran-httr r-cran-colorspace r-cran-locfit r-cran-rcolorbrewer r-cran-fnn
+  r-cran-multicool r-cran-pracma r-cran-kernlab
+  # the Python front end
+  python3-rpy2 python3-numpy python3-pandas python3-pytest
+)
+
+missing=()
+for p in "${DEBIAN_PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+else
+  echo "setup: Debian packages already present"
+fi
+
+# CRAN-only packages, in dependency order; installed only when absent.
+Rscript -e '
+  need <- c("ash", "hdrcde", "rainbow", "fds", "fda", "fda.usc", "dtw")
+  have <- rownames(installed.packages())
+  todo <- setdiff(need, have)
+  if (length(todo)) {
+    message("setup: installing from CRAN: ", paste(todo, collapse = ", "))
+    lib <- .libPaths()[1]
+    # uses the CRAN mirror configured on the machine (repos option, Rprofile.site)
+    install.packages(todo, lib = lib,
+                     Ncpus = 2, quiet = TRUE)
+    bad <- setdiff(todo, rownames(installed.packages()))
+    if (length(bad)) stop("setup: could not install from CRAN: ", paste(bad, collapse = ", "))
+  } else message("setup: CRAN packages already present")
+'
+
+# The package itself: rebuild its docs if roxygen sources changed, then install.
+if [ "${HANDMOTION_SKIP_INSTALL:-0}" != "1" ]; then
+  R CMD INSTALL --no-multiarch --with-keep.source . >/tmp/handmotion-install.log 2>&1 || {
+    cat /tmp/handmotion-install.log; exit 1; }
+  echo "setup: handmotion $(Rscript -e 'cat(as.character(packageVersion("handmotion")))') installed"
+fi
