@@ -288,8 +288,8 @@ print.grasps <- function(x, ...) {
                 if (anyNA(m$grasp)) sprintf(" (+%d unlabelled)", sum(is.na(m$grasp))) else "",
                 length(unique(stats::na.omit(m$subject))),
                 length(unique(stats::na.omit(m$object)))))
-    cat("  DoFs:", paste(utils::head(x$dofs, 16), collapse = " "),
-        if (length(x$dofs) > 16) "..." else "", "\n")
+    cat("  DoFs: ", paste(utils::head(x$dofs, 16), collapse = " "),
+        if (length(x$dofs) > 16) " ..." else "", "\n", sep = "")
   }
   invisible(x)
 }

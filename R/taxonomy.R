@@ -28,3 +28,35 @@
 #' @examples
 #' hust_dofs
 "hust_dofs"
+
+#' Published results of Jeppsson (2017), chapter 5, for comparison
+#'
+#' The thesis' published values, kept only as a comparison column beside the
+#' package's own results (the `table_5_*()` functions). No computation in the
+#' package takes these numbers as input.
+#'
+#' @format A list:
+#' \describe{
+#'   \item{table_5_1}{Per grasp type: `target_frames` (warping target length),
+#'     `warping` ("dtw" or "linear" fallback) and `em_failed_dofs` (DoFs whose
+#'     mixture fell back to a single Gaussian).}
+#'   \item{table_5_2}{Variance explained (percent) by two FPCs per DoF, summarised
+#'     over the 16 DoFs of each model: `min`, `median`, `mean`, `max`.}
+#'   \item{table_5_6_diagonal}{FPCA classifier (Table 5.6): correctly classified
+#'     recordings per true type (`correct`), the column total (`total`, a lower
+#'     bound where cells could not be read) and the reading's `confidence`.}
+#'   \item{table_5_7}{Cumulative proportion of variance explained by the 16 PCs of
+#'     last-frame PCA per grasp type (`pc1` ... `pc16`).}
+#'   \item{table_5_8_diagonal}{Last-frame PCA classifier (Table 5.8), as for 5.6.}
+#'   \item{accuracy}{Overall in-sample accuracy of both classifiers recovered from
+#'     the diagonals and totals.}
+#'   \item{source}{The citation.}
+#' }
+#' @source Jeppsson, J. (2017). *Modeling Natural Human Hand Motion for Grasp
+#'   Animation*. Master's thesis, KTH Royal Institute of Technology, Tables 5.1,
+#'   5.2, 5.6, 5.7 and 5.8, as recovered from the text (see `data-raw/thesis_results.R`;
+#'   Table 5.3's values did not survive the extraction).
+#' @examples
+#' thesis_results$accuracy
+#' head(thesis_results$table_5_2)
+"thesis_results"

@@ -1,0 +1,41 @@
+# handmotion: the two README commands are `make demo` and `make test`.
+# Every target installs what is missing first (tools/setup.sh is idempotent).
+SHELL := /bin/bash
+R ?= Rscript
+PY ?= /usr/bin/python3
+OUT ?= output
+# The real GraspDB14 samples and thesis tables live beside the repository, never in it.
+export HANDMOTION_SHARED ?= $(abspath ../shared)
+# snapshot tests run outside CRAN
+export NOT_CRAN ?= true
+
+.PHONY: setup demo test test-r test-python check bench docs clean
+
+setup:
+	bash tools/setup.sh
+
+## Main job: fit every model on the embedded default data and render the thesis reproduction into $(OUT)/
+demo: setup
+	$(R) tools/demo.R $(OUT)
+
+## The whole test suite: R (testthat) then Python (pytest)
+test: setup test-r test-python
+
+test-r:
+	$(R) tools/run-tests.R
+
+test-python:
+	cd inst/python && $(PY) -m pytest -q tests
+
+## R CMD build + R CMD check --no-manual, failing on errors or warnings
+check: setup
+	bash tools/check.sh
+
+bench: setup
+	for f in bench/*.R; do echo "== $$f"; $(R) $$f || exit 1; done
+
+docs:
+	$(R) -e 'roxygen2::roxygenise()'
+
+clean:
+	rm -rf handmotion.Rcheck handmotion_*.tar.gz $(OUT) src/*.o src/*.so
