@@ -1,0 +1,34 @@
+"""handmotion: natural human hand motion for grasp animation, from Python.
+
+A thin front end over the handmotion R package (through rpy2): the statistics all
+run in R; this package converts data and errors. Seeds pass through unchanged, so
+results are identical to R's for the same seed.
+
+>>> import handmotion as hm
+>>> g = hm.simulate_grasps(subjects=3, seed=1)
+>>> m = hm.fit_grasp_models(g, seed=1)
+>>> x = hm.generate(m, grasp="Power Sphere", n=10, seed=2)
+"""
+
+from .api import (classify, fit_grasp_models, fit_handover, forward_kinematics, generate,
+                  hand_skeleton, joint_names, rank_markers, read_graspdb14, read_hust,
+                  read_skeleton, reconstruct, select_markers, simulate_grasps, table_5_1,
+                  table_5_2, table_5_3, table_5_6, table_5_7, table_5_8, write_bvh,
+                  write_graspdb14, write_hust)
+from .errors import (BadFileError, BadInputError, BadRecordingError, BadSkeletonError,
+                     HandmotionError, RError, UnknownGraspError)
+from .grasps import Grasps
+from .handles import GraspModels, HandoverModel, RHandle, Skeleton
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Grasps", "GraspModels", "HandoverModel", "RHandle", "Skeleton",
+    "HandmotionError", "BadInputError", "BadRecordingError", "UnknownGraspError", "BadFileError",
+    "BadSkeletonError", "RError",
+    "simulate_grasps", "read_hust", "write_hust", "read_graspdb14", "write_graspdb14",
+    "read_skeleton", "hand_skeleton", "forward_kinematics", "joint_names", "write_bvh",
+    "fit_grasp_models", "generate", "classify",
+    "table_5_1", "table_5_2", "table_5_3", "table_5_6", "table_5_7", "table_5_8",
+    "rank_markers", "select_markers", "fit_handover", "reconstruct",
+]

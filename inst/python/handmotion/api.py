@@ -1,0 +1,249 @@
+"""Functions mirroring the handmotion R API (same names and argument names).
+
+Every function validates its Python input before R sees it, calls the R function
+of the same name through one bridge, and converts the result: ``grasps`` objects
+become :class:`handmotion.Grasps`, data frames become pandas DataFrames, arrays
+become numpy arrays, and model objects become handles. Seeds pass straight
+through, so Python and R give identical numbers for the same seed.
+"""
+
+import numpy as np
+
+from ._bridge import call, r, r_to_py
+from .errors import BadInputError
+from .grasps import Grasps
+from .handles import GraspModels, HandoverModel, RHandle, Skeleton
+
+
+def _as_grasps(x, arg="x"):
+    if isinstance(x, Grasps):
+        return x
+    if isinstance(x, np.ndarray) or isinstance(x, (list, tuple)):
+        return Grasps(x)
+    raise BadInputError(f"{arg} must be a handmotion.Grasps (or a list of frames x DoF arrays), "
+                        f"not {type(x).__name__}")
+
+
+def _check_count(value, name, minimum=1):
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < minimum:
+        raise BadInputError(f"{name} must be a whole number >= {minimum}, not {value!r}")
+    return int(value)
+
+
+def _check_seed(seed):
+    if seed is None:
+        return None
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)):
+        raise BadInputError(f"seed must be a whole number or None, not {seed!r}")
+    return int(seed)
+
+
+def _grasps_arg(grasps):
+    """Grasp types as R expects them: names (str) or ids (int); None means all."""
+    if grasps is None:
+        return None
+    if isinstance(grasps, (str, int, np.integer)):
+        grasps = [grasps]
+    grasps = list(grasps)
+    if all(isinstance(g, str) for g in grasps):
+        return grasps
+    if all(isinstance(g, (int, np.integer)) and not isinstance(g, bool) for g in grasps):
+        return [int(g) for g in grasps]
+    raise BadInputError("grasp types must be all names (str) or all ids (int)")
+
+
+# ---------------------------------------------------------------- data
+
+
+def simulate_grasps(subjects=30, grasps=None, objects=3, trials=3, rate=50, seed=1, **kwargs):
+    """Simulate HUST-like grasp recordings (the package's embedded default data).
+
+    Parameters mirror R's ``simulate_grasps()``: counts of ``subjects``, ``objects``
+    and ``trials``; ``grasps`` as Feix names or ids (default all 33); ``rate`` in Hz;
+    ``seed`` for reproducibility (identical to R for the same seed).
+
+    Returns
+    -------
+    Grasps
+    """
+    args = dict(subjects=_check_count(subjects, "subjects"), objects=_check_count(objects, "objects"),
+                trials=_check_count(trials, "trials"), rate=float(rate), seed=_check_seed(seed))
+    if grasps is not None:
+        args["grasps"] = _grasps_arg(grasps)
+    args.update(kwargs)
+    return r_to_py(call("simulate_grasps", **args))
+
+
+def read_hust(path, manifest=None, pattern=None, **kwargs):
+    """Read HUST-layout CSV files (one per grasp, 16 DoF columns) into a :class:`Grasps`.
+
+    ``manifest`` is a pandas DataFrame or CSV path mapping files to grasp, subject,
+    object and trial; ``pattern`` a regular expression with named groups.
+    """
+    return r_to_py(call("read_hust", path, manifest=manifest, pattern=pattern, **kwargs))
+
+
+def read_graspdb14(path, **kwargs):
+    """Read a GraspDB14 motion file or a directory of them into a :class:`Grasps`.
+
+    Files that fail to parse are listed in ``result.failures`` (a DataFrame of file,
+    line, class and message) rather than dropped silently.
+    """
+    res = call("read_graspdb14", path, **kwargs)
+    out = r_to_py(res)
+    failures = r().r["attr"](res, "failures")
+    out.failures = r_to_py(failures)
+    return out
+
+
+def write_hust(x, dir, **kwargs):
+    """Write a :class:`Grasps` in the HUST layout plus its manifest; returns the manifest path."""
+    return r_to_py(call("write_hust", _as_grasps(x), dir, **kwargs))
+
+
+def write_graspdb14(x, dir, **kwargs):
+    """Write a :class:`Grasps` of 23 CyberGlove sensors in the GraspDB14 motion-file format."""
+    return r_to_py(call("write_graspdb14", _as_grasps(x), dir, **kwargs))
+
+
+def read_skeleton(file):
+    """Read an ``.xmlskel`` hand skeleton; returns a :class:`Skeleton` handle."""
+    return Skeleton(call("read_skeleton", str(file)))
+
+
+def hand_skeleton():
+    """The package's default hand skeleton."""
+    return Skeleton(call("hand_skeleton"))
+
+
+def forward_kinematics(x, skeleton=None, mode="plain", deactivate=None, **kwargs):
+    """3-D joint positions (mm) over time.
+
+    Returns a numpy array frames x joints x 3 for one recording (a 2-D array or a
+    :class:`Grasps` of one), or a list of such arrays for a larger set; the joint
+    names are in the ``joints`` attribute of the returned array's first axis order
+    (see :func:`joint_names`).
+    """
+    g = _as_grasps(x)
+    kw = dict(mode=mode, deactivate=deactivate, **kwargs)
+    if skeleton is not None:
+        kw["skeleton"] = skeleton
+    res = call("forward_kinematics", g, **kw)
+    ro = r()
+    if "list" in list(ro.r["class"](res)):
+        return [np.asarray(a) for a in res]
+    return np.asarray(res)
+
+
+def joint_names(skeleton=None):
+    """Joint names, in the order of the second axis of :func:`forward_kinematics` arrays."""
+    sk = skeleton if skeleton is not None else hand_skeleton()
+    return list(sk.joints["name"])
+
+
+def write_bvh(x, file, **kwargs):
+    """Export a recording or generated grasp as a BVH animation (Blender can import it)."""
+    g = _as_grasps(x)
+    call("write_bvh", g, str(file), **kwargs)
+    return str(file)
+
+
+# ---------------------------------------------------------------- models
+
+
+def fit_grasp_models(x, grasps=None, seed=1, **kwargs):
+    """Fit one generative model per grasp type (DTW + FPCA + GMMs); returns a :class:`GraspModels`."""
+    g = _as_grasps(x)
+    return GraspModels(call("fit_grasp_models", g, grasps=_grasps_arg(grasps), seed=_check_seed(seed),
+                            **kwargs))
+
+
+def generate(models, grasp=None, n=1, seed=None, as_array=False, **kwargs):
+    """Generate new grasps by sampling component scores (thesis eq. 2.5).
+
+    Returns a :class:`Grasps`; with ``as_array=True`` and a single grasp type,
+    also a numpy array n x frames x DoF (frames are padded with NaN where generated
+    lengths differ).
+    """
+    if not isinstance(models, RHandle):
+        raise BadInputError("models must come from fit_grasp_models()")
+    n = _check_count(n, "n")
+    kw = dict(n=n, seed=_check_seed(seed), **kwargs)
+    if grasp is not None:
+        kw["grasp"] = _grasps_arg(grasp)
+    out = r_to_py(call("generate", models, **kw))
+    if not as_array:
+        return out
+    if grasp is None or len(_grasps_arg(grasp)) != 1:
+        raise BadInputError("as_array=True needs exactly one grasp type")
+    longest = int(out.meta["n_frames"].max())
+    arr = np.full((len(out), longest, len(out.dofs)), np.nan)
+    for i, rec in enumerate(out.recordings):
+        arr[i, :rec.shape[0], :] = rec
+    return out, arr
+
+
+def classify(models, x, method="fpca", **kwargs):
+    """Classify recordings by distance to each model (``"fpca"``) or by last-frame PCA (``"last_frame"``).
+
+    Returns a dict with ``predictions`` (DataFrame), ``confusion`` (DataFrame, rows =
+    predicted model, columns = true type) and ``accuracy`` (float).
+    """
+    if method not in ("fpca", "last_frame"):
+        raise BadInputError(f"method must be 'fpca' or 'last_frame', not {method!r}")
+    g = _as_grasps(x)
+    ro = r()
+    res = call("classify", models, g, method=method, **kwargs)
+    conf = call("as_grasp_confusion", res)
+    table = ro.r["as.data.frame.matrix"](ro.r["unclass"](conf.rx2("table")))
+    summ = r_to_py(call(ro.r["summary"], conf))
+    acc = summ.loc[summ["metric"] == "accuracy", "estimate"]
+    return {"predictions": r_to_py(ro.r["as.data.frame"](res)),
+            "confusion": r_to_py(table).set_axis(list(ro.r["rownames"](table)), axis=0),
+            "accuracy": float(acc.iloc[0]) if len(acc) else float("nan"),
+            "metrics": summ}
+
+
+def _table(name):
+    def fn(*args, **kwargs):
+        return r_to_py(call(name, *args, **kwargs))
+
+    fn.__name__ = name
+    fn.__doc__ = (f"The thesis' {name.replace('table_', 'Table ').replace('_', '.')} as a pandas DataFrame, "
+                  "with the published value beside ours where one exists. Arguments as in R's "
+                  f"``{name}()``.")
+    return fn
+
+
+table_5_1 = _table("table_5_1")
+table_5_2 = _table("table_5_2")
+table_5_3 = _table("table_5_3")
+table_5_6 = _table("table_5_6")
+table_5_7 = _table("table_5_7")
+table_5_8 = _table("table_5_8")
+
+
+# ---------------------------------------------------------------- hand-over
+
+
+def rank_markers(reference, **kwargs):
+    """Rank the 13 hand markers by their influence on the reference data's principal components."""
+    return r_to_py(call("rank_markers", _as_grasps(reference, "reference"), **kwargs))
+
+
+def select_markers(n, reference, **kwargs):
+    """The ``n`` most influential markers (nested: the 3-set lies inside the 6-set)."""
+    return list(r_to_py(call("select_markers", _check_count(n, "n"), _as_grasps(reference, "reference"),
+                             **kwargs)))
+
+
+def fit_handover(reference, markers, **kwargs):
+    """Fit the PCA + locally weighted regression reconstruction model; returns a :class:`HandoverModel`."""
+    return HandoverModel(call("fit_handover", _as_grasps(reference, "reference"), markers, **kwargs))
+
+
+def reconstruct(model, query, **kwargs):
+    """Rebuild all joint angles from sparse markers (a :class:`Grasps` or a frames x 3m marker array)."""
+    q = query if isinstance(query, np.ndarray) and query.ndim == 2 and not isinstance(query, Grasps) \
+        else _as_grasps(query, "query")
+    return r_to_py(call("reconstruct", model, q, **kwargs))
