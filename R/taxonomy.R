@@ -48,6 +48,9 @@
 #'   \item{table_5_7}{Cumulative proportion of variance explained by the 16 PCs of
 #'     last-frame PCA per grasp type (`pc1` ... `pc16`).}
 #'   \item{table_5_8_diagonal}{Last-frame PCA classifier (Table 5.8), as for 5.6.}
+#'   \item{table_5_3_claims}{The counts section 5.2 states about Table 5.3
+#'     (whose cell values did not survive): in how many cases a model is
+#'     closest for its own type, and so on.}
 #'   \item{accuracy}{Overall in-sample accuracy of both classifiers recovered from
 #'     the diagonals and totals.}
 #'   \item{source}{The citation.}

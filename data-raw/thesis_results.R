@@ -47,6 +47,17 @@ thesis_results <- list(
     total = c(sum(dg$fpca_total), sum(dg$lastframe_pca_total)),
     accuracy = c(sum(dg$fpca_correct) / sum(dg$fpca_total),
                  sum(dg$lastframe_pca_correct) / sum(dg$lastframe_pca_total))),
+  # Section 5.2's counts about Table 5.3, whose cell values did not survive
+  # the extraction (../shared/thesis-tables/claims.md).
+  table_5_3_claims = data.frame(
+    claim = c("model_min_own_type", "type_min_own_model", "both", "n_attracted",
+              "models_never_min"),
+    description = c("models whose lowest mean distance is for their own grasp type",
+                    "grasp types whose lowest mean distance is in their own model",
+                    "both at once",
+                    "grasp types whose lowest mean distance is in the most attracting model",
+                    "models that are the lowest mean distance of no grasp type"),
+    thesis = c(28L, 14L, 12L, 9L, 16L), stringsAsFactors = FALSE),
   source = paste("Jeppsson, J. (2017). Modeling Natural Human Hand Motion for Grasp Animation.",
                  "Master's thesis, KTH Royal Institute of Technology. Chapter 5.")
 )

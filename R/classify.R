@@ -1,0 +1,292 @@
+# Grasp-type classification (thesis section 4.2). Two schemes share one
+# result class, `grasp_classification`:
+#   fpca        every recording is fed to every grasp model: warped into the
+#               model's time by the model's mean warping function, projected on
+#               its FPCs, and scored by the L2 distance to that projection
+#               (eq. 4.4; computed by project()). Closest model wins.
+#   last_frame  the same idea on the last frame only, with one ordinary PCA per
+#               type (R/last-frame-pca.R).
+# The distance matrix (recordings x models) is kept, so Table 5.3
+# (distance_table()) and the confusion matrices come from one computation.
+
+#' Classify recordings by grasp type
+#'
+#' Assigns each recording of `x` to the grasp type whose model represents it
+#' best, following the two schemes of the thesis (section 4.2):
+#'
+#' * `"fpca"` (Table 5.6): each recording is warped into each model's time by
+#'   the model's mean warping function, projected on the model's FPCs, and
+#'   scored by the L2 distance between the warped recording and its projection
+#'   (eq. 4.4, over all DoFs; see [project()]). `models` is a `grasp_models`
+#'   object from [fit_grasp_models()].
+#' * `"last_frame"` (Table 5.8): the Euclidean distance between the recording's
+#'   last frame and its projection on each type's first `k` PCs; `models` is a
+#'   [fit_last_frame_pca()] result.
+#'
+#' The recording goes to the model with the smallest distance. When `models`
+#' is a fitted object the method follows from its class; when `models` is a
+#' [grasps()] training set, the models are fitted on it first with the
+#' arguments in `...` (e.g. `k = 5`), which is what the thesis did (training and
+#' test set are the same). See [evaluate_loso()] for an honest held-out
+#' estimate.
+#'
+#' One-type data are not an error: with a single model every recording is
+#' assigned to that type, so accuracy is 1 by construction. A model whose
+#' projection fails gives a column of `NA` distances, recorded in `$failures`
+#' with a warning; a recording with no finite distance gets `NA` as prediction.
+#'
+#' @param models Fitted models (`grasp_models` or `last_frame_pca`), or a
+#'   `grasps` training set.
+#' @param x A [grasps()] object to classify.
+#' @param method `"fpca"` or `"last_frame"`. Inferred from `models` when it is
+#'   a fitted object; giving a method that contradicts it is an error.
+#' @param ... Arguments passed to [fit_grasp_models()] or [fit_last_frame_pca()]
+#'   when `models` is a `grasps` training set.
+#' @return An object of class `grasp_classification`: a list with
+#'   `predictions` (data frame: `id`, `subject`, `truth`, `predicted`,
+#'   `distance` to the chosen model), `distances` (numeric matrix, recordings x
+#'   models), `method`, `target_length` (per model, `fpca` only) and `failures`.
+#'   Use [as_grasp_confusion()] for its confusion matrix and
+#'   [distance_table()] for the thesis' Table 5.3.
+#' @seealso [grasp_confusion()], [distance_table()], [evaluate_loso()]
+#' @export
+#' @examples
+#' set.seed(1)
+#' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
+#' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
+#' cl <- classify(g, g, method = "last_frame", k = 2)
+#' cl
+#' as_grasp_confusion(cl)
+classify <- function(models, x, method = c("fpca", "last_frame"), ...) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  method <- resolve_method(models, method, missing(method), call = call)
+  if (inherits(models, "grasps")) models <- fit_classifier(models, method, list(...))
+  res <- classifier_distances(models, x, method, call = call)
+  new_classification(res$distances, x$meta, method, res$target_length, res$failures)
+}
+
+resolve_method <- function(models, method, defaulted, call = rlang::caller_env()) {
+  implied <- if (inherits(models, "last_frame_pca")) "last_frame"
+             else if (inherits(models, "grasp_models")) "fpca" else NA_character_
+  if (is.na(implied) && !inherits(models, "grasps")) {
+    hm_abort("{.arg models} must be a {.cls grasp_models}, {.cls last_frame_pca} or {.cls grasps} object, not {.obj_type_friendly {models}}.",
+             "bad_input", argument = "models", call = call)
+  }
+  if (defaulted) return(if (is.na(implied)) "fpca" else implied)
+  method <- rlang::arg_match0(method, c("fpca", "last_frame"), arg_nm = "method", error_call = call)
+  if (!is.na(implied) && method != implied) {
+    hm_abort("{.arg method} is {.val {method}} but {.arg models} is a {.cls {class(models)[1]}} ({.val {implied}}) fit.",
+             "bad_input", argument = "method", call = call)
+  }
+  method
+}
+
+# Fit the models a method needs on a training set.
+fit_classifier <- function(train, method, fit_args) {
+  fitter <- if (method == "last_frame") fit_last_frame_pca else fit_grasp_models
+  do.call(fitter, c(list(train), fit_args))
+}
+
+classifier_distances <- function(models, x, method, call = rlang::caller_env()) {
+  if (method == "last_frame") {
+    return(list(distances = last_frame_distances(models, x, call = call),
+                target_length = NULL, failures = no_failures()))
+  }
+  fpca_distances(models, x, call = call)
+}
+
+no_failures <- function() data.frame(model = character(0), message = character(0))
+
+# Eq. 4.4 for every (recording, model) pair. project() on the whole model set
+# stacks the recordings once; if it fails, the models are projected one by one
+# so a single broken model costs only its own column.
+fpca_distances <- function(models, x, call = rlang::caller_env()) {
+  if (length(models) == 0L) {
+    hm_abort("{.arg models} holds no grasp models.", "bad_input", argument = "models", call = call)
+  }
+  types <- names(models)
+  if (is.null(types) || anyNA(types) || any(types == "")) {
+    types <- vapply(unclass(models), function(m) as.character(m$grasp), character(1))
+  }
+  ids <- x$meta$id
+  d <- matrix(NA_real_, length(ids), length(models), dimnames = list(ids, types))
+  failures <- no_failures()
+  # types whose model could not be fitted can never be predicted: say so
+  unfitted <- attr(models, "failed")
+  if (is.data.frame(unfitted) && nrow(unfitted) > 0L) {
+    failures <- rbind(failures, data.frame(model = unfitted$grasp,
+                                           message = paste("not fitted:", unfitted$message)))
+  }
+  all_pr <- tryCatch(project(models, x, details = FALSE), error = function(e) NULL)
+  for (j in seq_along(models)) {
+    pr <- if (!is.null(all_pr)) all_pr[[j]] else
+      tryCatch(project(models[[j]], x, details = FALSE), error = function(e) e)
+    if (inherits(pr, "error")) {
+      failures <- rbind(failures, data.frame(model = types[j],
+                                             message = cli::ansi_strip(conditionMessage(pr))))
+      next
+    }
+    dist <- unname(pr$distance)
+    if (!is.null(pr$ids)) dist <- dist[match(ids, pr$ids)]
+    if (length(dist) != length(ids)) {
+      failures <- rbind(failures, data.frame(model = types[j],
+                                             message = "projection returned the wrong number of distances"))
+      next
+    }
+    d[, j] <- dist
+  }
+  if (nrow(failures) > 0L) {
+    hm_warn(c("{nrow(failures)} grasp type{?s} cannot be predicted: {.val {failures$model}}.",
+              i = "See {.field failures} of the result."),
+            "projection_failed")
+  }
+  tl <- vapply(unclass(models), function(m) as.numeric(m$target_length %||% NA_real_), numeric(1))
+  names(tl) <- types
+  list(distances = d, target_length = tl, failures = failures)
+}
+
+new_classification <- function(d, meta, method, target_length = NULL, failures = no_failures()) {
+  pred <- nearest_type(d)
+  best <- suppressWarnings(apply(d, 1L, min, na.rm = TRUE))
+  best[!is.finite(best)] <- NA_real_
+  truth <- meta$grasp
+  if (!is.factor(truth)) truth <- factor(truth)
+  predictions <- data.frame(id = meta$id, subject = meta$subject %||% NA_character_,
+                            truth = truth, predicted = pred, distance = unname(best),
+                            stringsAsFactors = FALSE)
+  structure(list(predictions = predictions, distances = d, method = method,
+                 target_length = target_length, failures = failures),
+            class = "grasp_classification")
+}
+
+#' @export
+print.grasp_classification <- function(x, ...) {
+  p <- x$predictions
+  lab <- !is.na(p$truth) & !is.na(p$predicted)
+  ok <- sum(as.character(p$truth[lab]) == as.character(p$predicted[lab]))
+  cat(sprintf("<grasp_classification> %s, %d recording%s x %d model%s\n",
+              if (x$method == "fpca") "FPCA projection distance" else "last-frame PCA distance",
+              nrow(p), if (nrow(p) == 1) "" else "s", ncol(x$distances),
+              if (ncol(x$distances) == 1) "" else "s"))
+  if (sum(lab) > 0)
+    cat(sprintf("  accuracy %.1f%% (%d of %d labelled recordings)\n", 100 * ok / sum(lab), ok, sum(lab)))
+  if (any(is.na(p$truth))) cat(sprintf("  %d unlabelled recording(s)\n", sum(is.na(p$truth))))
+  if (any(is.na(p$predicted))) cat(sprintf("  %d recording(s) without a prediction\n", sum(is.na(p$predicted))))
+  if (nrow(x$failures) > 0) cat("  failed models:", paste(x$failures$model, collapse = ", "), "\n")
+  invisible(x)
+}
+
+#' Summaries and plots of a grasp classification
+#'
+#' `summary()` gives the metrics of the classification's confusion matrix
+#' ([summary.grasp_confusion()]); `autoplot()` its heatmap
+#' ([autoplot.grasp_confusion()]); `as.data.frame()` the per-recording
+#' predictions.
+#'
+#' @param object,x A [classify()] result.
+#' @param row.names,optional Unused (for the generic).
+#' @param ... Passed to [autoplot.grasp_confusion()] (e.g. `normalise = TRUE`).
+#' @return A metrics data frame, a ggplot, or the predictions data frame.
+#' @export
+#' @examples
+#' set.seed(1)
+#' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
+#' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
+#' cl <- classify(g, g, method = "last_frame", k = 2)
+#' summary(cl)
+#' head(as.data.frame(cl))
+#' ggplot2::autoplot(cl)
+summary.grasp_classification <- function(object, ...) {
+  summary(as_grasp_confusion(object))
+}
+
+#' @rdname summary.grasp_classification
+#' @export
+#' @method autoplot grasp_classification
+autoplot.grasp_classification <- function(object, ...) {
+  autoplot.grasp_confusion(as_grasp_confusion(object), ...)
+}
+
+#' @rdname summary.grasp_classification
+#' @export
+as.data.frame.grasp_classification <- function(x, row.names = NULL, optional = FALSE, ...) {
+  x$predictions
+}
+
+#' Mean projection distance per model and true type (Table 5.3)
+#'
+#' The thesis' Table 5.3: for model *i* and true grasp type *j*, the mean over
+#' the recordings of type *j* of `100 * distance / T_i`, where `distance` is the
+#' eq. 4.4 L2 distance between the recording warped into model *i*'s time and
+#' its FPC projection, and `T_i` is model *i*'s target length (so rows are
+#' comparable). For a last-frame classification there is no time axis and the
+#' plain mean distance is returned.
+#'
+#' @param models A `grasp_models` object, or a [classify()] result (then `x`
+#'   is not needed and nothing is recomputed).
+#' @param x A [grasps()] object (labelled) when `models` are models.
+#' @return A numeric matrix with rows = model and columns = true type (types
+#'   present in `x`, in Feix order), dimnames named `model` and `truth`.
+#'   [distance_minima()] counts its row and column minima.
+#' @seealso [classify()], [distance_minima()]
+#' @export
+#' @examples
+#' set.seed(1)
+#' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
+#' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
+#' distance_table(classify(g, g, method = "last_frame", k = 2))
+distance_table <- function(models, x = NULL) {
+  call <- rlang::caller_env()
+  cl <- if (inherits(models, "grasp_classification")) models else {
+    if (is.null(x)) hm_abort("{.arg x} is needed when {.arg models} are models.", "bad_input",
+                             argument = "x", call = call)
+    classify(models, x, method = "fpca")
+  }
+  d <- cl$distances
+  scale <- if (cl$method == "fpca") 100 / cl$target_length[colnames(d)] else rep(1, ncol(d))
+  truth <- cl$predictions$truth
+  types <- feix_order(unique(as.character(stats::na.omit(truth))))
+  if (length(types) == 0L) {
+    hm_abort("No labelled recordings: a distance table needs true grasp types.", "no_labels",
+             argument = "x", call = call)
+  }
+  tab <- vapply(types, function(type) {
+    rows <- which(as.character(truth) == type)
+    colMeans(sweep(d[rows, , drop = FALSE], 2L, scale, `*`), na.rm = TRUE)
+  }, numeric(ncol(d)))
+  matrix(tab, ncol(d), length(types), dimnames = list(model = colnames(d), truth = types))
+}
+
+#' Count the minima of a distance table
+#'
+#' The counts the thesis reports for Table 5.3: how many models have their
+#' lowest mean distance for their own grasp type (row minimum on the diagonal),
+#' how many grasp types have their lowest mean distance in their own model
+#' (column minimum on the diagonal), how many both, and how many models are the
+#' column minimum of no type.
+#'
+#' @param tab A [distance_table()] result.
+#' @return A one-row data frame: `models`, `types`, `model_min_own_type`,
+#'   `type_min_own_model`, `both`, `models_never_min`, and `most_attracting`
+#'   (the model that is the minimum of most types) with `n_attracted`.
+#' @export
+#' @examples
+#' tab <- matrix(c(1, 3, 2, 2, 1, 3, 4, 2, 5), 3,
+#'               dimnames = list(model = c("A", "B", "C"), truth = c("A", "B", "C")))
+#' distance_minima(tab)
+distance_minima <- function(tab) {
+  models <- rownames(tab)
+  types <- colnames(tab)
+  row_min <- colnames(tab)[apply(tab, 1L, which.min)]
+  col_min <- rownames(tab)[apply(tab, 2L, which.min)]
+  own_row <- row_min == models
+  own_col <- col_min == types
+  both <- intersect(models[own_row], types[own_col])
+  attracted <- table(factor(col_min, levels = models))
+  data.frame(models = length(models), types = length(types),
+             model_min_own_type = sum(own_row), type_min_own_model = sum(own_col),
+             both = length(both), models_never_min = sum(attracted == 0),
+             most_attracting = names(attracted)[which.max(attracted)],
+             n_attracted = as.integer(max(attracted)), stringsAsFactors = FALSE)
+}

@@ -1,0 +1,277 @@
+# Honest evaluation of the classifiers. The thesis classified the very
+# recordings its models were fitted on (in-sample), which flatters both
+# schemes. Here each subject (or group of subjects) is held out in turn: the
+# models are refitted without it and its recordings classified, so every
+# prediction is for a hand the models never saw. Both numbers are returned.
+
+#' Leave-one-subject-out evaluation of a grasp classifier
+#'
+#' For each subject, refits the models of `method` on the recordings of all
+#' other subjects and classifies the held-out subject's recordings; the pooled
+#' predictions give a held-out confusion matrix. The in-sample figure of the
+#' thesis (fit and classify the same recordings) is computed alongside, so
+#' both can be reported.
+#'
+#' A full LOSO with `method = "fpca"` refits all grasp models once per subject
+#' (30 times 33 models for HUST), which is slow. `folds = k` is the cheaper
+#' option: subjects are split at random (seeded) into `k` groups and each group
+#' is held out in turn (leave-one-group-of-subjects-out), so only `k` refits
+#' are needed; it is still subject-independent, slightly pessimistic because
+#' each fit sees fewer subjects.
+#'
+#' Folds run with `future.apply::future_lapply()` (set your own
+#' `future::plan()`; none is set here) with `future.seed = TRUE`, and report
+#' progress through `progressr` (wrap the call in `progressr::with_progress()`).
+#'
+#' Bookkeeping, never silent: unlabelled recordings are not used (counted in
+#' `$n_unlabelled`); recordings without a subject are never held out but are
+#' used for training (`$n_no_subject`); a held-out type absent from a fold's
+#' training data cannot be predicted correctly and is listed in
+#' `$folds$missing_types`; a type whose model fails to fit in a fold is listed
+#' in `$folds$unfitted_types`; a fold whose fit fails leaves its recordings
+#' without prediction (`$folds$error`, warning).
+#'
+#' @param x A [grasps()] object with `grasp` and `subject` metadata.
+#' @param method `"fpca"` ([fit_grasp_models()] + projection distance) or
+#'   `"last_frame"` ([fit_last_frame_pca()]).
+#' @param fit_args A list of arguments for the fitting function (e.g.
+#'   `list(k = 5)` for last-frame PCA).
+#' @param subjects Subjects to hold out (default: all). Other subjects are
+#'   always in the training set.
+#' @param folds `NULL` for one fold per subject (LOSO), or a number `k` of
+#'   subject groups.
+#' @param in_sample Also compute the in-sample (thesis) confusion matrix.
+#' @param seed Seed for the random grouping of subjects into `folds`.
+#' @return An object of class `grasp_evaluation`: a list with `method`,
+#'   `scheme`, `confusion` (pooled held-out [grasp_confusion()]), `in_sample`
+#'   (in-sample `grasp_confusion` or `NULL`), `accuracy` (named: `held_out`,
+#'   `in_sample`), `per_subject` (data frame: `subject`, `fold`, `n`,
+#'   `correct`, `accuracy`), `folds` (data frame: `fold`, `subjects`,
+#'   `n_train`, `n_test`, `missing_types`, `unfitted_types` (types whose model
+#'   failed to fit in the fold, see [fit_grasp_models()]), `error`), `predictions`,
+#'   `n_unlabelled`, `n_no_subject`. `summary()` gives both sets of metrics.
+#' @seealso [classify()], [grasp_confusion()]
+#' @export
+#' @examples
+#' set.seed(1)
+#' recs <- lapply(1:24, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
+#' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 12),
+#'                                     subject = rep(paste0("s", 1:6), each = 4)))
+#' ev <- evaluate_loso(g, method = "last_frame", fit_args = list(k = 2))
+#' ev
+#' evaluate_loso(g, method = "last_frame", fit_args = list(k = 2), folds = 3)$accuracy
+evaluate_loso <- function(x, method = c("fpca", "last_frame"), fit_args = list(), subjects = NULL,
+                          folds = NULL, in_sample = TRUE, seed = 1) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  method <- rlang::arg_match(method, error_call = call)
+  # future.seed switches the session to L'Ecuyer-CMRG; give the caller back
+  # the RNG kind and stream they had.
+  old_rng <- save_rng()
+  on.exit(restore_rng(old_rng), add = TRUE)
+  if (!is.list(fit_args)) {
+    hm_abort("{.arg fit_args} must be a list of arguments, not {.obj_type_friendly {fit_args}}.",
+             "bad_input", argument = "fit_args", call = call)
+  }
+  unlabelled <- is.na(x$meta$grasp)
+  if (all(unlabelled)) {
+    hm_abort("{.arg x} has no labelled recordings to evaluate.", "no_labels", argument = "x", call = call)
+  }
+  x <- x[!unlabelled]
+  subj <- x$meta$subject
+  all_subjects <- unique(stats::na.omit(subj))
+  if (is.null(subjects)) subjects <- all_subjects
+  subjects <- unique(as.character(subjects))
+  unknown <- setdiff(subjects, all_subjects)
+  if (length(unknown) > 0L) {
+    hm_abort("Unknown subject{?s} {.val {unknown}}.", "bad_input", argument = "subjects", call = call)
+  }
+  if (length(all_subjects) < 2L || length(subjects) < 1L) {
+    hm_abort(c("Leave-subject-out evaluation needs at least two subjects; {.arg x} has {length(all_subjects)}.",
+               i = "Every fold must keep some subjects for training."),
+             "too_few_subjects", argument = "x", call = call)
+  }
+  groups <- subject_folds(subjects, folds, seed, call = call)
+  if (length(groups) == 1L && setequal(groups[[1]], all_subjects)) {
+    hm_abort("With one fold holding every subject nothing is left for training; use more {.arg folds}.",
+             "too_few_subjects", argument = "folds", call = call)
+  }
+
+  p <- progressr::progressor(steps = length(groups))
+  fold_results <- future.apply::future_lapply(seq_along(groups), function(f) {
+    res <- run_fold(x, groups[[f]], method, fit_args)
+    p(sprintf("fold %d of %d", f, length(groups)))
+    res
+  }, future.seed = TRUE)
+
+  predictions <- do.call(rbind, lapply(seq_along(fold_results), function(f) {
+    d <- fold_results[[f]]$predictions
+    if (nrow(d) > 0L) d$fold <- f
+    d
+  }))
+  fold_table <- do.call(rbind, lapply(seq_along(fold_results), function(f) {
+    r <- fold_results[[f]]
+    data.frame(fold = f, subjects = paste(groups[[f]], collapse = ","), n_train = r$n_train,
+               n_test = r$n_test, missing_types = paste(r$missing_types, collapse = ","),
+               unfitted_types = paste(r$unfitted_types, collapse = ","),
+               error = r$error %||% NA_character_, stringsAsFactors = FALSE)
+  }))
+  failed <- !is.na(fold_table$error)
+  if (any(failed)) {
+    hm_warn(c("Fitting failed in {sum(failed)} fold{?s}: {.val {fold_table$fold[failed]}}.",
+              i = "Their recordings have no prediction; see {.field folds$error}."),
+            "fold_failed")
+  }
+  lev <- feix_order(unique(as.character(x$meta$grasp)))
+  held <- new_confusion(predictions$truth, predictions$predicted, levels = lev)
+  ins <- NULL
+  if (in_sample) {
+    cl <- classify(fit_classifier(x, method, fit_args), x)
+    ins <- new_confusion(cl$predictions$truth, cl$predictions$predicted, levels = lev)
+  }
+  structure(list(method = method, scheme = if (is.null(folds)) "leave-one-subject-out"
+                 else sprintf("leave-group-out (%d folds of subjects)", length(groups)),
+                 confusion = held, in_sample = ins,
+                 accuracy = c(held_out = confusion_accuracy(held),
+                              in_sample = if (is.null(ins)) NA_real_ else confusion_accuracy(ins)),
+                 per_subject = per_subject_accuracy(predictions),
+                 folds = fold_table, predictions = predictions,
+                 n_unlabelled = sum(unlabelled), n_no_subject = sum(is.na(subj))),
+            class = "grasp_evaluation")
+}
+
+# Snapshot and restore of the global RNG: the kind (kept internally by R, not
+# only in `.Random.seed`, which may not exist yet) and the stream.
+save_rng <- function() {
+  list(kind = RNGkind(), seed = get0(".Random.seed", envir = globalenv(), inherits = FALSE))
+}
+
+restore_rng <- function(old) {
+  RNGkind(old$kind[1], old$kind[2], old$kind[3])
+  if (is.null(old$seed)) {
+    if (exists(".Random.seed", envir = globalenv(), inherits = FALSE)) rm(".Random.seed", envir = globalenv())
+  } else {
+    assign(".Random.seed", old$seed, envir = globalenv())
+  }
+}
+
+# Subjects grouped into folds: one per subject, or `folds` seeded random
+# groups of near-equal size.
+subject_folds <- function(subjects, folds, seed, call = rlang::caller_env()) {
+  if (is.null(folds)) return(as.list(subjects))
+  if (!is.numeric(folds) || length(folds) != 1L || is.na(folds) || folds != round(folds) ||
+      folds < 1 || folds > length(subjects)) {
+    hm_abort("{.arg folds} must be a whole number from 1 to {length(subjects)} (the number of subjects held out), not {.val {format(folds)}}.",
+             "bad_input", argument = "folds", call = call)
+  }
+  shuffled <- with_seed(seed, sample(subjects))
+  unname(split(shuffled, rep_len(seq_len(folds), length(shuffled))))
+}
+
+# Fit without the held-out subjects and classify them; failures are returned,
+# not thrown, so one bad fold does not lose the others.
+run_fold <- function(x, held_subjects, method, fit_args) {
+  test_rows <- !is.na(x$meta$subject) & x$meta$subject %in% held_subjects
+  train <- x[!test_rows]
+  test <- x[test_rows]
+  missing_types <- setdiff(unique(as.character(test$meta$grasp)), unique(as.character(train$meta$grasp)))
+  out <- list(n_train = length(train), n_test = length(test),
+              missing_types = feix_order(missing_types), error = NULL)
+  fit <- tryCatch(fit_classifier(train, method, fit_args), error = function(e) e)
+  if (inherits(fit, "error")) {
+    out$error <- cli::ansi_strip(conditionMessage(fit))
+    out$predictions <- data.frame(id = test$meta$id, subject = test$meta$subject,
+                                  truth = test$meta$grasp, predicted = NA_character_,
+                                  distance = NA_real_, stringsAsFactors = FALSE)
+    return(out)
+  }
+  # a type whose model could not be fitted in this fold is recorded in the
+  # fold table (unfitted_types) rather than warned about once per fold
+  cl <- withCallingHandlers(classify(fit, test),
+                            handmotion_warning_projection_failed = function(w) invokeRestart("muffleWarning"))
+  out$unfitted_types <- unique(cl$failures$model)
+  p <- cl$predictions
+  p$predicted <- as.character(p$predicted)
+  out$predictions <- p
+  out
+}
+
+confusion_accuracy <- function(cm) if (cm$n > 0) sum(diag(cm$table)) / cm$n else NA_real_
+
+per_subject_accuracy <- function(pred) {
+  ok <- !is.na(pred$predicted) & as.character(pred$truth) == as.character(pred$predicted)
+  ok[is.na(ok)] <- FALSE
+  subj <- unique(pred$subject)
+  out <- data.frame(subject = subj,
+                    fold = pred$fold[match(subj, pred$subject)],
+                    n = as.integer(tabulate(match(pred$subject, subj), length(subj))),
+                    correct = as.integer(tapply(ok, factor(pred$subject, levels = subj), sum)),
+                    stringsAsFactors = FALSE)
+  out$accuracy <- out$correct / out$n
+  out
+}
+
+#' @export
+print.grasp_evaluation <- function(x, ...) {
+  cat(sprintf("<grasp_evaluation> %s classifier, %s\n",
+              if (x$method == "fpca") "FPCA projection-distance" else "last-frame PCA", x$scheme))
+  cat(sprintf("  held-out accuracy:  %s (%d recordings, %d subjects)\n", fmt_pct(x$accuracy[["held_out"]]),
+              x$confusion$n, nrow(x$per_subject)))
+  if (!is.null(x$in_sample))
+    cat(sprintf("  in-sample accuracy: %s (the thesis' figure: fit and classify the same recordings)\n",
+                fmt_pct(x$accuracy[["in_sample"]])))
+  acc <- x$per_subject$accuracy
+  if (length(acc) > 1)
+    cat(sprintf("  per-subject held-out accuracy: %s to %s (median %s)\n", fmt_pct(min(acc)),
+                fmt_pct(max(acc)), fmt_pct(stats::median(acc))))
+  miss <- x$folds$missing_types[nzchar(x$folds$missing_types)]
+  if (length(miss) > 0) cat(sprintf("  %d fold(s) held out a type absent from training\n", length(miss)))
+  unfit <- x$folds$unfitted_types[nzchar(x$folds$unfitted_types)]
+  if (length(unfit) > 0)
+    cat(sprintf("  %d fold(s) could not fit every type's model (see $folds$unfitted_types)\n", length(unfit)))
+  if (any(!is.na(x$folds$error))) cat(sprintf("  %d fold(s) failed to fit\n", sum(!is.na(x$folds$error))))
+  if (x$confusion$n_missing_predicted > 0)
+    cat(sprintf("  %d recording(s) without prediction\n", x$confusion$n_missing_predicted))
+  if (x$n_unlabelled > 0) cat(sprintf("  %d unlabelled recording(s) not used\n", x$n_unlabelled))
+  if (x$n_no_subject > 0) cat(sprintf("  %d recording(s) without subject used for training only\n", x$n_no_subject))
+  invisible(x)
+}
+
+#' Metrics of a grasp-classifier evaluation, held-out beside in-sample
+#'
+#' @param object A [evaluate_loso()] result.
+#' @param ... Unused.
+#' @return A data frame with columns `metric`, `class`, `held_out` and
+#'   `in_sample` (`NA` when the in-sample fit was not computed), the rows of
+#'   [summary.grasp_confusion()].
+#' @export
+#' @examples
+#' set.seed(1)
+#' recs <- lapply(1:24, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
+#' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 12),
+#'                                     subject = rep(paste0("s", 1:6), each = 4)))
+#' summary(evaluate_loso(g, method = "last_frame", fit_args = list(k = 2)))
+summary.grasp_evaluation <- function(object, ...) {
+  h <- as.data.frame(unclass(summary(object$confusion)))
+  out <- data.frame(metric = h$metric, class = h$class, held_out = h$estimate, stringsAsFactors = FALSE)
+  out$in_sample <- if (is.null(object$in_sample)) NA_real_ else summary(object$in_sample)$estimate
+  out
+}
+
+#' Heatmap of the held-out confusion matrix of an evaluation
+#'
+#' @param object An [evaluate_loso()] result.
+#' @param ... Passed to [autoplot.grasp_confusion()] (e.g. `normalise = TRUE`).
+#' @return A ggplot object.
+#' @export
+#' @method autoplot grasp_evaluation
+#' @examples
+#' set.seed(1)
+#' recs <- lapply(1:24, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
+#' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 12),
+#'                                     subject = rep(paste0("s", 1:6), each = 4)))
+#' ggplot2::autoplot(evaluate_loso(g, method = "last_frame", fit_args = list(k = 2)))
+autoplot.grasp_evaluation <- function(object, ...) {
+  autoplot.grasp_confusion(object$confusion, ...) +
+    ggplot2::labs(title = sprintf("Held-out (%s) confusion matrix", object$scheme))
+}

@@ -1,0 +1,206 @@
+# Last-frame PCA (thesis section 4.2, second scheme; Tables 5.7 and 5.8).
+# A grasp type is identified by its final hand posture, so each type is
+# summarised by an ordinary PCA of the last frames of its recordings. A new
+# recording is scored against each type by the Euclidean distance between its
+# last frame and that frame's projection on the type's first k PCs (centred on
+# the type's mean last frame): the reconstruction error of the type's k-PC
+# subspace. The type with the smallest error wins.
+
+#' Fit last-frame PCA models, one per grasp type
+#'
+#' For every grasp type in `x`, takes the last frame of each recording, centres
+#' on the type's mean last frame and computes its principal components (no
+#' scaling: all DoFs share the angle unit). Used by [classify()] with
+#' `method = "last_frame"`; [cumulative_variance()] gives the thesis' Table 5.7.
+#'
+#' A type with `n` recordings has at most `n - 1` informative PCs. When
+#' `n - 1 < k` the type uses `n - 1` components (0 for a single recording:
+#' distance to the mean); this fallback is recorded in `$k_used` and announced
+#' with a warning of class `handmotion_warning_few_recordings`.
+#'
+#' @param x A [grasps()] object. Unlabelled recordings (`grasp` `NA`) are
+#'   ignored and counted in `$n_unlabelled`.
+#' @param k Number of PCs used for classification (default 5, as the thesis).
+#' @param grasps Optional subset of grasp types to fit (names or ids); all
+#'   types present by default.
+#' @return An object of class `last_frame_pca`: a list with `models` (one per
+#'   type: `mean`, `rotation`, `sdev`, `cumvar`, `n`), `k`, `k_used` (named
+#'   integer), `dofs` and `n_unlabelled`.
+#' @seealso [cumulative_variance()], [classify()], [predict.last_frame_pca()]
+#' @export
+#' @examples
+#' set.seed(1)
+#' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
+#' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6),
+#'                                     subject = rep(paste0("s", 1:6), each = 2)))
+#' fit <- fit_last_frame_pca(g, k = 2)
+#' fit
+#' cumulative_variance(fit)[, 1:5]
+fit_last_frame_pca <- function(x, k = 5, grasps = NULL) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  k <- check_pc_count(k, length(x$dofs), call = call)
+  types <- labelled_types(x, grasps, call = call)
+  last <- last_frame_matrix(x)
+  models <- lapply(types, function(type) {
+    rows <- which(as.character(x$meta$grasp) == type)
+    pca_of_frames(last[rows, , drop = FALSE])
+  })
+  names(models) <- types
+  n_per <- vapply(models, function(m) m$n, integer(1))
+  k_used <- stats::setNames(pmin(k, n_per - 1L), names(models))
+  short <- names(k_used)[k_used < k]
+  if (length(short) > 0L) {
+    hm_warn(c("{length(short)} grasp type{?s} ha{?s/ve} too few recordings for {k} PCs: {.val {short}}.",
+              i = "Using n - 1 components instead (see {.field k_used})."),
+            "few_recordings")
+  }
+  structure(list(models = models, k = k, k_used = k_used, dofs = x$dofs,
+                 n_unlabelled = sum(is.na(x$meta$grasp))),
+            class = "last_frame_pca")
+}
+
+check_pc_count <- function(k, p, call = rlang::caller_env()) {
+  if (!is.numeric(k) || length(k) != 1L || is.na(k) || k < 1 || k != round(k) || k > p) {
+    hm_abort("{.arg k} must be a whole number of PCs between 1 and {p}, not {.val {format(k)}}.",
+             "bad_input", argument = "k", call = call)
+  }
+  as.integer(k)
+}
+
+# Grasp types to model: the requested ones (validated) or all labelled types
+# present, in Feix order.
+labelled_types <- function(x, grasps = NULL, call = rlang::caller_env()) {
+  have <- feix_order(unique(as.character(stats::na.omit(x$meta$grasp))))
+  if (length(have) == 0L) {
+    hm_abort("{.arg x} has no labelled recordings: every {.field grasp} is NA.", "no_labels",
+             argument = "x", call = call)
+  }
+  if (is.null(grasps)) return(have)
+  want <- as.character(as_feix_grasp(grasps, call = call))
+  absent <- setdiff(want, have)
+  if (length(absent) > 0L) {
+    hm_abort("No recordings of grasp type{?s} {.val {absent}} in {.arg x}.", "bad_input",
+             argument = "grasps", call = call)
+  }
+  want
+}
+
+# n x DoF matrix of the last frame of every recording.
+last_frame_matrix <- function(x) {
+  out <- do.call(rbind, lapply(x$recordings, function(r) r[nrow(r), ]))
+  dimnames(out) <- list(x$meta$id, x$dofs)
+  out
+}
+
+pca_of_frames <- function(frames) {
+  n <- nrow(frames)
+  p <- ncol(frames)
+  mu <- colMeans(frames)
+  centred <- sweep(frames, 2L, mu)
+  if (n > 1L) {
+    s <- svd(centred, nu = 0L)
+    r <- min(n - 1L, p)
+    rotation <- s$v[, seq_len(r), drop = FALSE]
+    vars <- s$d[seq_len(r)]^2 / (n - 1)
+  } else {
+    rotation <- matrix(0, p, 0L)
+    vars <- numeric(0)
+  }
+  dimnames(rotation) <- list(colnames(frames), sprintf("PC%d", seq_len(ncol(rotation))))
+  total <- sum(vars)
+  # All p PCs (Table 5.7): components beyond the rank explain nothing more.
+  cumvar <- rep(NA_real_, p)
+  if (total > 0) cumvar <- c(cumsum(vars), rep(total, p - length(vars)))[seq_len(p)] / total
+  list(mean = mu, rotation = rotation, sdev = sqrt(vars), cumvar = cumvar, n = n)
+}
+
+#' Cumulative variance explained by last-frame PCs (Table 5.7)
+#'
+#' @param fit A [fit_last_frame_pca()] result.
+#' @return A data frame with one row per grasp type: `grasp_id`, `grasp` and
+#'   `pc1` ... `pc<p>`, the cumulative fraction of variance explained by the
+#'   first 1 ... p principal components of the type's last frames (`NA` for a
+#'   type with one recording or no variance).
+#' @export
+#' @examples
+#' set.seed(2)
+#' recs <- lapply(1:8, function(i) matrix(rnorm(5 * 16), 5, 16))
+#' g <- grasps(recs, meta = data.frame(grasp = rep(c(1, 2), 4)))
+#' cumulative_variance(fit_last_frame_pca(g, k = 2))
+cumulative_variance <- function(fit) {
+  if (!inherits(fit, "last_frame_pca")) {
+    hm_abort("{.arg fit} must be a {.cls last_frame_pca} object, not {.obj_type_friendly {fit}}.",
+             "bad_input", argument = "fit", call = rlang::caller_env())
+  }
+  types <- names(fit$models)
+  cv <- do.call(rbind, lapply(fit$models, function(m) m$cumvar))
+  colnames(cv) <- paste0("pc", seq_len(ncol(cv)))
+  out <- data.frame(grasp_id = match(types, feix_levels()), grasp = types, cv,
+                    stringsAsFactors = FALSE, check.names = FALSE)
+  rownames(out) <- NULL
+  out
+}
+
+#' Classify recordings with last-frame PCA models
+#'
+#' @param object A [fit_last_frame_pca()] result.
+#' @param newdata A [grasps()] object with the same DoFs.
+#' @param type `"class"` for the predicted grasp type (factor over the fitted
+#'   types), `"distance"` for the n x types matrix of Euclidean distances
+#'   between each last frame and its projection on each type's first `k` PCs.
+#' @param ... Unused.
+#' @return A factor or a numeric matrix (rows = recording ids, columns = types).
+#' @export
+#' @examples
+#' set.seed(1)
+#' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
+#' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
+#' fit <- fit_last_frame_pca(g, k = 2)
+#' table(predict(fit, g), g$meta$grasp, dnn = c("predicted", "truth"))
+predict.last_frame_pca <- function(object, newdata, type = c("class", "distance"), ...) {
+  call <- rlang::caller_env()
+  type <- rlang::arg_match(type)
+  d <- last_frame_distances(object, newdata, call = call)
+  if (type == "distance") return(d)
+  nearest_type(d)
+}
+
+last_frame_distances <- function(fit, x, call = rlang::caller_env()) {
+  check_grasps(x, arg = "newdata", call = call)
+  if (!identical(x$dofs, fit$dofs)) {
+    hm_abort(c("{.arg newdata} has DoFs {.val {x$dofs}}, the model was fitted on {.val {fit$dofs}}.",
+               i = "Both must have the same DoFs in the same order."),
+             "dof_mismatch", argument = "newdata", call = call)
+  }
+  last <- last_frame_matrix(x)
+  d <- vapply(names(fit$models), function(type) {
+    m <- fit$models[[type]]
+    centred <- sweep(last, 2L, m$mean)
+    v <- m$rotation[, seq_len(fit$k_used[[type]]), drop = FALSE]
+    resid <- centred - (centred %*% v) %*% t(v)
+    sqrt(rowSums(resid^2))
+  }, numeric(nrow(last)))
+  matrix(d, nrow(last), length(fit$models), dimnames = list(x$meta$id, names(fit$models)))
+}
+
+# Column name of the row minimum; NA when a row has no finite distance.
+nearest_type <- function(d) {
+  best <- apply(d, 1L, function(r) if (all(is.na(r))) NA_integer_ else which.min(r))
+  factor(colnames(d)[best], levels = colnames(d))
+}
+
+#' @export
+print.last_frame_pca <- function(x, ...) {
+  n <- vapply(x$models, function(m) m$n, integer(1))
+  cv <- vapply(x$models, function(m) m$cumvar[x$k], numeric(1))
+  cat(sprintf("<last_frame_pca> %d grasp type%s, %d DoFs, k = %d PCs\n", length(x$models),
+              if (length(x$models) == 1) "" else "s", length(x$dofs), x$k))
+  cat(sprintf("  recordings per type: %d to %d; variance explained by %d PCs: %s to %s\n",
+              min(n), max(n), x$k, fmt_pct(min(cv, na.rm = TRUE)), fmt_pct(max(cv, na.rm = TRUE))))
+  short <- names(x$k_used)[x$k_used < x$k]
+  if (length(short) > 0)
+    cat(sprintf("  fewer than %d PCs (too few recordings): %s\n", x$k, paste(short, collapse = ", ")))
+  if (x$n_unlabelled > 0) cat(sprintf("  ignored %d unlabelled recording(s)\n", x$n_unlabelled))
+  invisible(x)
+}

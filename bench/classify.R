@@ -1,0 +1,48 @@
+# Benchmark of the classifiers and their evaluation (run from the repo root:
+#   Rscript bench/classify.R
+# after pkgload::load_all(), which this script does). Prints timings, the
+# in-sample (thesis-style) and held-out accuracies of both classifiers on
+# simulated HUST-like data, and the cost ratio of full LOSO vs grouped folds.
+pkgload::load_all(".", quiet = TRUE)
+
+subjects <- as.integer(Sys.getenv("HM_BENCH_SUBJECTS", "6"))
+folds <- as.integer(Sys.getenv("HM_BENCH_FOLDS", "3"))
+g <- simulate_grasps(subjects = subjects, grasps = 1:33, objects = 1, trials = 2, seed = 1)
+cat(sprintf("data: %d recordings, %d types, %d subjects\n", length(g), 33, subjects))
+
+timed <- function(expr) {
+  t0 <- proc.time()[["elapsed"]]
+  value <- expr
+  list(value = value, seconds = proc.time()[["elapsed"]] - t0)
+}
+
+fit <- timed(fit_grasp_models(g, seed = 1))
+cl_fpca <- timed(classify(fit$value, g))
+lf_fit <- timed(fit_last_frame_pca(g, k = 5))
+cl_lf <- timed(classify(lf_fit$value, g))
+acc <- function(cl) {
+  p <- cl$predictions
+  mean(as.character(p$predicted) == as.character(p$truth), na.rm = TRUE)
+}
+cat(sprintf("fit_grasp_models (33 types):        %7.2f s\n", fit$seconds))
+cat(sprintf("classify, FPCA (%d x 33 projections): %7.2f s  (%.2f ms per recording x model)\n",
+            length(g), cl_fpca$seconds, 1000 * cl_fpca$seconds / (length(g) * 33)))
+cat(sprintf("fit_last_frame_pca:                 %7.3f s\n", lf_fit$seconds))
+cat(sprintf("classify, last frame:               %7.3f s\n", cl_lf$seconds))
+cat(sprintf("ratio FPCA / last-frame (fit + classify): %.0f\n",
+            (fit$seconds + cl_fpca$seconds) / (lf_fit$seconds + cl_lf$seconds)))
+cat(sprintf("in-sample accuracy: FPCA %.1f%%, last-frame PCA %.1f%%\n",
+            100 * acc(cl_fpca$value), 100 * acc(cl_lf$value)))
+print(distance_minima(distance_table(cl_fpca$value)))
+
+ev_lf <- timed(evaluate_loso(g, "last_frame", fit_args = list(k = 5)))
+cat(sprintf("LOSO last-frame (%d folds): %.2f s; held-out %.1f%% vs in-sample %.1f%%\n",
+            subjects, ev_lf$seconds, 100 * ev_lf$value$accuracy[["held_out"]],
+            100 * ev_lf$value$accuracy[["in_sample"]]))
+ev_fp <- timed(evaluate_loso(g, "fpca", fit_args = list(seed = 1), folds = folds, in_sample = FALSE))
+cat(sprintf("grouped folds FPCA (%d folds): %.1f s; held-out %.1f%% vs in-sample %.1f%%\n",
+            folds, ev_fp$seconds, 100 * ev_fp$value$accuracy[["held_out"]], 100 * acc(cl_fpca$value)))
+per_fold <- ev_fp$seconds / folds
+cat(sprintf("estimated full FPCA LOSO here: %.0f s (%d refits); for 30 subjects: ~%.0f s per fold x 30\n",
+            per_fold * subjects, subjects, per_fold))
+cat(sprintf("ratio full LOSO / %d folds (refits): %.1f\n", folds, subjects / folds))

@@ -1,0 +1,110 @@
+# Known counts -> hand-computed metrics.
+#   truth: A A A A B B C C C C
+#   pred:  A A B B B B C C A C
+# table (rows = predicted, cols = truth):
+#        A B C
+#   A    2 0 1
+#   B    2 2 0
+#   C    0 0 3
+# accuracy 7/10; recall A 2/4, B 2/2, C 3/4 (balanced 0.75);
+# precision A 2/3, B 2/4, C 3/3 (macro 13/18).
+known_truth <- c("A", "A", "A", "A", "B", "B", "C", "C", "C", "C")
+known_pred <- c("A", "A", "B", "B", "B", "B", "C", "C", "A", "C")
+
+test_that("the table has rows = prediction and columns = truth", {
+  cm <- grasp_confusion(known_truth, known_pred)
+  expect_s3_class(cm, "grasp_confusion")
+  expect_equal(names(dimnames(cm$table)), c("Prediction", "Truth"))
+  expect_equal(cm$levels, c("A", "B", "C"))
+  expect_equal(unname(unclass(cm$table)), matrix(c(2, 2, 0, 0, 2, 0, 1, 0, 3), 3))
+  expect_equal(cm$n, 10L)
+})
+
+test_that("summary gives the hand-computed metrics", {
+  s <- summary(grasp_confusion(known_truth, known_pred))
+  expect_s3_class(s, "data.frame")
+  est <- function(metric, class = NA) {
+    s$estimate[s$metric == metric & (if (is.na(class)) is.na(s$class) else s$class %in% class)]
+  }
+  expect_equal(est("accuracy"), 0.7)
+  expect_equal(est("balanced_accuracy"), 0.75)
+  expect_equal(est("macro_precision"), 13 / 18)
+  expect_equal(est("recall", "A"), 0.5)
+  expect_equal(est("recall", "B"), 1)
+  expect_equal(est("recall", "C"), 0.75)
+  expect_equal(est("precision", "A"), 2 / 3)
+  expect_equal(est("precision", "B"), 0.5)
+  expect_equal(est("precision", "C"), 1)
+  expect_equal(s$n[s$metric == "recall"], c(4, 2, 4))
+})
+
+test_that("a class never predicted has NA precision, not a silent zero", {
+  s <- summary(grasp_confusion(c("A", "B"), c("A", "A"), levels = c("A", "B")))
+  expect_true(is.na(s$estimate[s$metric == "precision" & s$class %in% "B"]))
+  expect_equal(s$estimate[s$metric == "recall" & s$class %in% "B"], 0)
+})
+
+test_that("missing truth or prediction is counted, not dropped silently", {
+  cm <- grasp_confusion(c("A", NA, "B", "B"), c("A", "A", NA, "B"))
+  expect_equal(cm$n, 2L)
+  expect_equal(cm$n_missing_truth, 1L)
+  expect_equal(cm$n_missing_predicted, 1L)
+  expect_output(print(cm), "1 unlabelled")
+  expect_output(print(cm), "1 recording without a prediction")
+})
+
+test_that("Feix names are put in Feix order and bad input gives classed errors", {
+  cm <- grasp_confusion(c("Tripod", "Large Diameter"), c("Large Diameter", "Large Diameter"))
+  expect_equal(cm$levels, c("Large Diameter", "Tripod"))
+  expect_error(grasp_confusion("A", c("A", "B")), class = "handmotion_error_bad_input")
+  expect_error(grasp_confusion("A", "Z", levels = "A"), class = "handmotion_error_bad_input")
+})
+
+test_that("as.data.frame gives the long form and round-trips through a table", {
+  cm <- grasp_confusion(known_truth, known_pred)
+  d <- as.data.frame(cm)
+  expect_named(d, c("predicted", "truth", "n"))
+  expect_equal(nrow(d), 9)
+  expect_equal(d$n[d$predicted == "B" & d$truth == "A"], 2L)
+  back <- as_grasp_confusion(cm$table)
+  expect_equal(unclass(back$table), unclass(cm$table))
+  expect_equal(summary(back)$estimate, summary(cm)$estimate)
+  from_df <- as_grasp_confusion(data.frame(truth = known_truth, predicted = known_pred))
+  expect_equal(unclass(from_df$table), unclass(cm$table))
+  expect_error(as_grasp_confusion(matrix(1:6, 2)), class = "handmotion_error_bad_input")
+})
+
+test_that("printed confusion and summary are stable", {
+  cm <- grasp_confusion(known_truth, known_pred)
+  expect_snapshot(print(cm))
+  expect_snapshot(print(summary(cm)))
+})
+
+test_that("a 33-class matrix prints compactly with Feix ids", {
+  lev <- feix_levels()
+  truth <- factor(rep(lev, each = 3), levels = lev)
+  pred <- truth
+  pred[seq(1, 99, by = 9)] <- lev[9]
+  cm <- grasp_confusion(truth, pred)
+  expect_equal(length(cm$levels), 33)
+  out <- capture.output(print(cm))
+  expect_true(max(nchar(out)) <= 120)
+  expect_snapshot(print(cm))
+})
+
+test_that("autoplot draws tiles and labels for every cell", {
+  cm <- grasp_confusion(known_truth, known_pred)
+  p <- ggplot2::autoplot(cm)
+  expect_s3_class(p, "ggplot")
+  b <- ggplot2::ggplot_build(p)
+  tiles <- b$data[[1]]
+  text <- b$data[[2]]
+  expect_equal(nrow(tiles), 9)
+  expect_setequal(text$label[text$label != ""], c("2", "2", "1", "2", "3"))
+  # fill follows counts: the (C, C) cell with 3 is the darkest
+  d <- p$data
+  expect_equal(d$fill[d$predicted == "C" & d$truth == "C"], 3)
+  pn <- ggplot2::autoplot(cm, normalise = TRUE)
+  expect_equal(pn$data$fill[pn$data$predicted == "A" & pn$data$truth == "A"], 0.5)
+  expect_error(ggplot2::autoplot(cm, type = "mosaic"))
+})
