@@ -1,0 +1,328 @@
+# Reader for the HUST grasp data layout (Jeppsson 2017, section 4.1.1): one
+# delimited text file per grasp, 16 columns (the DoFs of Figure 4.1, in the
+# order of `hust_dofs`), one row per 1/50 s. The thesis does not document the
+# file names, so the grasp, subject, object and trial of each file come from a
+# manifest or from a regular expression with named groups.
+
+hust_manifest_name <- "manifest.csv"
+
+#' Read HUST-layout grasp recordings
+#'
+#' Reads delimited text files with one row per frame and the 16 HUST DoFs as
+#' columns (see [hust_dofs]) into a [grasps()] object. Each file is one grasp.
+#'
+#' Where the metadata comes from, in order:
+#' 1. `manifest`: a data frame, or the path of a CSV file, with a column
+#'    `file` (file name or path, relative to the manifest's folder or to
+#'    `path`) and any of `grasp` (Feix name or id 1-33), `subject`, `object`,
+#'    `trial`, `id`, `rate`, `unit` and further columns (kept as metadata).
+#' 2. `pattern`: a Perl regular expression with named groups (`grasp`,
+#'    `subject`, `object`, `trial`, `id`) matched against each file name
+#'    without its extension, e.g.
+#'    `"^s(?<subject>\\d+)_g(?<grasp>\\d+)_o(?<object>\\d+)_t(?<trial>\\d+)$"`.
+#' 3. A `manifest.csv` in a directory given as `path` (what [write_hust()]
+#'    writes).
+#' 4. Otherwise ids are the file names and grasp, subject, object and trial
+#'    are unknown (`NA`).
+#'
+#' Files may have a header row or none (detected by default: a first row
+#' that is not all numbers is a header; header names matching the HUST DoF
+#' names, in any order and case, put the columns in the standard order), and
+#' be separated by commas, semicolons (then a decimal comma is accepted),
+#' tabs or blanks (detected per file by default). Blank lines, surrounding
+#' blanks, quotes, a trailing separator and CRLF line endings are accepted.
+#'
+#' @param path A directory, or one or more files.
+#' @param manifest `NULL`, a data frame or the path of a manifest CSV (see
+#'   Details).
+#' @param pattern `NULL` or a regular expression with named groups.
+#' @param header `NA` (detect), `TRUE` or `FALSE`.
+#' @param sep `NA` (detect per file) or the separator, e.g. `","` or `";"`.
+#' @param rate Sampling rate in Hz; `NULL` takes it from the manifest's
+#'   `rate` column, else 50 Hz (the HUST rate).
+#' @param unit Angle unit; `NULL` takes it from the manifest's `unit`
+#'   column, else `"deg"`.
+#' @param file_pattern Regular expression selecting data files in a directory.
+#' @param recursive Look into sub-directories.
+#' @param truncated `"error"` or `"drop"` a truncated last line (fewer
+#'   fields than DoFs); see [read_graspdb14()].
+#' @return A `grasps` object with the 16 HUST DoFs. Attribute `"failures"`
+#'   lists every file that could not be read (see [read_failures()]): bad
+#'   content (classed errors as in [read_graspdb14()]), a file name the
+#'   `pattern` does not match (`handmotion_error_unknown_file_name`), a
+#'   manifest row whose file is missing (`handmotion_error_file_not_found`)
+#'   or whose grasp is unknown (`handmotion_error_unknown_grasp`), and files
+#'   of the directory the manifest does not list
+#'   (`handmotion_error_not_in_manifest`). Reading a single file raises these
+#'   errors instead.
+#' @seealso [write_hust()], [simulate_grasps()]
+#' @export
+#' @examples
+#' dir <- system.file("extdata", "hust", package = "handmotion")
+#' g <- read_hust(dir)
+#' g
+#' grasp_meta(g)
+read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = NA,
+                      rate = NULL, unit = NULL, file_pattern = "\\.(csv|txt)$",
+                      recursive = FALSE, truncated = c("error", "drop")) {
+  call <- rlang::caller_env()
+  truncated <- rlang::arg_match(truncated, error_call = call)
+  if (!is.null(manifest) && !is.null(pattern)) {
+    hm_abort("Give {.arg manifest} or {.arg pattern}, not both.", "bad_input",
+             argument = "manifest", call = call)
+  }
+  input <- list_input_files(path, file_pattern, recursive, call = call)
+  base_dir <- if (length(path) == 1L && dir.exists(path)) path else dirname(path[1])
+  if (is.null(manifest) && is.null(pattern) && length(path) == 1L && dir.exists(path) &&
+      file.exists(file.path(path, hust_manifest_name))) {
+    manifest <- file.path(path, hust_manifest_name)
+  }
+  plan <- hust_read_plan(input$files, manifest, pattern, base_dir,
+                         from_dir = any(dir.exists(path)), call = call)
+  dofs <- handmotion::hust_dofs$name
+  reader <- function(k) {
+    pre <- plan$errors[[k]]
+    if (!is.null(pre)) stop(pre)
+    parse_hust_content(plan$files[k], dofs = dofs, header = header, sep = sep,
+                       truncated = truncated, call = call)
+  }
+  if (!input$many) {
+    rec <- reader(1L)
+    keep <- 1L
+    failures <- empty_read_failures()
+    recs <- list(rec)
+  } else {
+    read <- read_each_file(seq_along(plan$files), reader)
+    read$failures$file <- plan$files[as.integer(read$failures$file)]
+    failures <- rbind(read$failures, plan$unlisted)
+    keep <- as.integer(read$files)
+    recs <- read$results
+    warn_read_failures(failures, total = length(plan$files) + nrow(plan$unlisted))
+    if (length(recs) == 0L) {
+      hm_abort(c("None of the {length(plan$files)} HUST file{?s} could be read.",
+                 i = if (nrow(failures)) "First failure: {failures$message[1]}" else NULL),
+               "no_files", file = path, failures = failures, call = call)
+    }
+  }
+  meta <- plan$meta[keep, , drop = FALSE]
+  # only a "drop" read can drop lines; record which files lost one
+  if (truncated == "drop") meta$dropped_last_line <- vapply(recs, `[[`, logical(1), "dropped")
+  if (is.null(rate)) rate <- manifest_single(meta, "rate", 50, call = call)
+  if (is.null(unit)) unit <- manifest_single(meta, "unit", "deg", call = call)
+  meta$rate <- NULL
+  meta$unit <- NULL
+  out <- grasps(lapply(recs, `[[`, "values"), meta = meta, dofs = dofs, rate = as.numeric(rate),
+                unit = unit)
+  attr(out, "failures") <- failures
+  out
+}
+
+# The one value of a manifest column (rate, unit), or the default.
+manifest_single <- function(meta, column, default, call = rlang::caller_env()) {
+  v <- unique(stats::na.omit(meta[[column]]))
+  if (length(v) == 0L) return(default)
+  if (length(v) > 1L) {
+    hm_abort("The manifest gives several values of {.field {column}} ({.val {v}}); one grasps set has one.",
+             "bad_manifest", argument = "manifest", call = call)
+  }
+  v
+}
+
+# Decide, before reading any content, which files to read and with what
+# metadata. Problems found here (unknown name, missing file, unknown grasp)
+# are stored per file and raised when that file is "read", so they land in
+# the failure report like content errors.
+hust_read_plan <- function(files, manifest, pattern, base_dir, from_dir, call = rlang::caller_env()) {
+  unlisted <- empty_read_failures()
+  if (!is.null(manifest)) {
+    man <- read_hust_manifest(manifest, call = call)
+    man_dir <- if (is.character(manifest)) dirname(manifest) else base_dir
+    # manifest paths are relative to the manifest's folder; absolute ones are kept
+    rel <- file.path(man_dir, man$file)
+    listed <- ifelse(file.exists(rel) | !file.exists(man$file), rel, man$file)
+    norm <- function(p) normalizePath(p, mustWork = FALSE)
+    files <- files[basename(files) != hust_manifest_name]
+    if (from_dir) {
+      # data files next to the manifest that it does not mention are reported
+      extra <- files[!norm(files) %in% norm(listed)]
+    } else {
+      # files named explicitly: read only their manifest rows
+      rows <- match(norm(files), norm(listed))
+      by_name <- match(basename(files), basename(listed))
+      rows[is.na(rows)] <- by_name[is.na(rows)]
+      extra <- files[is.na(rows)]
+      man <- man[stats::na.omit(rows), , drop = FALSE]
+      listed <- files[!is.na(rows)]
+    }
+    if (length(extra)) {
+      unlisted <- data.frame(file = extra, line = NA_integer_, class = "handmotion_error_not_in_manifest",
+                             message = "File is not listed in the manifest; not read.",
+                             stringsAsFactors = FALSE)
+      if (!from_dir && length(listed) == 0L) {
+        abort_bad_file("File{?s} {.file {extra}} {?is/are} not listed in the manifest.",
+                       "not_in_manifest", file = extra, call = call)
+      }
+    }
+    meta <- man
+    meta$file <- NULL
+    if (!"id" %in% names(meta)) meta$id <- file_stem(listed)
+    meta$source <- listed
+    errors <- lapply(seq_along(listed), function(k) {
+      if (!file.exists(listed[k])) {
+        return(hm_condition("Manifest row {k}: file {.file {listed[k]}} does not exist.",
+                            c("file_not_found", "bad_file"), file = listed[k], line = NA_integer_))
+      }
+      g <- meta$grasp[k]
+      if (!is.null(g) && !is.na(g)) {
+        bad <- tryCatch({ as_feix_grasp(g); NULL }, handmotion_error = function(e) e)
+        if (!is.null(bad)) {
+          return(hm_condition("Manifest row {k}: unknown grasp type {.val {as.character(g)}} for {.file {listed[k]}}.",
+                              c("unknown_grasp", "bad_file"), file = listed[k], line = NA_integer_))
+        }
+      }
+      NULL
+    })
+    if ("grasp" %in% names(meta)) {
+      meta$grasp <- as.character(meta$grasp)
+      meta$grasp[!vapply(errors, is.null, logical(1))] <- NA
+    }
+    return(list(files = listed, meta = meta, errors = errors, unlisted = unlisted))
+  }
+  files <- files[basename(files) != hust_manifest_name]
+  stems <- file_stem(files)
+  meta <- data.frame(id = stems, source = files, stringsAsFactors = FALSE)
+  errors <- vector("list", length(files))
+  if (!is.null(pattern)) {
+    groups <- lapply(stems, function(s) regex_groups(s, pattern))
+    known <- c("grasp", "subject", "object", "trial", "id")
+    names_found <- unique(unlist(lapply(groups, names)))
+    if (length(groups) && !length(intersect(names_found, known)) && all(!vapply(groups, is.null, logical(1)))) {
+      hm_abort(c("{.arg pattern} has no named group among {.val {known}}.",
+                 i = "Write e.g. {.code (?<grasp>\\\\d+)} for a group named grasp."),
+               "bad_input", argument = "pattern", call = call)
+    }
+    for (col in intersect(known, names_found)) {
+      meta[[col]] <- vapply(groups, function(g) if (is.null(g) || g[[col]] == "") NA_character_ else g[[col]],
+                            character(1))
+    }
+    for (k in which(vapply(groups, is.null, logical(1)))) {
+      errors[[k]] <- hm_condition("File name {.file {basename(files[k])}} does not match {.arg pattern}.",
+                                  c("unknown_file_name", "bad_file"), file = files[k], line = NA_integer_)
+    }
+    if ("grasp" %in% names(meta)) {
+      for (k in seq_along(files)) {
+        g <- meta$grasp[k]
+        if (is.na(g)) next
+        ok <- tryCatch({ as_feix_grasp(g); TRUE }, handmotion_error = function(e) FALSE)
+        if (!ok) {
+          errors[[k]] <- hm_condition("File {.file {basename(files[k])}}: unknown grasp type {.val {g}}.",
+                                      c("unknown_grasp", "bad_file"), file = files[k], line = NA_integer_)
+          meta$grasp[k] <- NA
+        }
+      }
+    }
+    if ("trial" %in% names(meta)) meta$trial <- suppressWarnings(as.integer(meta$trial))
+  }
+  list(files = files, meta = meta, errors = errors, unlisted = unlisted)
+}
+
+# A classed condition object built like hm_abort() would, without raising it.
+hm_condition <- function(message, class, ..., .envir = parent.frame()) {
+  tryCatch(hm_abort(message, class, ..., call = NULL, .envir = .envir),
+           handmotion_error = function(e) e)
+}
+
+# Read and check a manifest (data frame or CSV path).
+read_hust_manifest <- function(manifest, call = rlang::caller_env()) {
+  if (is.character(manifest) && length(manifest) == 1L) {
+    if (!file.exists(manifest)) {
+      hm_abort("Manifest {.file {manifest}} does not exist.", "file_not_found",
+               file = manifest, argument = "manifest", call = call)
+    }
+    # all text first: ids like "007" must not become numbers
+    man <- tryCatch(utils::read.csv(manifest, colClasses = "character", strip.white = TRUE,
+                                    check.names = FALSE, na.strings = c("NA", "")),
+                    error = function(e) {
+                      hm_abort("Cannot read manifest {.file {manifest}}: {conditionMessage(e)}",
+                               c("bad_manifest", "bad_file"), file = manifest, line = NA_integer_,
+                               argument = "manifest", call = call)
+                    })
+  } else if (is.data.frame(manifest)) {
+    man <- as.data.frame(manifest, stringsAsFactors = FALSE)
+  } else {
+    hm_abort("{.arg manifest} must be a data frame or the path of a CSV file.", "bad_input",
+             argument = "manifest", call = call)
+  }
+  names(man) <- trimws(tolower(names(man)))
+  if (!"file" %in% names(man) || nrow(man) == 0L || anyNA(man$file)) {
+    hm_abort(c("The manifest needs a {.field file} column naming every data file.",
+               i = "Its columns: {.val {names(man)}}."),
+             "bad_manifest", argument = "manifest", call = call)
+  }
+  man$file <- trimws(as.character(man$file))
+  text_cols <- c("file", "id", "grasp", "subject", "object")
+  for (v in setdiff(names(man), text_cols)) {
+    if (is.character(man[[v]])) man[[v]] <- utils::type.convert(man[[v]], as.is = TRUE)
+  }
+  if ("trial" %in% names(man)) man$trial <- suppressWarnings(as.integer(man$trial))
+  man
+}
+
+# Parse one HUST file into a frames x DoF matrix (columns in `dofs` order).
+parse_hust_content <- function(file, dofs, header = NA, sep = NA, truncated = "error",
+                               call = rlang::caller_env()) {
+  text <- read_text_lines(file, call = call)$text
+  keep <- nzchar(text) & !startsWith(text, "#")
+  if (!any(keep)) {
+    abort_bad_file("{.file {file}} is empty: it has no data rows.", "empty_file",
+                   file = file, line = if (length(text)) length(text) else NA_integer_, call = call)
+  }
+  line_no <- which(keep)
+  text <- text[keep]
+  if (is.na(sep)) sep <- detect_separator(text[min(2L, length(text))])
+  tokens <- if (sep == " ") strsplit(text, "[ \t]+", perl = TRUE) else strsplit(text, sep, fixed = TRUE)
+  tokens <- lapply(tokens, function(t) {
+    t <- gsub("^[\"' ]+|[\"' ]+$", "", trimws(t))
+    # a trailing separator leaves one empty last field
+    if (length(t) && t[length(t)] == "") t <- t[-length(t)]
+    t
+  })
+  if (sep == ";") tokens <- lapply(tokens, function(t) sub("^([-+]?[0-9]*),([0-9]+([eE][-+]?[0-9]+)?)$", "\\1.\\2", t))
+  first <- tokens[[1]]
+  has_header <- if (is.na(header)) any(is.na(suppressWarnings(as.numeric(first)))) else isTRUE(header)
+  order <- seq_along(dofs)
+  if (has_header) {
+    hdr <- first
+    tokens <- tokens[-1]
+    hdr_line <- line_no[1]
+    line_no <- line_no[-1]
+    if (length(tokens) == 0L) {
+      abort_bad_file("{.file {file}} has a header but no data rows.", "empty_file",
+                     file = file, line = hdr_line, call = call)
+    }
+    m <- match(toupper(hdr), toupper(dofs))
+    if (length(hdr) == length(dofs) && !anyNA(m) && !anyDuplicated(m)) {
+      order <- match(seq_along(dofs), m)
+    } else if (length(hdr) == length(dofs)) {
+      hm_warn("Header of {.file {file}} does not name the HUST DoFs; columns taken in the standard order.",
+              "unknown_header", file = file, line = hdr_line)
+    }
+  }
+  checked <- check_field_counts(tokens, line_no, length(dofs), file, truncated,
+                                what = sprintf("A HUST row has one value per DoF (%s).",
+                                               paste(dofs, collapse = " ")),
+                                call = call)
+  v <- parse_numeric_fields(unlist(checked$tokens, use.names = FALSE), checked$line_no,
+                            length(dofs), file, call = call)
+  values <- matrix(v, ncol = length(dofs), byrow = TRUE)[, order, drop = FALSE]
+  colnames(values) <- dofs
+  list(values = values, dropped = checked$dropped)
+}
+
+# The separator of a data line: semicolon, comma, tab, else blanks.
+detect_separator <- function(line) {
+  if (grepl(";", line, fixed = TRUE)) return(";")
+  if (grepl(",", line, fixed = TRUE)) return(",")
+  if (grepl("\t", line, fixed = TRUE)) return("\t")
+  " "
+}

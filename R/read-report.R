@@ -1,0 +1,187 @@
+# What failed when reading many files. Readers of whole directories
+# (read_hust(), read_graspdb14()) never stop at the first bad file and never
+# drop one silently: every file that could not be read becomes one row of a
+# "failures" data frame (file, line, class, message) attached to the result as
+# attribute "failures", and a classed warning says how many there were.
+
+# An empty failure report, so callers can always rbind onto it.
+empty_read_failures <- function() {
+  data.frame(file = character(), line = integer(), class = character(),
+             message = character(), stringsAsFactors = FALSE)
+}
+
+# One failure row from a condition raised while reading `file`.
+read_failure_row <- function(file, cnd) {
+  cls <- class(cnd)
+  specific <- cls[startsWith(cls, "handmotion_error_")][1]
+  if (is.na(specific)) specific <- cls[1]
+  line <- cnd$line
+  line <- if (is.null(line) || length(line) != 1L) NA_integer_ else as.integer(line)
+  msg <- tryCatch(cli::ansi_strip(conditionMessage(cnd)), error = function(e) "<unprintable message>")
+  data.frame(file = file, line = line, class = specific,
+             message = gsub("\\s+", " ", msg), stringsAsFactors = FALSE)
+}
+
+# Apply `reader(file)` to every file. Files whose reading signals a condition
+# of class `catch` are collected in the failure report; anything else (a bug,
+# an interrupt) propagates. Returns list(results = named list of successes,
+# failures = data frame).
+read_each_file <- function(files, reader, catch = "handmotion_error") {
+  results <- vector("list", length(files))
+  failures <- vector("list", length(files))
+  for (i in seq_along(files)) {
+    results[i] <- list(tryCatch(reader(files[i]), condition = function(cnd) {
+      if (!inherits(cnd, catch)) stop(cnd)
+      failures[[i]] <<- read_failure_row(files[i], cnd)
+      NULL
+    }))
+  }
+  ok <- !vapply(results, is.null, logical(1))
+  fail <- do.call(rbind, c(list(empty_read_failures()), failures[!ok]))
+  rownames(fail) <- NULL
+  list(results = results[ok], files = files[ok], failures = fail)
+}
+
+# Warn (classed) about the files that could not be read, naming them.
+warn_read_failures <- function(failures, total) {
+  n <- nrow(failures)
+  if (n == 0L) return(invisible(failures))
+  # file names go into a cli template, so braces are escaped
+  shown <- utils::head(sprintf("%s%s: %s", gsub("([{}])", "\\1\\1", basename(failures$file)),
+                               ifelse(is.na(failures$line), "", paste0(":", failures$line)),
+                               failures$class), 5)
+  hm_warn(c("{n} of {total} file{?s} could not be read and {cli::qty(n)}{?was/were} skipped.",
+            stats::setNames(shown, rep("x", length(shown))),
+            i = if (n > 5) "... and {n - 5} more." else NULL,
+            i = "See {.code read_failures()} on the result for every file, line and reason."),
+          "read_failures", failures = failures)
+  invisible(failures)
+}
+
+#' Files a reader could not read
+#'
+#' Directory reads ([read_graspdb14()], [read_hust()]) read every file they
+#' can and record each file they could not, with the line and the reason.
+#' `read_failures()` returns that report.
+#'
+#' @param x The result of a reader.
+#' @return A data frame with one row per failed file: `file`, `line` (`NA`
+#'   when the failure is not tied to a line, e.g. an unknown file name),
+#'   `class` (the condition class, e.g. `"handmotion_error_bad_field_count"`)
+#'   and `message`. Zero rows when everything was read.
+#' @export
+#' @examples
+#' dir <- tempfile("graspdb14-")
+#' dir.create(dir)
+#' file.copy(system.file("extdata", "graspdb14", package = "handmotion"), dir,
+#'           recursive = TRUE)
+#' writeLines("not a motion file", file.path(dir, "graspdb14", "junk.txt"))
+#' g <- suppressWarnings(read_graspdb14(file.path(dir, "graspdb14")))
+#' read_failures(g)
+read_failures <- function(x) {
+  f <- attr(x, "failures", exact = TRUE)
+  if (is.null(f)) empty_read_failures() else f
+}
+
+# Raise a classed error about a file's content or name. `class` is the
+# specific problem; every such error is also a "handmotion_error_bad_file",
+# and carries the fields `file` and `line`.
+abort_bad_file <- function(message, class, file, line = NA_integer_, ...,
+                           call = rlang::caller_env(), .envir = parent.frame()) {
+  hm_abort(message, class = unique(c(class, "bad_file")), file = file,
+           line = as.integer(line), ..., call = call, .envir = .envir)
+}
+
+# List the files to read from `path` (files and/or directories). Returns the
+# files, and whether the read is a "many files" read (any directory, or more
+# than one path) that collects failures rather than stopping.
+list_input_files <- function(path, pattern, recursive, call = rlang::caller_env()) {
+  if (!is.character(path) || length(path) == 0L || anyNA(path)) {
+    hm_abort("{.arg path} must be file or directory paths, not {.obj_type_friendly {path}}.",
+             "bad_input", argument = "path", call = call)
+  }
+  missing <- !file.exists(path)
+  if (any(missing)) {
+    hm_abort("{.arg path} does not exist: {.file {path[missing]}}.",
+             "file_not_found", argument = "path", file = path[missing], call = call)
+  }
+  is_dir <- dir.exists(path)
+  files <- unlist(lapply(seq_along(path), function(i) {
+    if (!is_dir[i]) return(path[i])
+    sort(list.files(path[i], pattern = pattern, full.names = TRUE,
+                    recursive = recursive, ignore.case = TRUE))
+  }), use.names = FALSE)
+  files <- files[!dir.exists(files)]
+  list(files = files, many = any(is_dir) || length(path) > 1L)
+}
+
+# ---- shared text-parsing helpers (GraspDB14 and HUST readers) ----
+
+# Read a text file as lines: accepts LF, CRLF and CR line endings, trims
+# blanks, records whether the last line was complete.
+read_text_lines <- function(file, call = rlang::caller_env()) {
+  size <- file.size(file)
+  if (is.na(size) || size == 0) {
+    abort_bad_file("{.file {file}} is empty.", "empty_file", file = file, line = NA_integer_, call = call)
+  }
+  bytes <- readBin(file, "raw", size)
+  if (any(bytes == as.raw(0))) {
+    abort_bad_file("{.file {file}} is not a text file (it contains NUL bytes).", "not_text",
+                   file = file, line = NA_integer_, call = call)
+  }
+  txt <- rawToChar(bytes)
+  # stray non-UTF-8 bytes (e.g. a Latin-1 header) must not break the regexes
+  if (!validUTF8(txt)) txt <- iconv(txt, "latin1", "UTF-8")
+  # normalise CRLF and CR endings, then split with a fixed pattern (fast)
+  if (grepl("\r", txt, fixed = TRUE)) txt <- gsub("\r\n?", "\n", txt, perl = TRUE)
+  lines <- strsplit(txt, "\n", fixed = TRUE)[[1]]
+  list(text = trimws(lines), complete = bytes[length(bytes)] %in% as.raw(c(10, 13)))
+}
+
+# Check that every data line has `expected` fields. A short last line is a
+# recording cut off mid-write: an error, or with truncated = "drop" dropped
+# with a warning (and reported back as `dropped`). Any other wrong count is an
+# error naming the first bad line.
+check_field_counts <- function(tokens, line_no, expected, file, truncated = "error",
+                               what = NULL, call = rlang::caller_env()) {
+  nf <- lengths(tokens)
+  bad <- which(nf != expected)
+  last <- length(tokens)
+  dropped <- FALSE
+  if (length(bad) && bad[1] == last && nf[last] < expected) {
+    if (truncated == "drop" && last > 1L) {
+      hm_warn("Dropped the truncated last line {line_no[last]} of {.file {file}} ({nf[last]} of {expected} fields).",
+              "truncated_line", file = file, line = line_no[last])
+      return(list(tokens = tokens[-last], line_no = line_no[-last], dropped = TRUE))
+    }
+    abort_bad_file(c("Truncated last line in {.file {file}}, line {line_no[last]}: {nf[last]} of {expected} fields.",
+                     i = "Use {.code truncated = \"drop\"} to read the file without that line."),
+                   "truncated_line", file = file, line = line_no[last], call = call)
+  }
+  if (length(bad)) {
+    b <- bad[1]
+    abort_bad_file(c("Wrong field count in {.file {file}}, line {line_no[b]}: {nf[b]} field{?s}, expected {expected}.",
+                     i = "{length(bad)} line{?s} with the wrong count in total.",
+                     i = what),
+                   "bad_field_count", file = file, line = line_no[b], call = call)
+  }
+  list(tokens = tokens, line_no = line_no, dropped = dropped)
+}
+
+# Convert the tokens of `ncol`-field rows to numbers; the first token that is
+# not a finite number is an error naming its line and field.
+parse_numeric_fields <- function(tok, line_no, ncol, file, call = rlang::caller_env()) {
+  v <- suppressWarnings(as.numeric(tok))
+  bad <- which(!is.finite(v))
+  if (length(bad)) {
+    i <- bad[1]
+    row <- (i - 1L) %/% ncol + 1L
+    field <- (i - 1L) %% ncol + 1L
+    abort_bad_file("Non-numeric field in {.file {file}}, line {line_no[row]}, field {field}: {.val {tok[i]}}.",
+                   "non_numeric", file = file, line = line_no[row], field = field, call = call)
+  }
+  v
+}
+
+# A file's name without folder and extension (the recording id of a file).
+file_stem <- function(path) sub("\\.[[:alnum:]]+$", "", trimws(basename(path)))
