@@ -200,7 +200,8 @@ as_feix_grasp <- function(x, ids = NULL, call = rlang::caller_env()) {
     bad <- !is.na(x) & is.na(out)
   }
   if (any(bad)) {
-    where <- if (!is.null(ids)) ids[bad] else which(bad)
+    # character, so cli pluralises on its length rather than reading a number as a count
+    where <- as.character(if (!is.null(ids)) ids[bad] else which(bad))
     hm_abort(c("Unknown grasp type{?s} {.val {unique(as.character(x[bad]))}}.",
                i = "In recording{?s} {.val {where}}.",
                i = "Use a Feix type name (see {.code feix_taxonomy$name}) or an id from 1 to 33."),

@@ -96,3 +96,8 @@ test_that("with_seed leaves the global RNG untouched", {
   expect_identical(.Random.seed, before)
   expect_identical(x, with_seed(1, runif(3)))
 })
+
+test_that("several unknown grasp types are all named in one error", {
+  expect_error(as_feix_grasp(c("foo", "bar", "Tripod")), "foo", class = "handmotion_error_unknown_grasp")
+  expect_error(as_feix_grasp(c(40, 50)), class = "handmotion_error_unknown_grasp")
+})

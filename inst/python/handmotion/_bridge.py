@@ -136,11 +136,10 @@ def df_to_r(df):
         elif s.dtype.kind == "b":
             cols[str(name)] = ro.BoolVector(s.tolist())
         elif s.dtype.kind in "iu":
-            cols[str(name)] = ro.IntVector(s.astype(int).tolist())
-        elif s.dtype.kind == "f" and str(s.dtype).startswith("Int"):
-            cols[str(name)] = ro.IntVector(s.tolist())
+            # nullable Int64 columns carry pd.NA, which becomes R's NA_integer_
+            cols[str(name)] = ro.IntVector([ro.NA_Integer if pd.isna(v) else int(v) for v in s])
         else:
-            cols[str(name)] = ro.FloatVector(s.astype(float).tolist())
+            cols[str(name)] = ro.FloatVector([ro.NA_Real if pd.isna(v) else float(v) for v in s])
     frame = ro.r["data.frame"](**cols, **{"stringsAsFactors": False, "check.names": False})
     return frame
 

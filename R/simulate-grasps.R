@@ -1,0 +1,140 @@
+#' Simulate HUST-like grasp recordings
+#'
+#' The package's embedded default data. The HUST data set used by Jeppsson
+#' (2017) (30 subjects x 33 Feix grasp types x 3 objects x 3 trials = 8910
+#' recordings of 16 finger joint angles at 50 Hz, in degrees) is not
+#' distributable, so `simulate_grasps()` generates recordings like it from a
+#' biomechanical model, seeded and documented. Every parameter is in
+#' [simulator_params()].
+#'
+#' @section The model:
+#' * **Final posture** per grasp type, from the Feix taxonomy (which fingers
+#'   wrap, which stay extended, thumb opposition, pad vs palm contact; see
+#'   `simulator_params()$posture_notes`).
+#' * **Reach-to-grasp time course**: from a relaxed rest posture the hand
+#'   opens to a peak aperture (fingers extend, thumb abducts) and then closes
+#'   onto the final posture, holding it for a few frames. Both phases follow
+#'   minimum-jerk profiles `10 t^3 - 15 t^4 + 6 t^5`; each finger's onset and
+#'   peak time are jittered.
+#' * **Subjects**: each subject is one hand: a few latent factors times a
+#'   loading matrix move several joints together (hand size/flexion, thumb
+#'   style, finger spread, proximal vs distal flexion, pinch style), plus the
+#'   subject's own offsets, a per-type style, and a personal tempo.
+#' * **Objects** of increasing size per type: larger objects give less flexion
+#'   of the holding fingers, a wider peak aperture and slightly slower motion.
+#' * **Trials**: tempo and small posture variation.
+#' * **DIP joints** follow their PIP joint at about 2/3 of its angle.
+#' * **Sensor noise**: small iid noise plus a slow drift per recording.
+#'
+#' @section Durations:
+#' Frame counts vary by subject tempo and trial (about 10-15% coefficient of
+#' variation, clipped so no ordinary recording looks over-long). For each type
+#' the drawn lengths of the ordinary (not over-long) recordings are then
+#' rescaled and rounded by largest remainders so that their mean is *exactly*
+#' the type's target (`simulator_params()$target_frames`, at 50 Hz; at other
+#' rates the target is scaled by `rate / 50` and the total rounded).
+#' With `overlong = TRUE` about `overlong_fraction` of each type's recordings
+#' (10 of 270 by default) are 2-3 times the type's median length: a long
+#' hesitation before the reach or a long final hold. Far beyond the usual
+#' spread, they are caught by a fence such as
+#' `n > max(Q3 + 3 * IQR, 1.5 * median)`. A few recordings per type and object
+#' (`stall_per_object`, at most a tenth of them) also stall mid-closing for a
+#' while, within ordinary length (like the stationary warping paths of the
+#' thesis' Figure 5.1).
+#' Both are flagged in the metadata.
+#'
+#' @section Seeds:
+#' The result depends only on the arguments, never on the global random
+#' number generator (whose state is left untouched). Each grasp type draws
+#' from its own stream derived from `seed`, and subjects from another, so
+#' `simulate_grasps(grasps = 5)` is exactly the type-5 part of
+#' `simulate_grasps()`.
+#'
+#' @param subjects Number of subjects (a positive whole number).
+#' @param grasps Grasp types to simulate: Feix ids (1-33) or names (see
+#'   [feix_taxonomy]), without duplicates.
+#' @param objects Number of objects per type, of increasing size.
+#' @param trials Number of trials per subject and object.
+#' @param rate Sampling rate in Hz (at least 10).
+#' @param seed Random seed (a whole number).
+#' @param overlong Plant the over-long recordings (`TRUE`) or not.
+#' @param params Simulator parameters from [simulator_params()].
+#' @return A [grasps()] object in degrees. Metadata columns: `id`, `grasp`,
+#'   `subject` (`"S01"`, ...), `object` (`"small"`, `"medium"`, `"large"` for
+#'   three objects), `trial`, `n_frames`, `source` (`"simulated"`),
+#'   `overlong` and `stalled` (logical: planted anomalies) and `object_size`
+#'   (relative size, 1 = the type's typical object).
+#' @seealso [simulator_params()], [grasps()]
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 3, grasps = c("Medium Wrap", "Tripod"), seed = 1)
+#' g
+#' summary(g)
+#' head(grasp_meta(g))
+simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 3, rate = 50, seed = 1,
+                            overlong = TRUE, params = simulator_params()) {
+  call <- rlang::caller_env()
+  subjects <- sim_check_count(subjects, "subjects", call)
+  objects <- sim_check_count(objects, "objects", call)
+  trials <- sim_check_count(trials, "trials", call)
+  types <- sim_check_types(grasps, call)
+  check_rate(rate, call = call)
+  if (rate < 10) {
+    hm_abort(c("{.arg rate} must be at least 10 Hz for the simulator, not {.val {rate}}.",
+               i = "Shorter recordings cannot hold the rest, opening, closing and hold phases."),
+             "bad_input", argument = "rate", call = call)
+  }
+  if (!is.numeric(seed) || length(seed) != 1L || !is.finite(seed) || seed != round(seed) ||
+      abs(seed) >= .Machine$integer.max) {
+    hm_abort("{.arg seed} must be one whole number, not {.val {format(seed)}}.", "bad_input",
+             argument = "seed", call = call)
+  }
+  if (!is.logical(overlong) || length(overlong) != 1L || is.na(overlong)) {
+    hm_abort("{.arg overlong} must be {.code TRUE} or {.code FALSE}.", "bad_input",
+             argument = "overlong", call = call)
+  }
+  params <- check_simulator_params(params, call = call)
+
+  streams <- sim_streams(as.integer(seed))
+  subj <- sim_subject_draws(streams[34L], subjects, ncol(params$loadings))
+  design <- sim_design(subjects, objects, trials, params)
+  parts <- lapply(types, function(g) {
+    with_sim_seed(streams[g], sim_one_type(g, design, subj, params, rate, overlong))
+  })
+  recs <- unlist(lapply(parts, `[[`, "recordings"), recursive = FALSE)
+  meta <- do.call(rbind, lapply(parts, `[[`, "meta"))
+  new_grasps(recs, meta, handmotion::hust_dofs$name, rate, "deg")
+}
+
+sim_check_count <- function(x, arg, call) {
+  if (!is.numeric(x) || length(x) != 1L || !is.finite(x) || x < 1 || x != round(x)) {
+    hm_abort("{.arg {arg}} must be one positive whole number (a count), not {.val {format(x)}}.",
+             "bad_input", argument = arg, call = call)
+  }
+  as.integer(x)
+}
+
+sim_check_types <- function(grasps, call) {
+  if (length(grasps) == 0L || anyNA(grasps) || !(is.numeric(grasps) || is.character(grasps) || is.factor(grasps))) {
+    hm_abort("{.arg grasps} must be Feix grasp ids (1-33) or names, without missing values.",
+             "bad_input", argument = "grasps", call = call)
+  }
+  # check element by element so the message lists exactly the unknown ones
+  known <- vapply(as.list(as.character(grasps)), function(x) {
+    key <- if (is.numeric(grasps)) as.numeric(x) else x
+    tryCatch({ as_feix_grasp(key); TRUE }, handmotion_error_unknown_grasp = function(e) FALSE)
+  }, logical(1))
+  if (!all(known)) {
+    bad <- unique(as.character(grasps)[!known])
+    hm_abort(c("{.arg grasps} has unknown grasp type{?s} {.val {bad}}.",
+               i = "Use Feix ids 1-33 or names from {.code feix_taxonomy$name}."),
+             "unknown_grasp", argument = "grasps", grasp = bad, call = call)
+  }
+  f <- as_feix_grasp(if (is.factor(grasps)) as.character(grasps) else grasps)
+  ids <- as.integer(f)
+  if (anyDuplicated(ids)) {
+    hm_abort("{.arg grasps} lists {.val {unique(as.character(f[duplicated(ids)]))}} more than once.",
+             "bad_input", argument = "grasps", call = call)
+  }
+  ids
+}

@@ -1,0 +1,248 @@
+# The one place holding every parameter of the HUST-like simulator.
+# `sim_default_params()` states the defaults in code; data-raw/simulator-params.R
+# adds the per-type target frame counts (the simulator's calibration against
+# the thesis' Table 5.1) and stores the result in R/sysdata.rda as
+# `simulator_defaults`, which `simulator_params()` returns. The pipeline never
+# reads these numbers: only the simulator does.
+
+#' Parameters of the HUST-like grasp simulator
+#'
+#' Returns the list of every parameter [simulate_grasps()] uses, so it can be
+#' inspected, modified and passed back through `simulate_grasps(params = )`.
+#' Angles are in degrees (flexion positive), durations in frames at the
+#' reference rate of 50 Hz (they are rescaled for other rates). The 4 DIP
+#' joints are not parameters of their own: each follows its PIP joint
+#' (`dip_pip_ratio`), so posture-type elements cover the 12 *driven* DoFs
+#' `CMC1 ABD1 MCP1 IP1 MCP2 PIP2 MCP3 PIP3 MCP4 PIP4 MCP5 PIP5`.
+#'
+#' @section Elements:
+#' **Grasp types**
+#' * `target_frames`: data frame (`id`, `name`, `frames`): the mean frame count
+#'   at 50 Hz of the ordinary (not over-long) recordings of each type. Taken
+#'   from Table 5.1 of Jeppsson (2017) by `data-raw/simulator-params.R`.
+#' * `postures`: 33 x 12 matrix of final postures (rows = Feix types 1-33).
+#'   Built from the taxonomy ([feix_taxonomy]): each finger gets a role from
+#'   the virtual-finger assignment and opposition type (`wrap` for VF2 of a
+#'   palm grasp, `pad`, `side`, `support` (VF3 of a side grasp), `extended`
+#'   (VF3 of a palm grasp, e.g. index finger extension), `unused_power`,
+#'   `unused_precision`), the thumb a role from VF1/VF3 and abduction
+#'   (`pad_opposed`, `pad_adducted`, `side_opposed`, `wrap`, `along`,
+#'   `adducted`, `free`); each role has typical angles; a short per-type
+#'   table adds what the taxonomy does not say (object size, hook vs wrap,
+#'   straight vs curled pads).
+#' * `posture_notes`: data frame documenting, per type, the roles and the
+#'   reason of its adjustment.
+#' * `rest`: named vector (12): the relaxed starting posture (slight flexion,
+#'   more towards the little finger).
+#' * `aperture`: named vector (12): change from `rest` to peak aperture for an
+#'   object of relative size 1 (fingers extend, thumb abducts).
+#' * `aperture_scale`: named vector (33): per-type multiplier of `aperture`
+#'   (power 1, intermediate 0.8, precision 0.7: small objects need less opening).
+#' * `aperture_sd`: log-scale sd of the per-recording aperture amplitude.
+#'
+#' **Subjects** (one hand per subject, shared by every type it performs)
+#' * `loadings`: 12 x k matrix (degrees per unit factor): subject `s` has latent
+#'   factors `z_s ~ N(0, I_k)` and its final posture moves by `loadings %*% z_s`,
+#'   so several joints move together. Default factors: `flexion` (hand size:
+#'   every flexion), `thumb` (thumb style: rotation/abduction vs flexion),
+#'   `spread` (radial-ulnar gradient of MCP flexion), `proximal` (MCP against
+#'   PIP flexion), `pinch` (thumb and index tip style).
+#' * `subject_dof_sd`: sd of each subject's own per-DoF offsets (glove fit).
+#' * `subject_type_sd`: sd of a subject's per-type, per-DoF style offsets.
+#' * `subject_rest_share`: share of the subject offsets also present at rest.
+#' * `tempo_subject_sd`, `tempo_trial_sd`: log-sd of a subject's and a trial's
+#'   duration factor; `tempo_clip`: draws beyond this many sd are clipped so
+#'   that ordinary recordings never look over-long.
+#'
+#' **Objects** (per type, of increasing size)
+#' * `object_sizes`: range of relative sizes (smallest, largest); `objects`
+#'   sizes are spread evenly on the log scale, a single object has size 1.
+#' * `object_response`: 33 x 12 matrix, degrees per unit log size; by default
+#'   -20 on the MCP and PIP of the object-holding fingers (VF2 and a wrapping
+#'   or opposing thumb): larger objects, less flexion.
+#' * `object_aperture`: exponent of size on the peak aperture (larger objects,
+#'   wider opening).
+#' * `object_tempo`: log frames per unit log size (larger objects, slower).
+#'
+#' **Trials and time course**
+#' * `trial_posture_sd`, `rest_sd`: sd of per-trial final and rest postures.
+#' * `lead_frames`, `hold_frames`: ranges (uniform) of still frames before the
+#'   motion starts and of the final hold.
+#' * `peak_time`: mean and sd of the time of peak aperture as a fraction of
+#'   the motion; `onset_jitter`: sd (fraction of the motion) of each finger's
+#'   shift of its opening onset and of its peak time.
+#' * `dip_pip_ratio`: DIP = ratio x PIP (2/3); `dip_sd`: sd of a recording's
+#'   DIP offset from that rule.
+#' * `noise_sd`: iid sensor noise sd; `drift_sd`: sd of a slow per-recording
+#'   drift (linear trend plus half sine).
+#'
+#' **Planted anomalies**
+#' * `overlong_fraction`: share of each type's recordings made over-long (10
+#'   of 270); `overlong_multiplier`: their length as a multiple (uniform
+#'   range) of the type's median frame count; `overlong_hesitation_share`:
+#'   probability the extra frames are a hesitation at rest before the reach
+#'   (otherwise a long hold after it).
+#' * `stall_per_object`: range (uniform integer) of recordings per type and
+#'   object that stall mid-motion (the hand holds still for a while, then
+#'   finishes; ordinary length), capped at a tenth of the object's
+#'   recordings. `c(0, 0)` turns stalls off.
+#'   `stall_fraction`: range of the stall's share of the recording.
+#'
+#' @param ... Elements to replace, by name (e.g. `noise_sd = 0`).
+#' @return A named list (see Elements), validated.
+#' @seealso [simulate_grasps()]
+#' @export
+#' @examples
+#' p <- simulator_params()
+#' names(p)
+#' head(p$target_frames)
+#' p$posture_notes[17, ]
+#' quiet <- simulator_params(noise_sd = 0, drift_sd = 0)
+simulator_params <- function(...) {
+  call <- rlang::caller_env()
+  p <- simulator_defaults
+  over <- list(...)
+  if (length(over) > 0L) {
+    nm <- names(over)
+    if (is.null(nm) || any(nm == "")) {
+      hm_abort("Every argument of {.fn simulator_params} must be named.", "bad_input",
+               argument = "...", call = call)
+    }
+    unknown <- setdiff(nm, names(p))
+    if (length(unknown) > 0L) {
+      hm_abort(c("Unknown simulator parameter{?s} {.val {unknown}}.",
+                 i = "Known: {.val {names(p)}}."), "bad_input", argument = unknown[1], call = call)
+    }
+    p[nm] <- over
+  }
+  check_simulator_params(p, call = call)
+}
+
+# Defaults of everything except the target frame counts (which data-raw reads
+# from the thesis' Table 5.1). Each value's reason is in the roxygen page above.
+sim_default_params <- function(target_frames) {
+  tax <- handmotion::feix_taxonomy
+  d <- sim_driven_dofs
+  v <- function(...) { x <- c(...); x[d] }
+  built <- sim_build_postures()
+  loadings <- matrix(0, length(d), 5, dimnames = list(d, c("flexion", "thumb", "spread", "proximal", "pinch")))
+  # Degrees per unit factor (a first calibration put the within-type
+  # last-frame covariance near the thesis' Table 5.7 shape: ~5 PCs for 80-85%).
+  loadings[, "flexion"] <- v(CMC1 = 1.4, ABD1 = -1.4, MCP1 = 2.1, IP1 = 2.8, MCP2 = 4.2, PIP2 = 4.9,
+                             MCP3 = 4.2, PIP3 = 4.9, MCP4 = 4.2, PIP4 = 4.9, MCP5 = 4.2, PIP5 = 4.9)
+  loadings[, "thumb"] <- v(CMC1 = 4.9, ABD1 = 5.6, MCP1 = -2.8, IP1 = 3.5, MCP2 = 0, PIP2 = 0, MCP3 = 0,
+                           PIP3 = 0, MCP4 = 0, PIP4 = 0, MCP5 = 0, PIP5 = 0)
+  loadings[, "spread"] <- v(CMC1 = 0, ABD1 = 1.4, MCP1 = 0, IP1 = 0, MCP2 = -4.2, PIP2 = -2.1, MCP3 = -1.4,
+                            PIP3 = -0.7, MCP4 = 1.4, PIP4 = 0.7, MCP5 = 4.2, PIP5 = 2.1)
+  loadings[, "proximal"] <- v(CMC1 = 0, ABD1 = 0, MCP1 = 2.1, IP1 = -2.1, MCP2 = 4.2, PIP2 = -4.2,
+                              MCP3 = 4.2, PIP3 = -4.2, MCP4 = 3.5, PIP4 = -3.5, MCP5 = 3.5, PIP5 = -3.5)
+  loadings[, "pinch"] <- v(CMC1 = 2.1, ABD1 = 0, MCP1 = 3.5, IP1 = -3.5, MCP2 = 2.8, PIP2 = 3.5,
+                           MCP3 = 1.4, PIP3 = 1.4, MCP4 = 0, PIP4 = 0, MCP5 = 0, PIP5 = 0)
+  list(
+    target_frames = target_frames,
+    reference_rate = 50,
+    postures = built$postures,
+    posture_notes = built$notes,
+    rest = v(CMC1 = 15, ABD1 = 25, MCP1 = 10, IP1 = 10, MCP2 = 15, PIP2 = 20, MCP3 = 18,
+             PIP3 = 25, MCP4 = 20, PIP4 = 28, MCP5 = 22, PIP5 = 30),
+    aperture = v(CMC1 = 8, ABD1 = 20, MCP1 = -8, IP1 = -10, MCP2 = -18, PIP2 = -20, MCP3 = -18,
+                 PIP3 = -20, MCP4 = -18, PIP4 = -20, MCP5 = -18, PIP5 = -20),
+    aperture_scale = stats::setNames(c(power = 1, intermediate = 0.8, precision = 0.7)[as.character(tax$class)],
+                                     tax$name),
+    aperture_sd = 0.15,
+    loadings = loadings,
+    subject_dof_sd = 2.5,
+    subject_type_sd = 3.5,
+    subject_rest_share = 0.5,
+    tempo_subject_sd = 0.10,
+    tempo_trial_sd = 0.07,
+    tempo_clip = 2.5,
+    object_sizes = c(0.7, 1.4),
+    object_response = -20 * sim_build_object_mask(),
+    object_aperture = 1,
+    object_tempo = 0.1,
+    trial_posture_sd = 2.5,
+    rest_sd = 2,
+    lead_frames = c(1, 4),
+    hold_frames = c(3, 6),
+    peak_time = c(mean = 0.45, sd = 0.05),
+    onset_jitter = 0.04,
+    dip_pip_ratio = 2 / 3,
+    dip_sd = 1.5,
+    noise_sd = 0.3,
+    drift_sd = 0.5,
+    overlong_fraction = 10 / 270,
+    overlong_multiplier = c(2, 3),
+    overlong_hesitation_share = 0.5,
+    stall_per_object = c(1, 2),
+    stall_fraction = c(0.25, 0.4)
+  )
+}
+
+# Validate a parameter list; returns it unchanged or raises a classed error
+# naming the element.
+check_simulator_params <- function(p, arg = "params", call = rlang::caller_env()) {
+  bad <- function(el, what) {
+    hm_abort(c("Simulator parameter {.field {el}} in {.arg {arg}} {what}.",
+               i = "See {.help handmotion::simulator_params} for every element."),
+             "bad_params", argument = arg, parameter = el, call = call)
+  }
+  if (!is.list(p)) {
+    hm_abort("{.arg {arg}} must be a list from {.fn simulator_params}, not {.obj_type_friendly {p}}.",
+             "bad_params", argument = arg, call = call)
+  }
+  need <- names(simulator_defaults)
+  miss <- setdiff(need, names(p))
+  if (length(miss) > 0L) bad(miss[1], "is missing")
+  d <- sim_driven_dofs
+  num <- function(el, len = NULL, min = -Inf) {
+    x <- p[[el]]
+    if (!is.numeric(x) || anyNA(x) || any(!is.finite(x))) bad(el, "must be finite numbers")
+    if (!is.null(len) && length(x) != len) bad(el, sprintf("must have length %d", len))
+    if (any(x < min)) bad(el, sprintf("must be at least %g", min))
+  }
+  mat <- function(el, rows) {
+    x <- p[[el]]
+    if (!is.matrix(x) || !is.numeric(x) || anyNA(x) || nrow(x) != rows || ncol(x) != length(d)) {
+      bad(el, sprintf("must be a %d x %d numeric matrix", rows, length(d)))
+    }
+  }
+  vec12 <- function(el) {
+    num(el, length(d))
+    if (!is.null(names(p[[el]])) && !identical(names(p[[el]]), d)) bad(el, "must be named by the driven DoFs")
+  }
+  tf <- p$target_frames
+  if (!is.data.frame(tf) || !all(c("id", "frames") %in% names(tf)) || !identical(as.integer(tf$id), 1:33) ||
+      !is.numeric(tf$frames) || anyNA(tf$frames) || any(tf$frames <= 0)) {
+    bad("target_frames", "must be a data frame of positive `frames` for ids 1-33")
+  }
+  mat("postures", 33L); mat("object_response", 33L)
+  vec12("rest"); vec12("aperture")
+  num("aperture_scale", 33L, 0)
+  L <- p$loadings
+  if (!is.matrix(L) || !is.numeric(L) || anyNA(L) || nrow(L) != length(d) || ncol(L) < 1L) {
+    bad("loadings", sprintf("must be a %d x k numeric matrix (k >= 1)", length(d)))
+  }
+  for (el in c("aperture_sd", "subject_dof_sd", "subject_type_sd", "tempo_subject_sd", "tempo_trial_sd",
+               "trial_posture_sd", "rest_sd", "onset_jitter", "dip_sd", "noise_sd", "drift_sd")) num(el, 1L, 0)
+  for (el in c("subject_rest_share", "object_aperture", "object_tempo", "dip_pip_ratio")) num(el, 1L)
+  num("reference_rate", 1L, 1e-9); num("tempo_clip", 1L, 0.1)
+  num("object_sizes", 2L, 1e-9)
+  num("overlong_fraction", 1L, 0)
+  if (p$overlong_fraction >= 0.5) bad("overlong_fraction", "must be below 0.5")
+  num("overlong_hesitation_share", 1L, 0)
+  if (p$overlong_hesitation_share > 1) bad("overlong_hesitation_share", "must be a probability")
+  range_el <- function(el, min) {
+    num(el, 2L, min)
+    if (p[[el]][1] > p[[el]][2]) bad(el, "must be an increasing range c(low, high)")
+  }
+  range_el("object_sizes", 1e-9); range_el("lead_frames", 0); range_el("hold_frames", 1)
+  range_el("overlong_multiplier", 1.6); range_el("stall_per_object", 0)
+  range_el("stall_fraction", 0)
+  if (p$stall_fraction[2] >= 0.6) bad("stall_fraction", "must stay below 0.6 of the recording")
+  num("peak_time", 2L)
+  if (p$peak_time[1] <= 0.1 || p$peak_time[1] >= 0.9 || p$peak_time[2] < 0) {
+    bad("peak_time", "must be c(mean in (0.1, 0.9), sd >= 0)")
+  }
+  p
+}

@@ -1,0 +1,65 @@
+test_that("simulator_params() holds every documented element, validated", {
+  p <- simulator_params()
+  expect_type(p, "list")
+  expect_identical(p, check_simulator_params(p))
+  expect_equal(dim(p$postures), c(33L, 12L))
+  expect_identical(colnames(p$postures), sim_driven_dofs)
+  expect_identical(rownames(p$postures), feix_taxonomy$name)
+  expect_identical(p$target_frames$id, 1:33)
+  expect_true(all(p$target_frames$frames == round(p$target_frames$frames)))
+  expect_equal(nrow(p$posture_notes), 33L)
+  expect_false(anyNA(p$posture_notes$adjustment))
+  expect_gte(ncol(p$loadings), 3L)
+  expect_equal(p$dip_pip_ratio, 2 / 3)
+  # each latent factor moves several joints together
+  expect_true(all(colSums(abs(p$loadings) > 0) >= 4))
+  # every element is documented on the help page
+  rd_file <- test_path("..", "..", "man", "simulator_params.Rd")
+  skip_if_not(file.exists(rd_file), "man/ not available (installed package)")
+  rd <- paste(readLines(rd_file), collapse = "\n")
+  for (el in names(p)[names(p) != "reference_rate"]) expect_match(rd, el, fixed = TRUE, info = el)
+})
+
+test_that("overrides replace elements by name", {
+  p <- simulator_params(noise_sd = 0, stall_per_object = c(0, 0))
+  expect_equal(p$noise_sd, 0)
+  expect_equal(p$stall_per_object, c(0, 0))
+  expect_equal(p$rest, simulator_params()$rest)
+  expect_error(simulator_params(1), class = "handmotion_error_bad_input")
+  expect_error(simulator_params(loadings = matrix(0, 3, 2)), class = "handmotion_error_bad_params")
+  expect_error(simulator_params(peak_time = c(0.95, 0.1)), class = "handmotion_error_bad_params")
+})
+
+test_that("postures follow the roles the taxonomy gives each finger", {
+  tax <- feix_taxonomy
+  role <- function(name, f) sim_finger_role(tax[tax$name == name, ], f)
+  expect_equal(role("Index Finger Extension", 2), "extended")
+  expect_equal(role("Index Finger Extension", 3), "wrap")
+  expect_equal(role("Prismatic 2 Finger", 2), "pad")
+  expect_equal(role("Prismatic 2 Finger", 4), "unused_precision")
+  expect_equal(role("Writing Tripod", 2), "support")
+  expect_equal(role("Lateral", 2), "side")
+  expect_equal(sim_thumb_role(tax[tax$name == "Adducted Thumb", ]), "along")
+  expect_equal(sim_thumb_role(tax[tax$name == "Tripod", ]), "pad_opposed")
+  expect_equal(sim_thumb_role(tax[tax$name == "Medium Wrap", ]), "wrap")
+  # a type without an adjustment is exactly its roles' angles
+  built <- sim_build_postures()
+  r <- sim_default_roles()
+  expect_equal(built$postures["Medium Wrap", "PIP3"], r$finger["wrap", "PIP"])
+  expect_equal(built$postures["Medium Wrap", "MCP5"], r$finger["wrap", "MCP"] + r$finger_mcp_offset[["5"]])
+  # an adjustment adds its delta
+  adj <- sim_default_adjustments()
+  d <- adj$delta[adj$id == 2 & adj$joint == "PIP"]
+  expect_equal(built$postures["Small Diameter", "PIP4"], r$finger["wrap", "PIP"] + d)
+  # object size acts on the object-holding fingers only
+  mask <- sim_build_object_mask()
+  expect_equal(unname(mask["Index Finger Extension", c("MCP2", "PIP2", "MCP3")]), c(0, 0, 1))
+  expect_equal(unname(mask["Palmar Pinch", c("MCP2", "MCP3")]), c(1, 0))
+})
+
+test_that("largest-remainder rounding keeps the total exactly", {
+  x <- c(40.4, 38.7, 45.2, 41.9, 36.1)
+  n <- sim_round_to_total(x, 205)
+  expect_equal(sum(n), 205L)
+  expect_true(all(abs(n - x * 205 / sum(x)) < 1))
+})
