@@ -1,0 +1,63 @@
+# Joint limits: generated grasps are sums of functional components and can
+# overshoot what a hand can do. clamp_to_limits() pulls every mapped angle
+# back inside the rotation limits of the joint axis it drives.
+
+#' Keep joint angles inside the skeleton's limits
+#'
+#' For every DoF the mapping applies to a joint axis, the applied angle
+#' (`sign * scale * angle`, in degrees) is clamped to that axis' limits in the
+#' skeleton and converted back to the DoF's own unit and sign. DoFs the
+#' mapping does not apply are left as they are and listed in the
+#' `"unclamped"` attribute. Several DoFs on one axis are clamped one by one.
+#'
+#' @param x A numeric frames x DoF matrix (with DoF column names) or a
+#'   [grasps()] object.
+#' @param skeleton A [hand_skeleton()].
+#' @param mapping A joint mapping (see [graspdb14_joint_map()]); chosen from
+#'   the DoF names by default.
+#' @param unit Angle unit of a matrix `x` (`"deg"` or `"rad"`).
+#' @return An object of the same class as `x` with clamped angles and
+#'   attributes `"clamped"` (number of values changed), `"clamped_by_dof"`
+#'   (named counts) and `"unclamped"` (DoFs without limits).
+#' @export
+#' @examples
+#' rec <- matrix(c(120, -50, 40), 3, 16, dimnames = list(NULL, hust_dofs$name))
+#' out <- clamp_to_limits(rec)
+#' out[, "PIP2"]
+#' attr(out, "clamped")
+clamp_to_limits <- function(x, skeleton = hand_skeleton(), mapping = NULL, unit = NULL) {
+  call <- rlang::caller_env()
+  check_skeleton(skeleton, call = call)
+  input <- fk_input(x, unit, call)
+  if (is.null(mapping)) mapping <- default_joint_map_impl(input$dofs, call)
+  mapping <- check_mapping(mapping, skeleton, call)
+  mapping$col <- match(dof_key(mapping$dof), dof_key(input$dofs))
+  used <- mapping[!is.na(mapping$col) & !is.na(mapping$axis) & mapping$sign * mapping$scale != 0, , drop = FALSE]
+  lim <- as.matrix(skeleton$joints[match(used$joint, skeleton$joints$name), skeleton_limit_cols])
+  lo <- lim[cbind(seq_len(nrow(used)), match(paste0("rot", used$axis, "_min"), skeleton_limit_cols))]
+  hi <- lim[cbind(seq_len(nrow(used)), match(paste0("rot", used$axis, "_max"), skeleton_limit_cols))]
+  mult <- used$sign * used$scale * input$factor
+  counts <- stats::setNames(integer(nrow(used)), input$dofs[used$col])
+  clamp_one <- function(rec) {
+    for (k in seq_len(nrow(used))) {
+      v <- rec[, used$col[k]] * mult[k]
+      out <- pmin(pmax(v, lo[k]), hi[k])
+      changed <- out != v
+      if (any(changed)) {
+        counts[k] <<- counts[k] + sum(changed)
+        rec[changed, used$col[k]] <- out[changed] / mult[k]
+      }
+    }
+    rec
+  }
+  res <- if (inherits(x, "grasps")) {
+    x$recordings <- lapply(x$recordings, clamp_one)
+    x
+  } else {
+    clamp_one(input$recordings[[1]])
+  }
+  attr(res, "clamped") <- sum(counts)
+  attr(res, "clamped_by_dof") <- counts
+  attr(res, "unclamped") <- setdiff(input$dofs, used$dof)
+  res
+}

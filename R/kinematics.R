@@ -1,0 +1,412 @@
+# Forward kinematics: joint angles over time -> 3D joint positions over time.
+#
+# Conventions (those of the skeleton files, GraspDB14 report section 5.2.1):
+# each joint has a local frame in the rest pose with y along its bone
+# (pointing back towards the wrist), z along the palm normal and x = y cross z,
+# so a rotation about local x is flexion and about local z is ab-/adduction.
+# A joint's rotation moves everything distal to it. The local rotation is
+# applied as Rz * Ry * Rx (abduction first, then flexion about the abducted
+# axis), right-handed, angles in degrees after unit conversion, sign and scale.
+#
+# Everything is vectorised over frames: a batch of rotations is an n x 9
+# matrix (column-major 3 x 3 per row), so a whole recording costs about
+# 27 vector multiplications per rotating joint.
+
+#' Joint mappings: which DoF drives which joint axis
+#'
+#' A mapping is a data frame with one row per DoF: `dof` (column name in the
+#' recordings), `joint` (skeleton joint name), `axis` (`"x"` flexion, `"y"`,
+#' `"z"` ab-/adduction, or `NA` for a DoF that is not applied), `sign` and
+#' `scale` (the angle applied is `sign * scale * angle`, after conversion to
+#' degrees).
+#'
+#' * `graspdb14_joint_map()` is Table 5.1 of the GraspDB14 report: the 23
+#'   CyberGlove sensors on the default skeleton. Sensors the report marks as
+#'   discarded (`I-AA`, `P-Arch`) have `axis = NA`. The GraspDB14 files store
+#'   flexion as negative angles and the report's viewer applies every angle
+#'   negated, so `sign = -1` throughout.
+#' * `hust_joint_map()` drives the same skeleton from the 16 HUST DoFs:
+#'   `CMC1` (flexion, x) and `ABD1` (abduction, z) at the thumb's `th-tmc`,
+#'   every other DoF a flexion about x of its joint; `sign = 1` (HUST stores
+#'   flexion as positive degrees).
+#' * `default_joint_map(dofs)` picks between them from the DoF names
+#'   (case, hyphens and underscores ignored; `T-TMJ` and `T-TMCJ` both name
+#'   the thumb rotation sensor) and keeps the rows for `dofs`, in their order.
+#'
+#' @param dofs DoF names, e.g. `x$dofs` of a [grasps()] object.
+#' @return A data frame (`dof`, `joint`, `axis`, `sign`, `scale`).
+#' @references Stollenwerk, K., Hinkenjann, A. and Klein, R. GraspDB14
+#'   technical report, Table 5.1.
+#' @export
+#' @examples
+#' hust_joint_map()
+#' graspdb14_joint_map()[1:5, ]
+#' default_joint_map(c("MCP2", "PIP2"))
+graspdb14_joint_map <- function() {
+  data.frame(
+    dof = c("T-TMCJ", "T-MCPJ", "T-IPJ", "TI-AA", "I-MCPJ", "I-PIPJ", "I-DIPJ", "I-AA",
+            "M-MCPJ", "M-PIPJ", "M-DIPJ", "MI-AA", "R-MCPJ", "R-PIPJ", "R-DIPJ", "RM-AA",
+            "L-MCPJ", "L-PIPJ", "L-DIPJ", "LR-AA", "P-Arch", "W-FE", "W-AA"),
+    joint = c("th-tmc", "th-mcp", "th-ip", "th-mcp", "if-mcp", "if-pip", "if-dip", "if-mcp",
+              "mf-mcp", "mf-pip", "mf-dip", "if-mcp", "rf-mcp", "rf-pip", "rf-dip", "rf-mcp",
+              "lf-mcp", "lf-pip", "lf-dip", "lf-mcp", "lf-cmc", "root", "root"),
+    axis = c("z", "x", "x", "z", "x", "x", "x", NA, "x", "x", "x", "z", "x", "x", "x", "z",
+             "x", "x", "x", "z", NA, "x", "z"),
+    sign = -1, scale = 1, stringsAsFactors = FALSE)
+}
+
+#' @rdname graspdb14_joint_map
+#' @export
+hust_joint_map <- function() {
+  data.frame(
+    dof = c("CMC1", "ABD1", "MCP1", "IP1", "MCP2", "PIP2", "DIP2", "MCP3", "PIP3", "DIP3",
+            "MCP4", "PIP4", "DIP4", "MCP5", "PIP5", "DIP5"),
+    joint = c("th-tmc", "th-tmc", "th-mcp", "th-ip", "if-mcp", "if-pip", "if-dip", "mf-mcp",
+              "mf-pip", "mf-dip", "rf-mcp", "rf-pip", "rf-dip", "lf-mcp", "lf-pip", "lf-dip"),
+    axis = c("x", "z", rep("x", 14)), sign = 1, scale = 1, stringsAsFactors = FALSE)
+}
+
+#' @rdname graspdb14_joint_map
+#' @export
+default_joint_map <- function(dofs) {
+  default_joint_map_impl(dofs, call = rlang::caller_env())
+}
+
+dof_key <- function(x) {
+  k <- gsub("[^A-Z0-9]", "", toupper(x))
+  k[k == "TTMJ"] <- "TTMCJ"   # Table 4.3 spells the thumb rotation sensor T-TMJ
+  k
+}
+
+default_joint_map_impl <- function(dofs, call) {
+  keys <- dof_key(dofs)
+  maps <- list(hust = hust_joint_map(), graspdb14 = graspdb14_joint_map())
+  hits <- vapply(maps, function(m) sum(keys %in% dof_key(m$dof)), numeric(1))
+  if (max(hits) == 0) {
+    hm_abort(c("Cannot choose a joint mapping for DoFs {.val {utils::head(dofs, 6)}}.",
+               i = "They are neither HUST DoFs nor GraspDB14 sensor names; pass {.arg mapping}."),
+             "bad_mapping", argument = "mapping", call = call)
+  }
+  m <- maps[[which.max(hits)]]
+  idx <- match(keys, dof_key(m$dof))
+  out <- m[idx[!is.na(idx)], , drop = FALSE]
+  out$dof <- dofs[!is.na(idx)]
+  rownames(out) <- NULL
+  out
+}
+
+check_mapping <- function(mapping, skeleton, call) {
+  need <- c("dof", "joint", "axis")
+  if (!is.data.frame(mapping) || !all(need %in% names(mapping))) {
+    hm_abort("{.arg mapping} must be a data frame with columns {.val {c(need, 'sign', 'scale')}}.",
+             "bad_mapping", argument = "mapping", call = call)
+  }
+  mapping <- as.data.frame(mapping, stringsAsFactors = FALSE)
+  if (is.null(mapping$sign)) mapping$sign <- 1
+  if (is.null(mapping$scale)) mapping$scale <- 1
+  mapping$axis <- tolower(as.character(mapping$axis))
+  mapping$axis[mapping$axis %in% c("", "-", "\u2014")] <- NA
+  bad <- !is.na(mapping$axis) & !mapping$axis %in% c("x", "y", "z")
+  if (any(bad)) {
+    hm_abort("Mapping axis must be {.val x}, {.val y}, {.val z} or NA; DoF {.val {mapping$dof[bad][1]}} has {.val {mapping$axis[bad][1]}}.",
+             "bad_mapping", argument = "mapping", call = call)
+  }
+  if (!is.numeric(mapping$sign) || !is.numeric(mapping$scale) ||
+      anyNA(mapping$sign) || anyNA(mapping$scale)) {
+    hm_abort("Mapping columns {.val sign} and {.val scale} must be numbers.", "bad_mapping",
+             argument = "mapping", call = call)
+  }
+  missing <- setdiff(mapping$joint[!is.na(mapping$axis)], skeleton$joints$name)
+  if (length(missing)) {
+    hm_abort(c("The mapping drives joint{?s} {.val {missing}} that the skeleton does not have (missing joint{?s}).",
+               i = "Skeleton joints: {.val {skeleton$joints$name}}."),
+             "bad_skeleton", joint = missing, file = skeleton$file, call = call)
+  }
+  mapping
+}
+
+#' Forward kinematics: 3D joint positions from joint angles
+#'
+#' Poses a [hand_skeleton()] with every frame of a recording and returns the
+#' position of every joint, relative to the root (wrist), in millimetres.
+#' The DoFs drive joint axes as given by `mapping` (Table 5.1 of the
+#' GraspDB14 report for CyberGlove sensors, see [graspdb14_joint_map()]);
+#' DoFs the mapping does not use are listed in the result's `"fk"`
+#' attribute, never dropped silently.
+#'
+#' Modes, after GraspDB14's loader:
+#' * `"plain"`: the hand in its own frame: every finger and thumb angle is
+#'   applied, angles acting on the root (wrist) are not.
+#' * `"full"`: also rotates the whole hand about the root by the wrist angles.
+#' * `"fixed-root"`: GraspDB14's fixed-root computation: the root's sensors
+#'   are deactivated (set to zero) and reported as such. Same positions as
+#'   `"plain"`.
+#'
+#' @param x A numeric matrix (frames x DoF, with DoF column names), or a
+#'   [grasps()] object.
+#' @param skeleton A [hand_skeleton()].
+#' @param mapping A joint mapping (see [graspdb14_joint_map()]); by default
+#'   chosen from the DoF names with [default_joint_map()].
+#' @param mode `"plain"`, `"full"` or `"fixed-root"` (see Details).
+#' @param deactivate DoFs to treat as zero: DoF names, column numbers, or
+#'   joint names (every DoF driving that joint), like GraspDB14's
+#'   `calcJointTrajectories` with deactivated sensors.
+#' @param frames Frames to compute: `NULL` (all), indices, `"first"` or
+#'   `"last"`.
+#' @param unit Angle unit of a matrix `x` (`"deg"` or `"rad"`); a `grasps`
+#'   object carries its own.
+#' @return For a matrix or a one-recording `grasps`, an array
+#'   `[frames, joints, 3]` (mm) with dimnames `list(NULL, joint names,
+#'   c("x", "y", "z"))`; for a larger `grasps`, a list of such arrays named by
+#'   recording id. Each array has an attribute `"fk"`: a list with `mode`, the
+#'   `mapping` rows applied, `deactivated` and `ignored` DoFs.
+#' @seealso [hand_pose()] to draw the result, [write_bvh()].
+#' @export
+#' @examples
+#' skel <- hand_skeleton()
+#' flat <- matrix(0, 1, 16, dimnames = list(NULL, hust_dofs$name))
+#' p <- forward_kinematics(flat, skel)
+#' p[1, "mf-tip", ]
+#' fist <- flat
+#' fist[, grep("^(MCP|PIP|DIP)[2-5]", colnames(fist))] <- 80
+#' forward_kinematics(fist, skel)[1, "mf-tip", ]
+forward_kinematics <- function(x, skeleton = hand_skeleton(), mapping = NULL,
+                               mode = c("plain", "full", "fixed-root"),
+                               deactivate = NULL, frames = NULL, unit = NULL) {
+  call <- rlang::caller_env()
+  mode <- rlang::arg_match(mode)
+  check_skeleton(skeleton, call = call)
+  input <- fk_input(x, unit, call)
+  plan <- fk_plan(input$dofs, skeleton, mapping, mode, deactivate, call)
+  out <- lapply(names(input$recordings), function(id) {
+    rec <- input$recordings[[id]]
+    rec <- rec[fk_frames(frames, nrow(rec), id, call), , drop = FALSE]
+    fk_run(plan, rec, input$factor)
+  })
+  names(out) <- names(input$recordings)
+  if (length(out) == 1L) out[[1]] else out
+}
+
+fk_input <- function(x, unit, call) {
+  if (inherits(x, "grasps")) {
+    recs <- x$recordings
+    unit <- x$unit
+    dofs <- x$dofs
+  } else {
+    if (is.data.frame(x)) x <- as.matrix(x)
+    if (!is.matrix(x) || !is.numeric(x)) {
+      hm_abort("{.arg x} must be a numeric frames x DoF matrix or a {.cls grasps} object, not {.obj_type_friendly {x}}.",
+               "bad_input", argument = "x", call = call)
+    }
+    dofs <- colnames(x)
+    if (is.null(dofs)) {
+      if (ncol(x) != 16L) {
+        hm_abort("{.arg x} has no column names; name the DoFs (or give the 16 HUST DoFs in order).",
+                 "bad_input", argument = "x", call = call)
+      }
+      dofs <- handmotion::hust_dofs$name
+    }
+    recs <- list(x = x)
+    if (is.null(unit)) unit <- "deg"
+  }
+  if (!unit %in% c("deg", "rad")) {
+    hm_abort(c("Cannot pose a hand from angles in unit {.val {unit}}.",
+               i = "Forward kinematics needs degrees or radians; raw sensor counts must be calibrated first."),
+             "bad_input", argument = "unit", call = call)
+  }
+  bad <- vapply(recs, function(r) any(!is.finite(r)), logical(1))
+  if (any(bad)) {
+    hm_abort("Recording {.val {names(recs)[bad][1]}} has missing or infinite angles.",
+             "bad_recording", recording = names(recs)[bad][1], call = call)
+  }
+  list(recordings = recs, dofs = dofs, factor = if (unit == "rad") 180 / pi else 1)
+}
+
+fk_frames <- function(frames, n, id, call) {
+  if (is.null(frames)) return(seq_len(n))
+  if (is.character(frames)) {
+    if (identical(frames, "last")) return(n)
+    if (identical(frames, "first")) return(1L)
+    hm_abort("{.arg frames} must be indices, {.val first} or {.val last}, not {.val {frames}}.",
+             "bad_input", argument = "frames", call = call)
+  }
+  frames <- as.integer(frames)
+  if (anyNA(frames) || any(frames < 1L | frames > n)) {
+    hm_abort("{.arg frames} must lie in 1..{n} (recording {.val {id}} has {n} frame{?s}).",
+             "bad_input", argument = "frames", recording = id, call = call)
+  }
+  frames
+}
+
+# Everything that does not depend on the frames: which columns drive which
+# joint axes, and each joint's rest frame and rest offset.
+fk_plan <- function(dofs, skeleton, mapping, mode, deactivate, call) {
+  if (is.null(mapping)) mapping <- default_joint_map_impl(dofs, call)
+  mapping <- check_mapping(mapping, skeleton, call)
+  mapping$col <- match(dof_key(mapping$dof), dof_key(dofs))
+  used <- mapping[!is.na(mapping$col) & !is.na(mapping$axis), , drop = FALSE]
+  ignored <- setdiff(dofs, used$dof)
+  joints <- skeleton$joints
+  root <- joints$name[is.na(joints$parent)]
+  deactivated <- resolve_deactivate(deactivate, dofs, used, joints$name, call)
+  skipped <- character(0)
+  if (mode != "full") {
+    at_root <- used$dof[used$joint == root]
+    if (mode == "fixed-root") deactivated <- union(deactivated, at_root) else skipped <- at_root
+  }
+  used <- used[!used$dof %in% c(deactivated, skipped), , drop = FALSE]
+  J <- nrow(joints)
+  used$jidx <- match(used$joint, joints$name)
+  frames_rest <- skeleton_rest_frames(skeleton)
+  AkI <- lapply(frames_rest, kronecker, diag(3))
+  offsets <- as.matrix(joints[c("x", "y", "z")])
+  list(J = J, names = joints$name, parent = skeleton_parent_index(skeleton),
+       offsets = offsets, used = used, by_joint = split(seq_len(nrow(used)), factor(used$jidx, levels = seq_len(J))),
+       rest = frames_rest, AkI = AkI, tAkI = lapply(AkI, t), mode = mode, deactivated = deactivated, ignored = union(ignored, skipped),
+       skeleton_file = skeleton$file)
+}
+
+resolve_deactivate <- function(deactivate, dofs, used, joint_names, call) {
+  if (is.null(deactivate) || length(deactivate) == 0L) return(character(0))
+  if (is.numeric(deactivate)) {
+    bad <- deactivate[is.na(deactivate) | deactivate < 1 | deactivate > length(dofs)]
+    if (length(bad)) {
+      hm_abort("{.arg deactivate} column{?s} {.val {bad}} out of range 1..{length(dofs)}.", "bad_input",
+               argument = "deactivate", call = call)
+    }
+    return(dofs[deactivate])
+  }
+  deactivate <- as.character(deactivate)
+  as_dof <- dofs[match(dof_key(deactivate), dof_key(dofs))]
+  as_joint <- deactivate %in% joint_names
+  bad <- deactivate[is.na(as_dof) & !as_joint]
+  if (length(bad)) {
+    hm_abort(c("Cannot deactivate {.val {bad}}: neither a DoF nor a skeleton joint.",
+               i = "DoFs: {.val {dofs}}."), "bad_input", argument = "deactivate", call = call)
+  }
+  unique(c(as_dof[!is.na(as_dof)], used$dof[used$joint %in% deactivate[as_joint]]))
+}
+
+# Rest-pose local frames (3 x 3, columns = local x, y, z in root coordinates).
+# y points from the joint's child back to the joint (along the bone it moves),
+# z is the palm normal made orthogonal to y, x = y cross z. The root (several
+# children) keeps the root axes; end effectors inherit their parent's frame.
+skeleton_rest_frames <- function(skeleton) {
+  pos <- skeleton_rest_positions(skeleton)
+  pidx <- skeleton_parent_index(skeleton)
+  J <- nrow(pos)
+  out <- vector("list", J)
+  unit_v <- function(v) v / sqrt(sum(v^2))
+  for (j in seq_len(J)) {
+    kids <- which(pidx == j)
+    if (length(kids) != 1L) {
+      out[[j]] <- if (length(kids) == 0L && !is.na(pidx[j])) out[[pidx[j]]] else diag(3)
+      next
+    }
+    bone <- pos[j, ] - pos[kids, ]
+    if (sum(bone^2) < 1e-12) {
+      out[[j]] <- if (is.na(pidx[j])) diag(3) else out[[pidx[j]]]
+      next
+    }
+    y <- unit_v(bone)
+    zref <- if (abs(y[3]) > 0.99) c(1, 0, 0) else c(0, 0, 1)
+    z <- unit_v(zref - sum(zref * y) * y)
+    x <- c(y[2] * z[3] - y[3] * z[2], y[3] * z[1] - y[1] * z[3], y[1] * z[2] - y[2] * z[1])
+    out[[j]] <- cbind(x, y, z, deparse.level = 0)
+  }
+  out
+}
+
+# Batch rotations as n x 9 matrices (column-major 3 x 3 in each row).
+rot_batch <- function(axis, a) {
+  c <- cos(a)
+  s <- sin(a)
+  o <- rep(0, length(a))
+  l <- rep(1, length(a))
+  switch(axis,
+         x = cbind(l, o, o, o, c, s, o, -s, c, deparse.level = 0),
+         y = cbind(c, o, -s, o, l, o, s, o, c, deparse.level = 0),
+         z = cbind(c, s, o, -s, c, o, o, o, l, deparse.level = 0))
+}
+
+bmul <- function(A, B) {
+  C <- matrix(0, nrow(A), 9)
+  for (j in 0:2) {
+    b1 <- B[, 1 + 3 * j]
+    b2 <- B[, 2 + 3 * j]
+    b3 <- B[, 3 + 3 * j]
+    for (i in 1:3) C[, i + 3 * j] <- A[, i] * b1 + A[, i + 3] * b2 + A[, i + 6] * b3
+  }
+  C
+}
+
+# Applied angles in radians, one column per used mapping row.
+fk_angles <- function(plan, rec, factor) {
+  used <- plan$used
+  ang <- rec[, used$col, drop = FALSE]
+  if (ncol(ang)) ang <- ang * rep(used$sign * used$scale * factor * pi / 180, each = nrow(ang))
+  ang
+}
+
+# World rotation of joint j's subtree for all frames (n x 9): Mp A Q A^T with
+# Mp the parent's (NULL = identity), A the joint's rest frame and Q its local
+# rotation Rz Ry Rx. Q is applied column-wise to B = Mp A, which costs a
+# dozen vector operations per axis instead of a full batch product. NULL when
+# no DoF drives the joint and the parent does not turn.
+fk_rotate <- function(plan, ang, j, Mp, n) {
+  rows <- plan$by_joint[[j]]
+  if (!length(rows)) return(Mp)
+  A <- plan$rest[[j]]
+  B <- if (is.null(Mp)) matrix(rep(as.vector(A), each = n), n, 9) else Mp %*% plan$AkI[[j]]
+  axes <- plan$used$axis
+  for (a in c("z", "y", "x")) {
+    k <- rows[axes[rows] == a]
+    if (!length(k)) next
+    th <- if (length(k) == 1L) ang[, k] else rowSums(ang[, k, drop = FALSE])
+    B <- rotate_columns(B, a, cos(th), sin(th))
+  }
+  B %*% plan$tAkI[[j]]
+}
+
+# B %*% R_axis(theta) for a batch (rows = column-major 3 x 3).
+rotate_columns <- function(B, axis, c, s) {
+  i <- switch(axis, x = c(2L, 3L), y = c(3L, 1L), z = c(1L, 2L))
+  u <- (i[1] - 1L) * 3L + 1:3
+  v <- (i[2] - 1L) * 3L + 1:3
+  bu <- B[, u]
+  bv <- B[, v]
+  B[, u] <- c * bu + s * bv
+  B[, v] <- c * bv - s * bu
+  B
+}
+
+# Rotation of joint j relative to its parent, in rest-pose root axes (n x 9),
+# or NULL when no DoF drives it.
+fk_local <- function(plan, ang, j) fk_rotate(plan, ang, j, NULL, nrow(ang))
+
+fk_run <- function(plan, rec, factor) {
+  n <- nrow(rec)
+  used <- plan$used
+  ang <- fk_angles(plan, rec, factor)
+  J <- plan$J
+  M <- vector("list", J)          # world rotation of each joint's subtree; NULL = identity
+  P <- vector("list", J)          # n x 3 positions
+  out <- array(0, c(n, J, 3), dimnames = list(NULL, plan$names, c("x", "y", "z")))
+  for (j in seq_len(J)) {
+    p <- plan$parent[j]
+    off <- plan$offsets[j, ]
+    if (is.na(p)) {
+      P[[j]] <- matrix(0, n, 3)
+      Mp <- NULL
+    } else {
+      Mp <- M[[p]]
+      P[[j]] <- if (is.null(Mp)) sweep(P[[p]], 2, off, `+`) else
+        P[[p]] + Mp %*% kronecker(off, diag(3))
+    }
+    out[, j, ] <- P[[j]]
+    M[j] <- list(fk_rotate(plan, ang, j, Mp, n))
+  }
+  attr(out, "fk") <- list(mode = plan$mode, mapping = used[c("dof", "joint", "axis", "sign", "scale")],
+                          deactivated = plan$deactivated, ignored = plan$ignored)
+  out
+}

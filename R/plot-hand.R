@@ -1,0 +1,282 @@
+# Pictures of hands: a pose is the skeleton's joint positions at one frame,
+# projected onto the screen for a chosen view and drawn as bones (segments
+# from each joint to its parent) and joints (points), one colour per finger.
+
+#' Hand poses for drawing
+#'
+#' Collects the 3D joint positions of one or more frames into a long data
+#' frame that [autoplot()][autoplot.hand_pose] draws.
+#'
+#' @param x An array from [forward_kinematics()] (`[frames, joints, 3]`), a
+#'   list of such arrays, a recording (numeric frames x DoF matrix), a
+#'   [grasps()] object or a [hand_skeleton()] (its rest pose).
+#' @param frame Which frame(s): `"last"` (default), `"first"`, or frame
+#'   indices (several give one panel per frame, e.g. for a time strip).
+#' @param skeleton The [hand_skeleton()] that posed `x` (gives the bones).
+#' @param ... Passed to [forward_kinematics()] when `x` holds angles
+#'   (`mapping`, `mode`, `deactivate`, `unit`).
+#' @return A `hand_pose` data frame: `id`, `frame`, `joint`, `parent`,
+#'   `finger`, `x`, `y`, `z` (mm), plus the recording's metadata (`grasp`,
+#'   `subject`, ...) for a `grasps` input.
+#' @export
+#' @examples
+#' flat <- matrix(0, 2, 16, dimnames = list(NULL, hust_dofs$name))
+#' flat[2, c("MCP2", "PIP2", "DIP2")] <- 60
+#' pose <- hand_pose(flat, frame = 1:2)
+#' head(pose)
+#' ggplot2::autoplot(pose, view = "radial")
+hand_pose <- function(x, frame = "last", skeleton = hand_skeleton(), ...) {
+  call <- rlang::caller_env()
+  check_skeleton(skeleton, call = call)
+  meta <- NULL
+  if (inherits(x, "hand_skeleton")) return(skeleton_rest_pose(x))
+  if (inherits(x, "grasps")) {
+    meta <- x$meta
+    arrays <- lapply(seq_along(x), function(i) {
+      rec <- x$recordings[[i]]
+      fr <- fk_frames(frame, nrow(rec), x$meta$id[i], call)
+      a <- forward_kinematics(rec, skeleton, frames = fr, unit = x$unit, ...)
+      attr(a, "frames") <- fr
+      a
+    })
+    names(arrays) <- x$meta$id
+  } else if (is.array(x) && length(dim(x)) == 3L) {
+    arrays <- list(x = pose_frames(x, frame, "x", call))
+  } else if (is.list(x) && length(x) && all(vapply(x, function(a) is.array(a) && length(dim(a)) == 3L, logical(1)))) {
+    ids <- if (is.null(names(x))) paste0("r", seq_along(x)) else names(x)
+    arrays <- Map(function(a, id) pose_frames(a, frame, id, call), x, ids)
+    names(arrays) <- ids
+  } else if (is.matrix(x) || is.data.frame(x)) {
+    x <- as.matrix(x)
+    fr <- fk_frames(frame, nrow(x), "x", call)
+    a <- forward_kinematics(x, skeleton, frames = fr, ...)
+    attr(a, "frames") <- fr
+    arrays <- list(x = a)
+  } else {
+    hm_abort("{.arg x} must be a forward-kinematics array, a recording matrix, a {.cls grasps} or a {.cls hand_skeleton}, not {.obj_type_friendly {x}}.",
+             "bad_input", argument = "x", call = call)
+  }
+  out <- do.call(rbind, Map(pose_long, arrays, names(arrays), MoreArgs = list(skeleton = skeleton, call = call)))
+  if (!is.null(meta)) {
+    extra <- setdiff(names(meta), c("id", "n_frames"))
+    out <- cbind(out, meta[match(out$id, meta$id), extra, drop = FALSE])
+  }
+  rownames(out) <- NULL
+  structure(out, class = c("hand_pose", "data.frame"))
+}
+
+pose_frames <- function(a, frame, id, call) {
+  fr <- fk_frames(frame, dim(a)[1], id, call)
+  out <- a[fr, , , drop = FALSE]
+  attr(out, "frames") <- fr
+  out
+}
+
+pose_long <- function(a, id, skeleton, call) {
+  jn <- dimnames(a)[[2]]
+  missing <- setdiff(jn, skeleton$joints$name)
+  if (is.null(jn) || length(missing)) {
+    hm_abort("The positions name joint{?s} {.val {missing}} that the skeleton does not have.",
+             "bad_skeleton", joint = missing, call = call)
+  }
+  fr <- attr(a, "frames") %||0% seq_len(dim(a)[1])
+  j <- skeleton$joints[match(jn, skeleton$joints$name), ]
+  parent <- skeleton$joints$name[match(j$parent, skeleton$joints$id)]
+  finger <- skeleton_chains(skeleton)[match(jn, skeleton$joints$name)]
+  nf <- dim(a)[1]
+  data.frame(id = id, frame = rep(fr, times = length(jn)),
+             joint = rep(jn, each = nf), parent = rep(parent, each = nf),
+             finger = rep(finger, each = nf),
+             x = as.vector(a[, , 1]), y = as.vector(a[, , 2]), z = as.vector(a[, , 3]),
+             stringsAsFactors = FALSE)
+}
+
+`%||0%` <- function(x, y) if (is.null(x)) y else x
+
+skeleton_rest_pose <- function(skeleton) {
+  pos <- skeleton_rest_positions(skeleton)
+  a <- array(pos, c(1, dim(pos)), dimnames = list(NULL, rownames(pos), c("x", "y", "z")))
+  out <- pose_long(a, "rest", skeleton, rlang::caller_env())
+  structure(out, class = c("hand_pose", "data.frame"))
+}
+
+# Screen axes for a view: rows are screen right, screen up and towards the
+# viewer, in skeleton coordinates (fingers along -y, thumb +x, palm -z).
+hand_views <- list(
+  back = rbind(c(-1, 0, 0), c(0, -1, 0), c(0, 0, 1)),
+  palm = rbind(c(1, 0, 0), c(0, -1, 0), c(0, 0, -1)),
+  radial = rbind(c(0, 0, 1), c(0, -1, 0), c(1, 0, 0)),
+  ulnar = rbind(c(0, 0, -1), c(0, -1, 0), c(-1, 0, 0)),
+  tip = rbind(c(1, 0, 0), c(0, 0, 1), c(0, -1, 0))
+)
+
+#' @noRd
+view_matrix <- function(view, call = rlang::caller_env()) {
+  if (is.character(view) && length(view) == 1L && view == "oblique") view <- c(-60, 20)
+  if (is.character(view)) {
+    if (length(view) != 1L || !view %in% names(hand_views)) {
+      hm_abort("{.arg view} must be one of {.val {c(names(hand_views), 'oblique')}} or c(azimuth, elevation) in degrees.",
+               "bad_input", argument = "view", call = call)
+    }
+    return(hand_views[[view]])
+  }
+  if (!is.numeric(view) || length(view) != 2L || anyNA(view)) {
+    hm_abort("{.arg view} must be a view name or c(azimuth, elevation) in degrees.", "bad_input",
+             argument = "view", call = call)
+  }
+  # turn the back view about the screen's vertical, then tilt it
+  az <- view[1] * pi / 180
+  el <- view[2] * pi / 180
+  turn <- rbind(c(cos(az), 0, sin(az)), c(0, 1, 0), c(-sin(az), 0, cos(az)))
+  tilt <- rbind(c(1, 0, 0), c(0, cos(el), -sin(el)), c(0, sin(el), cos(el)))
+  tilt %*% turn %*% hand_views$back
+}
+
+project_pose <- function(pose, view, call = rlang::caller_env()) {
+  V <- view_matrix(view, call)
+  xyz <- as.matrix(pose[c("x", "y", "z")])
+  scr <- xyz %*% t(V)
+  pose$sx <- scr[, 1]
+  pose$sy <- scr[, 2]
+  pose$depth <- scr[, 3]
+  pose
+}
+
+pose_bones <- function(p) {
+  key <- paste(p$id, p$frame, p$joint, sep = "\r")
+  pk <- match(paste(p$id, p$frame, p$parent, sep = "\r"), key)
+  b <- p[!is.na(pk), , drop = FALSE]
+  pk <- pk[!is.na(pk)]
+  b$sxend <- p$sx[pk]
+  b$syend <- p$sy[pk]
+  b$depth <- (b$depth + p$depth[pk]) / 2
+  b[order(b$depth), , drop = FALSE]
+}
+
+pose_panels <- function(p) {
+  multi_id <- length(unique(p$id)) > 1L
+  multi_fr <- length(unique(p$frame)) > 1L
+  lab <- if (multi_id && multi_fr) paste0(p$id, ", frame ", p$frame) else if (multi_fr)
+    paste("frame", p$frame) else p$id
+  factor(lab, levels = unique(lab))
+}
+
+finger_colours <- c(root = "grey40", th = "#D55E00", `if` = "#0072B2", mf = "#009E73",
+                    rf = "#CC79A7", lf = "#E69F00")
+
+#' Draw a hand pose
+#'
+#' Projects the joints onto the screen for `view` and draws bones and
+#' joints, one colour per finger; several recordings or frames give one
+#' panel each.
+#'
+#' @param object A [hand_pose()].
+#' @param view `"back"`, `"palm"`, `"radial"` (thumb side), `"ulnar"`,
+#'   `"tip"` (from the fingertips), `"oblique"`, or `c(azimuth, elevation)`
+#'   in degrees (turning the back view).
+#' @param labels Label the joints with their names?
+#' @param ... Unused.
+#' @return A ggplot object.
+#' @export
+#' @method autoplot hand_pose
+#' @examples
+#' ggplot2::autoplot(hand_pose(hand_skeleton()), view = "palm")
+autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, ...) {
+  p <- project_pose(as.data.frame(unclass(object), stringsAsFactors = FALSE), view, rlang::caller_env())
+  p$panel <- pose_panels(p)
+  bones <- pose_bones(p)
+  g <- ggplot2::ggplot() +
+    ggplot2::geom_segment(data = bones, ggplot2::aes(x = .data$sx, y = .data$sy, xend = .data$sxend,
+                                                    yend = .data$syend, colour = .data$finger),
+                          linewidth = 1.4, lineend = "round") +
+    ggplot2::geom_point(data = p, ggplot2::aes(x = .data$sx, y = .data$sy, colour = .data$finger),
+                        size = 1.6) +
+    ggplot2::scale_colour_manual(values = finger_colours, guide = "none") +
+    ggplot2::coord_equal() +
+    ggplot2::theme_void() +
+    ggplot2::theme(strip.text = ggplot2::element_text(size = 8))
+  if (labels) {
+    g <- g + ggplot2::geom_text(data = p, ggplot2::aes(x = .data$sx, y = .data$sy, label = .data$joint),
+                                size = 2.3, vjust = -0.8)
+  }
+  if (nlevels(p$panel) > 1L) g <- g + ggplot2::facet_wrap(~panel)
+  g
+}
+
+#' A grid of hand poses, e.g. recorded vs generated per grasp type
+#'
+#' Draws one pose per group (by default per grasp type), the way the
+#' thesis' Appendix A shows the last frame of a recorded and a generated
+#' grasp for each of the 33 types. Give several sets as a named list to get
+#' one column per set.
+#'
+#' @param x A [grasps()] object, or a named list of them (e.g.
+#'   `list(recorded = g, generated = generate(models))`).
+#' @param frame Frame to draw: `"last"` (default), `"first"` or an index.
+#' @param by Metadata column to group by (one row of panels per value).
+#' @param per_group Recordings drawn per group and set (the first ones).
+#' @param skeleton A [hand_skeleton()].
+#' @param view See [autoplot.hand_pose()].
+#' @param ... Passed to [forward_kinematics()].
+#' @return A ggplot object; its data has columns `set` and `group`.
+#' @export
+#' @examples
+#' flat <- matrix(0, 5, 16)
+#' bent <- flat
+#' bent[, 5:16] <- 70
+#' g <- grasps(list(flat, bent, bent), meta = data.frame(grasp = c(1, 2, 2)))
+#' plot_pose_grid(g)
+#' plot_pose_grid(list(recorded = g, generated = g), view = "radial")
+plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
+                           skeleton = hand_skeleton(), view = "oblique", ...) {
+  call <- rlang::caller_env()
+  sets <- if (inherits(x, "grasps")) list(x) else x
+  if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasps"))) {
+    hm_abort("{.arg x} must be a {.cls grasps} object or a list of them.", "bad_input",
+             argument = "x", call = call)
+  }
+  if (is.null(names(sets))) names(sets) <- if (length(sets) == 1L) "" else paste("set", seq_along(sets))
+  poses <- lapply(seq_along(sets), function(k) {
+    g <- sets[[k]]
+    s <- names(sets)[k]
+    if (!by %in% names(g$meta)) {
+      hm_abort("{.arg by} must name a metadata column ({.val {names(g$meta)}}), not {.val {by}}.",
+               "bad_input", argument = "by", call = call)
+    }
+    grp <- g$meta[[by]]
+    grp_chr <- ifelse(is.na(grp), "(none)", as.character(grp))
+    keep <- unlist(lapply(split(seq_along(grp_chr), factor(grp_chr, levels = unique(grp_chr))),
+                          utils::head, per_group), use.names = FALSE)
+    p <- hand_pose(g[keep], frame = frame, skeleton = skeleton, ...)
+    p$set <- s
+    p$group <- grp_chr[match(p$id, g$meta$id)]
+    p
+  })
+  lev <- unique(unlist(lapply(sets, function(g) {
+    v <- g$meta[[by]]
+    if (is.factor(v)) intersect(levels(v), as.character(v)) else unique(as.character(v))
+  })))
+  p <- do.call(rbind, poses)
+  p$group <- factor(p$group, levels = unique(c(lev, unique(p$group))))
+  p$set <- factor(p$set, levels = names(sets))
+  # several recordings of one group and set are overlaid in the same panel
+  p$id <- paste(p$set, p$id)
+  pr <- project_pose(p, view, call)
+  bones <- pose_bones(pr)
+  g <- ggplot2::ggplot() +
+    ggplot2::geom_segment(data = bones, ggplot2::aes(x = .data$sx, y = .data$sy, xend = .data$sxend,
+                                                    yend = .data$syend, colour = .data$finger),
+                          linewidth = 1, lineend = "round") +
+    ggplot2::geom_point(data = pr, ggplot2::aes(x = .data$sx, y = .data$sy, colour = .data$finger),
+                        size = 0.8) +
+    ggplot2::scale_colour_manual(values = finger_colours, guide = "none") +
+    ggplot2::coord_equal() +
+    ggplot2::theme_void() +
+    ggplot2::theme(strip.text = ggplot2::element_text(size = 7))
+  if (length(sets) > 1L) {
+    g + ggplot2::facet_grid(group ~ set, switch = "y", labeller = ggplot2::label_wrap_gen(16)) +
+      ggplot2::theme(strip.text.y.left = ggplot2::element_text(angle = 0, hjust = 1))
+  } else {
+    g + ggplot2::facet_wrap(~group, labeller = ggplot2::label_wrap_gen(16))
+  }
+}

@@ -1,0 +1,28 @@
+test_that("animate_hand() writes a self-contained HTML animation", {
+  rec <- matrix(0, 40, 16, dimnames = list(NULL, hust_dofs$name))
+  rec[, 5:16] <- outer(sin(seq(0, pi, length.out = 40)), rep(80, 12))
+  f <- withr::local_tempfile(fileext = ".html")
+  expect_invisible(out <- animate_hand(rec, f))
+  expect_equal(out, f)
+  doc <- xml2::read_html(f)
+  frames <- xml2::xml_find_all(doc, "//svg/g")
+  expect_length(frames, 40L)
+  expect_length(xml2::xml_find_all(frames[[1]], ".//polyline"), 5L)
+  # frames differ: the fingers move
+  expect_false(identical(xml2::xml_attr(xml2::xml_find_all(frames[[1]], ".//polyline"), "points"),
+                         xml2::xml_attr(xml2::xml_find_all(frames[[20]], ".//polyline"), "points")))
+  txt <- paste(readLines(f), collapse = "\n")
+  expect_false(grepl("<link|src=|https?://(?!www.w3.org)", txt, perl = TRUE))
+  expect_match(txt, "setInterval", fixed = TRUE)
+})
+
+test_that("long recordings are thinned and grasps give a title", {
+  rec <- matrix(0, 500, 16)
+  g <- grasps(list(rec, rec), meta = data.frame(grasp = c("Tripod", "Lateral")), rate = 100)
+  f <- withr::local_tempfile(fileext = ".html")
+  animate_hand(g, f, recording = 2, max_frames = 50)
+  doc <- xml2::read_html(f)
+  expect_length(xml2::xml_find_all(doc, "//svg/g"), 50L)
+  expect_match(xml2::xml_text(xml2::xml_find_first(doc, "//h3")), "Lateral")
+  expect_error(animate_hand(g, f, recording = 3), class = "handmotion_error_bad_input")
+})

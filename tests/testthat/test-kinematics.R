@@ -1,0 +1,147 @@
+hust <- function(n = 1, value = 0) matrix(value, n, 16, dimnames = list(NULL, hust_dofs$name))
+gdb <- function(n = 1, value = 0) matrix(value, n, 23, dimnames = list(NULL, graspdb14_joint_map()$dof))
+dist <- function(a, b) sqrt(sum((a - b)^2))
+
+test_that("the flat pose puts the middle fingertip 150-220 mm from the wrist", {
+  p <- forward_kinematics(hust(), hand_skeleton())
+  expect_equal(dim(p), c(1L, 25L, 3L))
+  expect_equal(dimnames(p)[[3]], c("x", "y", "z"))
+  d <- dist(p[1, "mf-tip", ], p[1, "root", ])
+  expect_gte(d, 150)
+  expect_lte(d, 220)
+  # all angles zero = the skeleton's rest pose
+  expect_equal(unname(p[1, , ]), unname(skeleton_rest_positions(hand_skeleton())))
+})
+
+test_that("GraspDB14's skeleton and sensors: flat pose and real recording", {
+  s <- read_skeleton(shared_file("data", "graspdb14", "default.xmlskel"))
+  p <- forward_kinematics(gdb(), s)
+  d <- dist(p[1, "mf-tip", ], p[1, "root", ])
+  expect_gte(d, 150)
+  expect_lte(d, 220)
+  raw <- utils::read.table(shared_file("data", "graspdb14", "01_11_ex03-rad-004-grasp-su04.txt"))
+  a <- as.matrix(raw[, 8:30])
+  colnames(a) <- graspdb14_joint_map()$dof
+  p <- forward_kinematics(a, s, unit = "rad", mode = "full")
+  expect_equal(dim(p), c(282L, 25L, 3L))
+  expect_true(all(is.finite(p)))
+  expect_setequal(attr(p, "fk")$ignored, c("I-AA", "P-Arch"))
+  # during the power-sphere hold the fingers curl towards the palm (-z)
+  expect_lt(p[120, "mf-tip", "z"], -50)
+})
+
+test_that("a 90 degree PIP flexion turns the distal segments towards the palm", {
+  s <- hand_skeleton()
+  rest <- skeleton_rest_positions(s)
+  x <- hust()
+  x[, "PIP3"] <- 90
+  p <- forward_kinematics(x, s)
+  distal <- dist(rest["mf-tip", ], rest["mf-pip", ])
+  expect_equal(unname(p[1, "mf-tip", ]), unname(rest["mf-pip", ] + c(0, 0, -distal)), tolerance = 1e-8)
+  # joints proximal to the PIP do not move, nor do other fingers
+  expect_equal(unname(p[1, c("mf-mcp", "mf-pip", "if-tip"), ]), unname(rest[c("mf-mcp", "mf-pip", "if-tip"), ]))
+})
+
+test_that("abduction turns a finger within the palm plane towards the thumb", {
+  s <- hand_skeleton()
+  x <- gdb()
+  x[, "MI-AA"] <- -20            # GraspDB14 angles are applied negated
+  p <- forward_kinematics(x, s)
+  rest <- skeleton_rest_positions(s)
+  expect_equal(unname(p[1, "if-tip", "z"]), 0, tolerance = 1e-10)
+  expect_gt(p[1, "if-tip", "x"], rest["if-tip", "x"] + 20)
+  expect_equal(dist(p[1, "if-tip", ], p[1, "if-mcp", ]), dist(rest["if-tip", ], rest["if-mcp", ]))
+})
+
+test_that("poses are rigid: every bone keeps its length in every frame", {
+  set.seed(3)
+  x <- hust(50)
+  x[] <- runif(length(x), -30, 100)
+  s <- hand_skeleton()
+  p <- forward_kinematics(x, s)
+  rest <- skeleton_rest_positions(s)
+  j <- s$joints
+  for (k in which(!is.na(j$parent))) {
+    parent <- j$name[j$id == j$parent[k]]
+    len <- sqrt(rowSums((p[, j$name[k], ] - p[, parent, ])^2))
+    expect_equal(len, rep(dist(rest[j$name[k], ], rest[parent, ]), 50), tolerance = 1e-9)
+  }
+})
+
+test_that("vectorised frames equal frame-by-frame results; frames and units", {
+  set.seed(4)
+  x <- hust(7)
+  x[] <- runif(length(x), -20, 90)
+  all <- forward_kinematics(x)
+  one <- forward_kinematics(x[5, , drop = FALSE])
+  expect_equal(all[5, , , drop = FALSE], one, ignore_attr = TRUE)
+  expect_equal(forward_kinematics(x, frames = "last"), all[7, , , drop = FALSE], ignore_attr = TRUE)
+  expect_equal(forward_kinematics(x * pi / 180, unit = "rad"), all, ignore_attr = TRUE)
+  expect_error(forward_kinematics(x, frames = 9), class = "handmotion_error_bad_input")
+  expect_error(forward_kinematics(x, unit = "raw"), class = "handmotion_error_bad_input")
+})
+
+test_that("modes: full rotates the hand at the wrist, fixed-root and plain do not", {
+  x <- gdb(2)
+  x[, "M-PIPJ"] <- -40 * pi / 180
+  x[2, "W-FE"] <- -90 * pi / 180   # wrist flexion of 90 degrees
+  s <- hand_skeleton()
+  full <- forward_kinematics(x, s, mode = "full", unit = "rad")
+  plain <- forward_kinematics(x, s, mode = "plain", unit = "rad")
+  fixed <- forward_kinematics(x, s, mode = "fixed-root", unit = "rad")
+  expect_equal(plain, fixed, ignore_attr = TRUE)
+  expect_equal(full[1, , ], plain[1, , ])
+  expect_equal(attr(fixed, "fk")$deactivated, c("W-FE", "W-AA"))
+  # 90 degree flexion at the root: y -> -z, so the hand now points to -z
+  expect_equal(unname(full[2, "mf-mcp", ]), unname(c(plain[2, "mf-mcp", 1], 0, plain[2, "mf-mcp", 2])),
+               tolerance = 1e-8)
+  expect_equal(sqrt(rowSums(full[2, , ]^2)), sqrt(rowSums(plain[2, , ]^2)))
+})
+
+test_that("deactivating a sensor or a joint sets its angles to zero", {
+  x <- gdb(1)
+  x[, c("M-MCPJ", "M-PIPJ", "I-MCPJ")] <- -50
+  zeroed <- x
+  zeroed[, "M-MCPJ"] <- 0
+  ref <- forward_kinematics(zeroed)
+  expect_equal(forward_kinematics(x, deactivate = "M-MCPJ"), ref, ignore_attr = TRUE)
+  expect_equal(forward_kinematics(x, deactivate = "mf-mcp"), ref, ignore_attr = TRUE)
+  expect_equal(forward_kinematics(x, deactivate = 9), ref, ignore_attr = TRUE)
+  expect_equal(attr(forward_kinematics(x, deactivate = "mf-mcp"), "fk")$deactivated, "M-MCPJ")
+  expect_error(forward_kinematics(x, deactivate = "elbow"), class = "handmotion_error_bad_input")
+})
+
+test_that("grasps in, arrays or a list of arrays out", {
+  set.seed(5)
+  recs <- replicate(3, matrix(runif(8 * 16, 0, 60), 8, 16), simplify = FALSE)
+  g <- grasps(recs, meta = data.frame(grasp = c(1, 2, 2)))
+  out <- forward_kinematics(g)
+  expect_type(out, "list")
+  expect_named(out, g$meta$id)
+  expect_equal(out[[2]], forward_kinematics(recs[[2]]), ignore_attr = TRUE)
+  expect_true(is.array(forward_kinematics(g[1])))
+  g_rad <- g
+  g_rad$unit <- "rad"
+  g_rad$recordings <- lapply(g$recordings, function(r) r * pi / 180)
+  expect_equal(forward_kinematics(g_rad), out)
+  g_raw <- g
+  g_raw$unit <- "raw"
+  expect_error(forward_kinematics(g_raw), class = "handmotion_error_bad_input")
+})
+
+test_that("mappings: defaults, custom, unknown DoFs and missing joints", {
+  expect_equal(default_joint_map(c("PIP2", "MCP2"))$joint, c("if-pip", "if-mcp"))
+  expect_equal(default_joint_map(c("t_tmj", "w-fe"))$joint, c("th-tmc", "root"))
+  expect_error(default_joint_map(c("a", "b")), class = "handmotion_error_bad_mapping")
+  x <- matrix(c(0, 90), 1, dimnames = list(NULL, c("a", "b")))
+  m <- data.frame(dof = "b", joint = "mf-pip", axis = "x", sign = 1, scale = 1)
+  p <- forward_kinematics(x, mapping = m)
+  expect_equal(attr(p, "fk")$ignored, "a")
+  expect_lt(p[1, "mf-tip", "z"], -40)
+  m$joint <- "mf-knuckle"
+  err <- expect_error(forward_kinematics(x, mapping = m), class = "handmotion_error_bad_skeleton")
+  expect_equal(err$joint, "mf-knuckle")
+  m$joint <- "mf-pip"
+  m$axis <- "w"
+  expect_error(forward_kinematics(x, mapping = m), class = "handmotion_error_bad_mapping")
+})

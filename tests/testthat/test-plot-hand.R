@@ -1,0 +1,63 @@
+hust <- function(n = 1, value = 0) matrix(value, n, 16, dimnames = list(NULL, hust_dofs$name))
+
+test_that("hand_pose() collects joints from matrices, arrays, grasps and skeletons", {
+  x <- hust(3)
+  x[, "PIP3"] <- c(0, 45, 90)
+  p <- hand_pose(x)
+  expect_s3_class(p, "hand_pose")
+  expect_equal(nrow(p), 25L)
+  expect_equal(unique(p$frame), 3L)
+  expect_named(p, c("id", "frame", "joint", "parent", "finger", "x", "y", "z"))
+  expect_equal(sum(is.na(p$parent)), 1L)
+  fk <- forward_kinematics(x)
+  expect_equal(hand_pose(fk, frame = 1:3)$z, as.vector(fk[, , 3]))
+  g <- grasps(list(x, x), meta = data.frame(grasp = c("Tripod", "Lateral")))
+  pg <- hand_pose(g, frame = "first")
+  expect_equal(nrow(pg), 50L)
+  expect_equal(as.character(unique(pg$grasp)), c("Tripod", "Lateral"))
+  expect_equal(nrow(hand_pose(hand_skeleton())), 25L)
+  expect_error(hand_pose("a"), class = "handmotion_error_bad_input")
+})
+
+test_that("autoplot draws one bone per non-root joint and one panel per frame", {
+  x <- hust(3)
+  x[, "PIP3"] <- c(0, 45, 90)
+  b <- ggplot2::ggplot_build(ggplot2::autoplot(hand_pose(x, frame = 1:3), view = "radial"))
+  expect_equal(nrow(b$data[[1]]), 3L * 24L)
+  expect_equal(nrow(b$data[[2]]), 3L * 25L)
+  expect_equal(length(unique(b$data[[1]]$PANEL)), 3L)
+})
+
+test_that("views project as documented", {
+  x <- hust(1, 0)
+  x[, c("MCP3", "PIP3", "DIP3")] <- 80
+  p <- hand_pose(x)
+  tip <- function(view) {
+    pr <- project_pose(as.data.frame(unclass(p)), view)
+    pr[pr$joint == "mf-tip", c("sx", "sy")]
+  }
+  # seen from the thumb side the palm (-z) is on the left: a curled finger ends left of the wrist
+  expect_lt(tip("radial")$sx, 0)
+  expect_gt(tip("ulnar")$sx, 0)
+  # in the back view fingers point up and the thumb is on the left
+  pr <- project_pose(as.data.frame(unclass(hand_pose(hand_skeleton()))), "back")
+  expect_lt(pr$sx[pr$joint == "th-tip"], 0)
+  expect_gt(pr$sy[pr$joint == "if-tip"], 100)
+  expect_equal(view_matrix(c(0, 0)), view_matrix("back"))
+  expect_error(view_matrix("sideways"), class = "handmotion_error_bad_input")
+})
+
+test_that("plot_pose_grid() draws one panel per group and set", {
+  flat <- hust(5)
+  bent <- hust(5, 60)
+  g <- grasps(list(flat, bent, bent), meta = data.frame(grasp = c(1, 2, 2)))
+  b <- ggplot2::ggplot_build(plot_pose_grid(g))
+  expect_equal(length(unique(b$data[[1]]$PANEL)), 2L)
+  expect_equal(nrow(b$data[[1]]), 2L * 24L)      # one recording per type
+  gg <- plot_pose_grid(list(recorded = g, generated = g[2:3]), view = "radial")
+  b <- ggplot2::ggplot_build(gg)
+  expect_equal(nrow(b$layout$layout), 4L)        # 2 types x 2 sets (one empty)
+  expect_setequal(as.character(unique(gg$layers[[1]]$data$set)), c("recorded", "generated"))
+  expect_error(plot_pose_grid(g, by = "colour"), class = "handmotion_error_bad_input")
+  expect_error(plot_pose_grid(list(1)), class = "handmotion_error_bad_input")
+})
