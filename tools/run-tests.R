@@ -1,6 +1,7 @@
 # Runs the testthat suite against the installed package's sources (load_all),
 # prints one plain closing line "testthat: N passed, N failed, N skipped" and
 # exits non-zero when anything failed or errored.
+options(testthat.progress.max_fails = Inf)
 res <- testthat::test_local(".", reporter = testthat::ProgressReporter$new(show_praise = FALSE),
                             stop_on_failure = FALSE)
 df <- as.data.frame(res)
