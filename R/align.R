@@ -1,0 +1,549 @@
+# Time alignment of the recordings of one grasp type (Jeppsson 2017, 3.1-3.2,
+# 4.1.2, 5.1.1). The thesis aligned with a MATLAB multi-sequence DTW and fell
+# back to linear warping when it failed. We align every recording to a common
+# template with pairwise multivariate DTW and refine the template by DTW
+# barycenter averaging (DBA: Petitjean, Ketterlin & Gancarski 2011), so no
+# single recording is the arbitrary reference. Two engines do the pairwise
+# step: "reference" is the dtw package, "fast" is src/dtw.c, which reproduces
+# dtw's symmetric2 recursion and tie-breaking exactly (tests compare them).
+# By default DTW compares shape features (per recording and DoF: centred on
+# the start/end postures, scaled by the sd), because on raw angles it explains
+# posture differences between subjects by holding recordings still; on the
+# simulated data that dropped 7-23% of each type as degenerate, against 0-3%
+# with shape features (features = "raw" keeps the plain comparison).
+
+#' Multivariate DTW of one recording against a template
+#'
+#' Dynamic time warping with the Euclidean distance between frames (across
+#' all DoFs) and the `symmetric2` step pattern (the dtw package's default:
+#' diagonal steps weigh the local distance twice).
+#'
+#' @param x Numeric matrix, frames x DoFs (the recording).
+#' @param template Numeric matrix, frames x DoFs, same number of columns.
+#' @param engine `"fast"` (the package's C implementation) or `"reference"`
+#'   ([dtw::dtw()]); both give the same path and distance.
+#' @param window `NULL` (no constraint) or a non-negative number: the
+#'   half-width, in template frames, of a band around the diagonal slanted
+#'   from (1, 1) to (n, L) (dtw's `"slantedband"` window).
+#' @return A list: `index1` (frames of `x`) and `index2` (frames of
+#'   `template`), integer vectors of equal length giving the warping path from
+#'   (1, 1) to (n, L), and `distance`, the accumulated cost (not normalised).
+#' @seealso [align_recordings()]
+#' @examples
+#' t1 <- seq(0, 1, length.out = 30); t2 <- seq(0, 1, length.out = 40)^1.5
+#' x <- cbind(a = sin(pi * t1), b = t1^2)
+#' y <- cbind(a = sin(pi * t2), b = t2^2)
+#' p <- dtw_align_pair(x, y)
+#' p$distance
+#' head(cbind(p$index1, p$index2))
+#' @export
+dtw_align_pair <- function(x, template, engine = c("fast", "reference"), window = NULL) {
+  call <- rlang::caller_env()
+  engine <- rlang::arg_match(engine, error_call = call)
+  x <- as_align_matrix(x, "x", call, finite = TRUE)
+  template <- as_align_matrix(template, "template", call, finite = TRUE)
+  if (ncol(x) != ncol(template)) {
+    hm_abort("{.arg x} has {ncol(x)} column{?s} but {.arg template} has {ncol(template)}.",
+             "bad_argument", argument = "template", call = call)
+  }
+  window <- align_check_window(window, call)
+  res <- tryCatch(
+    if (engine == "fast") dtw_pair_fast(x, template, window)
+    else dtw_pair_reference(x, template, window),
+    error = function(e) {
+      hm_abort(c("DTW failed.", x = conditionMessage(e)), "alignment_failed",
+               call = call)
+    })
+  res
+}
+
+dtw_pair_fast <- function(x, template, window) {
+  .Call(hm_dtw_pair, x, template, window)
+}
+
+dtw_pair_reference <- function(x, template, window) {
+  args <- list(x, template, step.pattern = dtw::symmetric2, keep.internals = FALSE)
+  # dtw warns when dist.method is given for one-column series; Euclidean is
+  # its default anyway.
+  if (ncol(x) > 1L) args$dist.method <- "Euclidean"
+  if (!is.null(window)) {
+    args$window.type <- "slantedband"
+    args$window.size <- window
+  }
+  r <- do.call(dtw::dtw, args)
+  list(index1 = as.integer(r$index1), index2 = as.integer(r$index2),
+       distance = r$distance)
+}
+
+#' Align the recordings of one grasp type
+#'
+#' Warps every recording to a common length `L` with multivariate dynamic time
+#' warping against a template refined by DTW barycenter averaging (DBA):
+#' the initial template is the mean of all recordings linearly resampled to
+#' `L`; each iteration aligns every recording to the template
+#' ([dtw_align_pair()]) and replaces template frame `j` by the mean of all
+#' recording frames matched to it, until the relative change of the template
+#' (Frobenius norm) is below `tol` or after `max_iter` iterations.
+#'
+#' Warped recording `k` has as frame `j` the mean of its frames matched to
+#' template frame `j`; its warping function gives, for each template frame,
+#' the (mean) original frame matched to it, 1-based, non-decreasing, with its
+#' ends pinned to 1 and `n_k` (DTW's boundary condition), so it also carries
+#' the recording's length.
+#'
+#' **Degenerate warps** (Jeppsson 2017, Figure 5.1): a recording whose warping
+#' function stays on one original frame for more than `max_stall * L`
+#' consecutive template frames (at least two) is held still over a long
+#' stretch of the warped time. Such recordings are dropped (listed in
+#' `$degenerate`), and the template is refined again without them (at most
+#' two more iterations; at most five rounds of dropping). If more than half of
+#' the recordings are flagged at once, the template itself is suspect, so only
+#' the worst is dropped and DBA restarts from the linear mean of the rest.
+#'
+#' **Fallback**: if DTW fails (an error, e.g. non-finite values or no path
+#' within `window`, a non-finite template, or fewer than two recordings
+#' left), the whole type is warped linearly (`method = "linear"`, with the
+#' reason in `fallback_reason`): each recording is resampled to `L` frames and
+#' its warping function runs linearly from 1 to `n_k`.
+#'
+#' Over-long recordings should be removed first ([find_overlong()]).
+#'
+#' @param recordings A list of numeric matrices (frames x DoFs, same DoFs),
+#'   one grasp type; names are used as ids. A [grasps()] object is accepted.
+#' @param target_length Length `L` of the warped recordings; default
+#'   `round(mean(n_frames))`.
+#' @param engine `"fast"` or `"reference"` pairwise DTW (see
+#'   [dtw_align_pair()]).
+#' @param max_iter Maximum number of DBA iterations (0 = align to the linear
+#'   mean only).
+#' @param tol Convergence tolerance on the relative template change.
+#' @param max_stall Longest allowed stall, as a fraction of `L`.
+#' @param window Optional DTW window half-width (see [dtw_align_pair()]).
+#' @param features What DTW compares. `"shape"` (default): each recording's
+#'   DoFs centred on the midpoint of its start and end postures and scaled by
+#'   their standard deviation, so that differences in posture and excursion
+#'   between subjects and objects are not mistaken for timing (DTW on raw
+#'   angles then holds recordings still, a singular warp). `"raw"`: the
+#'   angles as recorded. Either way the warped recordings are in data units.
+#' @return An object of class `grasp_alignment`, a list with `warped` (array
+#'   `[n, L, p]`, dimnames ids, NULL, DoFs), `warps` (`n x L` matrix, original
+#'   frame per template frame), `template` (`L x p`), `target_length`, `ids`,
+#'   `n_frames` (original lengths, named), `method` (`"dtw"` or `"linear"`),
+#'   `fallback_reason` (`NA` unless linear), `degenerate` (data frame `id`,
+#'   `stall`, `n_frames` of the dropped recordings; they are not in `warped`),
+#'   `dropped_warps` (their warping functions), `iterations`, `converged`,
+#'   `changes` (relative template change at each iteration), `engine`,
+#'   `distance` (DTW cost per kept recording), `max_stall`, `features`,
+#'   `feature_template` (the DBA template in the space DTW compared; with
+#'   `features = "raw"` it equals `template`, otherwise `template` is the mean
+#'   warped recording in data units).
+#' @seealso [find_overlong()], [autoplot.grasp_alignment()]
+#' @examples
+#' set.seed(1)
+#' curve <- function(u) cbind(a = 50 * plogis((u - 0.5) / 0.08), b = 30 * sin(pi * u))
+#' recs <- lapply(1:8, function(k) {
+#'   n <- sample(35:45, 1); u <- seq(0, 1, length.out = n)
+#'   curve(u + (k - 4.5) / 20 * u * (1 - u))
+#' })
+#' al <- align_recordings(recs)
+#' al
+#' dim(al$warped)
+#' @export
+align_recordings <- function(recordings, target_length = NULL, engine = c("fast", "reference"),
+                             max_iter = 10, tol = 1e-3, max_stall = 0.25, window = NULL,
+                             features = c("shape", "raw")) {
+  call <- rlang::caller_env()
+  engine <- rlang::arg_match(engine, error_call = call)
+  features <- rlang::arg_match(features, error_call = call)
+  if (inherits(recordings, "grasps")) recordings <- recordings$recordings
+  recs <- align_check_recordings(recordings, call)
+  ids <- names(recs)
+  n_frames <- vapply(recs, nrow, integer(1))
+  L <- align_check_target_length(target_length, n_frames, call)
+  align_check_count(max_iter, "max_iter", call)
+  overlong_check_mult(tol, "tol", call)
+  overlong_check_mult(max_stall, "max_stall", call)
+  window <- align_check_window(window, call)
+
+  if (length(recs) < 2L) {
+    return(align_linear_fallback(recs, L, engine,
+                            reason = "fewer than 2 recordings to align"))
+  }
+  norm <- if (features == "shape") lapply(recs, shape_normaliser) else NULL
+  feats <- if (is.null(norm)) recs else Map(normalise_recording, recs, norm)
+  fit <- tryCatch(dba_with_drops(feats, L, engine, max_iter, tol, max_stall, window),
+                  error = function(e) e)
+  if (inherits(fit, "error")) {
+    return(align_linear_fallback(recs, L, engine, reason = conditionMessage(fit)))
+  }
+  if (length(fit$kept) < 2L) {
+    return(align_linear_fallback(
+      recs, L, engine,
+      reason = sprintf("fewer than 2 recordings left after dropping %d degenerate warp(s)",
+                       nrow(fit$degenerate))))
+  }
+  kept <- fit$kept
+  dofs <- colnames(recs[[1]])
+  warped <- fit$run$warped
+  feature_template <- fit$run$template
+  if (!is.null(norm)) {
+    # back to data units: the normalisation is affine per recording and DoF,
+    # so the mean of the normalised matched frames maps to the raw mean
+    for (i in seq_along(kept)) {
+      nm <- norm[[kept[i]]]
+      warped[i, , ] <- denormalise_recording(matrix(warped[i, , ], L), nm)
+    }
+    template <- matrix(colMeans(warped, dims = 1L), L)
+  } else {
+    template <- feature_template
+  }
+  dimnames(warped) <- list(ids[kept], NULL, dofs)
+  warps <- fit$run$warps
+  dimnames(warps) <- list(ids[kept], NULL)
+  dimnames(template) <- list(NULL, dofs)
+  dimnames(feature_template) <- list(NULL, dofs)
+  new_grasp_alignment(
+    warped = warped, warps = warps, template = template, target_length = L,
+    ids = ids[kept], n_frames = n_frames[kept], method = "dtw",
+    fallback_reason = NA_character_, degenerate = fit$degenerate,
+    dropped_warps = fit$dropped_warps, iterations = fit$iterations,
+    converged = fit$converged, changes = fit$changes, engine = engine,
+    distance = stats::setNames(fit$run$distance, ids[kept]), max_stall = max_stall,
+    features = features, feature_template = feature_template)
+}
+
+# Per recording and DoF: centre on the midpoint of the start and end postures
+# (mean of the first and of the last few frames) and scale by the DoF's sd.
+# Recordings of one type differ in posture offsets (subject, object size) and
+# excursion; DTW on the raw angles "explains" such differences by holding a
+# recording still (singular warps). The endpoints are the rest and the final
+# posture whatever the timing, so unlike the mean over time this centre does
+# not depend on the warp. The scale has a floor of 10% of the recording's
+# largest DoF sd, so a DoF that barely moves is not blown up to noise.
+shape_normaliser <- function(x, k = 3L) {
+  n <- nrow(x)
+  k <- min(k, n)
+  centre <- (colMeans(x[seq_len(k), , drop = FALSE]) +
+               colMeans(x[(n - k + 1L):n, , drop = FALSE])) / 2
+  sdev <- if (n > 1L) sqrt(colSums((x - rep(colMeans(x), each = n))^2) / (n - 1L)) else rep(0, ncol(x))
+  floor <- 0.1 * max(sdev)
+  if (!is.finite(floor) || floor <= 0) floor <- 1
+  list(centre = centre, scale = pmax(sdev, floor))
+}
+
+# (rep() rather than sweep(): called once per recording, sweep's checks cost
+# more than the arithmetic)
+normalise_recording <- function(x, nm) {
+  n <- nrow(x)
+  (x - rep(nm$centre, each = n)) / rep(nm$scale, each = n)
+}
+
+denormalise_recording <- function(x, nm) {
+  n <- nrow(x)
+  x * rep(nm$scale, each = n) + rep(nm$centre, each = n)
+}
+
+new_grasp_alignment <- function(...) {
+  structure(list(...), class = "grasp_alignment")
+}
+
+# DBA, then drop degenerate recordings and align again without them. After a
+# few drops the template is refined from where it was (at most
+# `refine_iter` iterations: the few dropped recordings barely moved it). When
+# most recordings stall at once, the template itself is the problem (a
+# compromise between good and broken recordings): only the worst is dropped
+# and DBA restarts from the linear mean of the rest, since DBA is local and a
+# template shaped by the broken ones can hold the others in a poor alignment.
+# Recordings still flagged after the last round are dropped without a further
+# refinement.
+dba_with_drops <- function(recs, L, engine, max_iter, tol, max_stall, window,
+                           max_rounds = 5L, refine_iter = 2L) {
+  kept <- seq_along(recs)
+  degenerate <- empty_degenerate()
+  dropped_warps <- matrix(numeric(0), 0L, L)
+  iterations <- 0L
+  changes <- numeric(0)
+  template <- mean_linear_template(recs, L)
+  budget <- max_iter
+  for (round in seq_len(max_rounds)) {
+    run <- dba_run(recs[kept], template, engine, budget, tol, window)
+    iterations <- iterations + run$iterations
+    changes <- c(changes, run$changes)
+    stall <- stall_lengths(run$warps)
+    bad <- stall >= 2L & stall > max_stall * L
+    if (!any(bad)) break
+    restart <- sum(bad) > length(kept) / 2
+    if (restart) bad <- stall == max(stall)
+    degenerate <- rbind(degenerate, data.frame(
+      id = names(recs)[kept[bad]], stall = stall[bad],
+      n_frames = vapply(recs[kept[bad]], nrow, integer(1)), stringsAsFactors = FALSE))
+    bw <- run$warps[bad, , drop = FALSE]
+    rownames(bw) <- names(recs)[kept[bad]]
+    dropped_warps <- rbind(dropped_warps, bw)
+    kept <- kept[!bad]
+    run <- subset_run(run, !bad)
+    if (length(kept) < 2L) break
+    if (restart) {
+      template <- mean_linear_template(recs[kept], L)
+      budget <- max_iter
+    } else {
+      template <- run$template
+      budget <- min(max_iter, refine_iter)
+    }
+  }
+  rownames(degenerate) <- NULL
+  list(run = run, kept = kept, degenerate = degenerate, dropped_warps = dropped_warps,
+       iterations = iterations, converged = run$converged, changes = changes)
+}
+
+empty_degenerate <- function() {
+  data.frame(id = character(0), stall = integer(0), n_frames = integer(0),
+             stringsAsFactors = FALSE)
+}
+
+subset_run <- function(run, keep) {
+  run$warped <- run$warped[keep, , , drop = FALSE]
+  run$warps <- run$warps[keep, , drop = FALSE]
+  run$distance <- run$distance[keep]
+  run
+}
+
+# One DBA run from a given template. Returns the final template and the
+# alignment of every recording to exactly that template.
+dba_run <- function(recs, template, engine, max_iter, tol, window) {
+  if (isTRUE(getOption("handmotion.align_force_failure"))) {
+    stop("alignment failure forced by option handmotion.align_force_failure")
+  }
+  batch <- if (engine == "fast") dtw_batch_fast else dtw_batch_reference
+  res <- batch(recs, template, window)
+  iterations <- 0L
+  converged <- FALSE
+  changes <- numeric(0)
+  while (iterations < max_iter) {
+    updated <- res$sum / res$count
+    if (!all(is.finite(updated))) stop("the DBA template became non-finite")
+    change <- sqrt(sum((updated - template)^2)) /
+      max(sqrt(sum(template^2)), .Machine$double.eps)
+    template <- updated
+    changes <- c(changes, change)
+    iterations <- iterations + 1L
+    res <- batch(recs, template, window)
+    if (change < tol) {
+      converged <- TRUE
+      break
+    }
+  }
+  res$warps <- pin_warp_ends(res$warps, vapply(recs, nrow, integer(1)))
+  res$template <- template
+  res$iterations <- iterations
+  res$converged <- converged
+  res$changes <- changes
+  res
+}
+
+dtw_batch_fast <- function(recs, template, window) {
+  .Call(hm_dtw_batch, unname(recs), template, window)
+}
+
+# Same result as dtw_batch_fast, one dtw::dtw() call per recording.
+dtw_batch_reference <- function(recs, template, window) {
+  L <- nrow(template)
+  p <- ncol(template)
+  N <- length(recs)
+  sum <- matrix(0, L, p)
+  count <- integer(L)
+  warped <- array(0, c(N, L, p))
+  warps <- matrix(0, N, L)
+  distance <- numeric(N)
+  for (k in seq_len(N)) {
+    x <- recs[[k]]
+    if (!all(is.finite(x))) stop(sprintf("recording %d contains non-finite values", k))
+    r <- dtw_pair_reference(x, template, window)
+    cnt <- tabulate(r$index2, L)
+    s <- rowsum(x[r$index1, , drop = FALSE], r$index2, reorder = TRUE)
+    sum <- sum + s
+    count <- count + cnt
+    warped[k, , ] <- s / cnt
+    warps[k, ] <- rowsum(r$index1, r$index2, reorder = TRUE)[, 1] / cnt
+    distance[k] <- r$distance
+  }
+  dimnames(sum) <- NULL
+  list(sum = sum, count = count, warped = warped, warps = warps, distance = distance)
+}
+
+# DTW's boundary condition matches original frame 1 to template frame 1 and
+# n_k to L, but the mean of the frames matched there can differ (e.g. 1.5 when
+# frames 1 and 2 both match template frame 1). Pinning the ends keeps every
+# warping function running from 1 to n_k (so it carries the recording's
+# length); monotonicity is preserved since all other matches lie inside.
+pin_warp_ends <- function(warps, n) {
+  warps[, 1L] <- 1
+  if (ncol(warps) > 1L) warps[, ncol(warps)] <- n
+  warps
+}
+
+# Longest run of template frames held on one original frame, per recording.
+stall_lengths <- function(warps) {
+  L <- ncol(warps)
+  if (L < 2L) return(rep(1L, nrow(warps)))
+  same <- warps[, -1L, drop = FALSE] == warps[, -L, drop = FALSE]
+  apply(same, 1L, function(s) {
+    r <- rle(s)
+    if (any(r$values)) max(r$lengths[r$values]) + 1L else 1L
+  })
+}
+
+mean_linear_template <- function(recs, L) {
+  acc <- matrix(0, L, ncol(recs[[1]]))
+  for (x in recs) acc <- acc + warp_linear(x, L)
+  acc / length(recs)
+}
+
+# The thesis' fallback (5.1.1, Figure 5.2): linear warping paths.
+align_linear_fallback <- function(recs, L, engine, reason) {
+  ids <- names(recs)
+  dofs <- colnames(recs[[1]])
+  N <- length(recs)
+  p <- ncol(recs[[1]])
+  n_frames <- vapply(recs, nrow, integer(1))
+  warps <- matrix(0, N, L, dimnames = list(ids, NULL))
+  warped <- array(0, c(N, L, p), dimnames = list(ids, NULL, dofs))
+  for (k in seq_len(N)) {
+    w <- linear_warp_function(n_frames[k], L)
+    warps[k, ] <- w
+    warped[k, , ] <- apply_warp(recs[[k]], w)
+  }
+  template <- matrix(colMeans(warped, dims = 1L), L, p, dimnames = list(NULL, dofs))
+  new_grasp_alignment(
+    warped = warped, warps = warps, template = template, target_length = L,
+    ids = ids, n_frames = n_frames, method = "linear", fallback_reason = reason,
+    degenerate = empty_degenerate(), dropped_warps = matrix(numeric(0), 0L, L),
+    iterations = 0L, converged = FALSE, changes = numeric(0), engine = engine,
+    distance = stats::setNames(rep(NA_real_, N), ids), max_stall = NA_real_,
+    features = NA_character_, feature_template = template)
+}
+
+linear_warp_function <- function(n, L) {
+  if (L == 1L) return(1)
+  seq(1, n, length.out = L)
+}
+
+# Evaluate recording x (n x p) at fractional original frames `warp` (1-based)
+# by linear interpolation between neighbouring frames; times outside [1, n]
+# are clamped. Vectorised over frames: two row gathers and a blend.
+apply_warp <- function(x, warp) {
+  if (!is.matrix(x)) x <- as.matrix(x)
+  n <- nrow(x)
+  if (n == 1L) return(x[rep.int(1L, length(warp)), , drop = FALSE])
+  w <- pmin(pmax(warp, 1), n)
+  i0 <- pmin(floor(w), n - 1)
+  f <- w - i0
+  out <- x[i0, , drop = FALSE] * (1 - f) + x[i0 + 1, , drop = FALSE] * f
+  rownames(out) <- NULL
+  out
+}
+
+# Resample recording x to L frames, equally spaced in original time.
+warp_linear <- function(x, L) {
+  if (!is.matrix(x)) x <- as.matrix(x)
+  apply_warp(x, linear_warp_function(nrow(x), L))
+}
+
+#' @export
+print.grasp_alignment <- function(x, ...) {
+  n <- length(x$ids)
+  p <- dim(x$warped)[3]
+  cat(sprintf("<grasp_alignment> %d recording%s x %d DoF%s warped to L = %d frames\n",
+              n, if (n == 1) "" else "s", p, if (p == 1) "" else "s", x$target_length))
+  if (n > 0) {
+    cat(sprintf("  original frames: %d-%d (mean %.1f)\n", min(x$n_frames),
+                max(x$n_frames), mean(x$n_frames)))
+  }
+  if (x$method == "dtw") {
+    cat(sprintf("  method: DTW barycenter averaging (%s engine, %s features), %d iteration%s, %s\n",
+                x$engine, x$features, x$iterations, if (x$iterations == 1) "" else "s",
+                if (x$converged) "converged" else "not converged"))
+  } else {
+    cat(sprintf("  method: LINEAR warping (fallback: %s)\n", x$fallback_reason))
+  }
+  nd <- nrow(x$degenerate)
+  if (nd > 0) {
+    shown <- utils::head(x$degenerate$id, 5)
+    cat(sprintf("  dropped %d degenerate warp%s (held still > %g L): %s%s\n", nd,
+                if (nd == 1) "" else "s", x$max_stall, paste(shown, collapse = ", "),
+                if (nd > 5) ", ..." else ""))
+  }
+  invisible(x)
+}
+
+# ---- input checks -----------------------------------------------------------
+
+as_align_matrix <- function(x, arg, call, finite = FALSE) {
+  if (is.data.frame(x)) x <- as.matrix(x)
+  if (is.numeric(x) && is.null(dim(x))) x <- matrix(x, ncol = 1L)
+  if (!is.matrix(x) || !is.numeric(x)) {
+    hm_abort("{.arg {arg}} must be a numeric matrix (frames x DoFs), not {.cls {class(x)}}.",
+             "bad_argument", argument = arg, call = call)
+  }
+  if (nrow(x) < 1L || ncol(x) < 1L) {
+    hm_abort("{.arg {arg}} must have at least one frame and one DoF.",
+             "bad_argument", argument = arg, call = call)
+  }
+  if (finite && !all(is.finite(x))) {
+    hm_abort("{.arg {arg}} contains non-finite values.",
+             "bad_argument", argument = arg, call = call)
+  }
+  storage.mode(x) <- "double"
+  x
+}
+
+align_check_recordings <- function(recordings, call) {
+  if (!is.list(recordings) || length(recordings) == 0L) {
+    hm_abort("{.arg recordings} must be a non-empty list of numeric matrices.",
+             "bad_argument", argument = "recordings", call = call)
+  }
+  ids <- names(recordings)
+  if (is.null(ids) || anyNA(ids) || any(!nzchar(ids)) || anyDuplicated(ids)) {
+    ids <- as.character(seq_along(recordings))
+  }
+  recs <- vector("list", length(recordings))
+  for (k in seq_along(recordings)) {
+    recs[[k]] <- as_align_matrix(recordings[[k]], sprintf("recordings[[\"%s\"]]", ids[k]), call)
+  }
+  p <- vapply(recs, ncol, integer(1))
+  if (any(p != p[1])) {
+    bad <- ids[p != p[1]]
+    hm_abort(c("All recordings must have the same number of DoFs ({p[1]}).",
+               x = "Different: {.val {bad}}."),
+             "bad_argument", argument = "recordings", call = call)
+  }
+  names(recs) <- ids
+  recs
+}
+
+align_check_target_length <- function(target_length, n_frames, call) {
+  if (is.null(target_length)) return(max(1L, as.integer(round(mean(n_frames)))))
+  if (!is.numeric(target_length) || length(target_length) != 1L || is.na(target_length) ||
+      target_length < 1 || target_length != round(target_length)) {
+    hm_abort("{.arg target_length} must be one positive whole number, not {.val {target_length}}.",
+             "bad_argument", argument = "target_length", call = call)
+  }
+  as.integer(target_length)
+}
+
+align_check_count <- function(x, arg, call) {
+  if (!is.numeric(x) || length(x) != 1L || is.na(x) || x < 0 || x != round(x)) {
+    hm_abort("{.arg {arg}} must be one non-negative whole number, not {.val {x}}.",
+             "bad_argument", argument = arg, call = call)
+  }
+  invisible(x)
+}
+
+align_check_window <- function(window, call) {
+  if (is.null(window)) return(NULL)
+  if (!is.numeric(window) || length(window) != 1L || is.na(window) || window < 0) {
+    hm_abort("{.arg window} must be {.code NULL} or one non-negative number, not {.val {window}}.",
+             "bad_argument", argument = "window", call = call)
+  }
+  as.double(window)
+}

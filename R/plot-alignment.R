@@ -1,0 +1,83 @@
+# Pictures of a time alignment, after Jeppsson (2017) Figures 5.1 and 5.2:
+# the frame counts before warping, and the warping paths (original frame as a
+# function of warped frame), where degenerate warps show as long flat stretches.
+
+#' Plot a time alignment
+#'
+#' Reproduces Jeppsson (2017) Figures 5.1/5.2: a histogram of the original
+#' frame counts and the warping paths, one line per recording (original frame
+#' against warped frame). Recordings dropped for a degenerate warp are drawn
+#' in red; under the linear fallback the paths are straight lines.
+#'
+#' @param object A `grasp_alignment` from [align_recordings()].
+#' @param type `"both"` (two panels), `"histogram"` or `"paths"`.
+#' @param ... Unused.
+#' @return A ggplot object.
+#' @examples
+#' curve <- function(u) cbind(a = 50 * plogis((u - 0.5) / 0.08), b = 30 * sin(pi * u))
+#' recs <- lapply(30:40, function(n) curve(seq(0, 1, length.out = n)^(n / 35)))
+#' autoplot(align_recordings(recs))
+#' @method autoplot grasp_alignment
+#' @export
+autoplot.grasp_alignment <- function(object, type = c("both", "histogram", "paths"), ...) {
+  type <- rlang::arg_match(type)
+  hist_df <- alignment_length_data(object)
+  path_df <- alignment_path_data(object)
+  colours <- c(kept = "grey35", degenerate = "red")
+  subtitle <- if (object$method == "dtw") {
+    sprintf("DTW barycenter averaging, L = %d; %d dropped as degenerate",
+            object$target_length, nrow(object$degenerate))
+  } else {
+    sprintf("linear warping (fallback: %s), L = %d", object$fallback_reason,
+            object$target_length)
+  }
+  hist_layer <- ggplot2::geom_histogram(
+    data = hist_df, mapping = ggplot2::aes(x = .data$n_frames, fill = .data$status),
+    binwidth = 1, colour = "white", inherit.aes = FALSE)
+  path_layer <- ggplot2::geom_line(
+    data = path_df,
+    mapping = ggplot2::aes(x = .data$warped_frame, y = .data$original_frame,
+                           group = .data$id, colour = .data$status),
+    alpha = 0.6, inherit.aes = FALSE)
+  p <- ggplot2::ggplot() +
+    ggplot2::scale_colour_manual(values = colours, drop = TRUE, name = NULL) +
+    ggplot2::scale_fill_manual(values = colours, drop = TRUE, name = NULL) +
+    ggplot2::labs(subtitle = subtitle) +
+    ggplot2::theme_minimal()
+  switch(type,
+    histogram = p + hist_layer +
+      ggplot2::labs(x = "frames before warping", y = "recordings"),
+    paths = p + path_layer +
+      ggplot2::labs(x = "warped frame", y = "original frame"),
+    both = p + hist_layer + path_layer +
+      ggplot2::facet_wrap(ggplot2::vars(.data$panel), scales = "free") +
+      ggplot2::labs(x = "left: frames before warping; right: warped frame",
+                    y = "left: recordings; right: original frame")
+  )
+}
+
+alignment_panel_levels <- c("frame counts before warping", "warping paths")
+
+alignment_length_data <- function(object) {
+  deg <- object$degenerate
+  data.frame(
+    n_frames = c(as.numeric(object$n_frames), as.numeric(deg$n_frames)),
+    status = factor(c(rep("kept", length(object$n_frames)), rep("degenerate", nrow(deg))),
+                    levels = c("kept", "degenerate")),
+    panel = factor(alignment_panel_levels[1], levels = alignment_panel_levels),
+    stringsAsFactors = FALSE)
+}
+
+alignment_path_data <- function(object) {
+  L <- object$target_length
+  w <- rbind(object$warps, object$dropped_warps)
+  ids <- c(object$ids, object$degenerate$id)
+  status <- c(rep("kept", nrow(object$warps)), rep("degenerate", nrow(object$dropped_warps)))
+  data.frame(
+    id = rep(ids, times = L),
+    warped_frame = rep(seq_len(L), each = nrow(w)),
+    original_frame = as.vector(w),
+    status = factor(rep(status, times = L), levels = c("kept", "degenerate")),
+    panel = factor(alignment_panel_levels[2], levels = alignment_panel_levels),
+    stringsAsFactors = FALSE)
+}
