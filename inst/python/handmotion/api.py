@@ -239,19 +239,30 @@ def rank_markers(reference, **kwargs):
     return r_to_py(call("rank_markers", _as_grasps(reference, "reference"), **kwargs))
 
 
-def select_markers(n, reference, **kwargs):
-    """The ``n`` most influential markers (nested: the 3-set lies inside the 6-set)."""
-    return list(r_to_py(call("select_markers", _check_count(n, "n"), _as_grasps(reference, "reference"),
-                             **kwargs)))
+def select_markers(x, n=6, **kwargs):
+    """The ``n`` most influential markers of a reference set (or of a :func:`rank_markers` ranking).
+
+    The sets are nested: the 3-marker set lies inside the 6-marker set.
+    """
+    ref = x if isinstance(x, RHandle) else _as_grasps(x, "x")
+    return [str(v) for v in call("select_markers", ref, n=_check_count(n, "n"), **kwargs)]
 
 
-def fit_handover(reference, markers, **kwargs):
-    """Fit the PCA + locally weighted regression reconstruction model; returns a :class:`HandoverModel`."""
-    return HandoverModel(call("fit_handover", _as_grasps(reference, "reference"), markers, **kwargs))
+def fit_handover(reference, markers=6, **kwargs):
+    """Fit the PCA + locally weighted regression reconstruction model; returns a :class:`HandoverModel`.
+
+    ``markers`` is a marker count (the top-ranked set) or a list of marker names.
+    """
+    return HandoverModel(call("fit_handover", _as_grasps(reference, "reference"), markers=markers, **kwargs))
 
 
 def reconstruct(model, query, **kwargs):
-    """Rebuild all joint angles from sparse markers (a :class:`Grasps` or a frames x 3m marker array)."""
-    q = query if isinstance(query, np.ndarray) and query.ndim == 2 and not isinstance(query, Grasps) \
-        else _as_grasps(query, "query")
+    """Rebuild all joint angles from sparse markers; returns a :class:`Grasps`.
+
+    ``query`` is a :class:`Grasps` (its markers are computed by forward kinematics)
+    or a numpy array frames x (3 x markers) of marker positions (NaN = occluded).
+    """
+    if not isinstance(model, HandoverModel):
+        raise BadInputError("model must come from fit_handover()")
+    q = query if isinstance(query, np.ndarray) and query.ndim == 2 else _as_grasps(query, "query")
     return r_to_py(call("reconstruct", model, q, **kwargs))
