@@ -1,0 +1,509 @@
+# The per-type generative model of Jeppsson (2017, sections 2.2 and 4.1):
+# over-long removal -> multivariate DTW to the type's mean length -> FPCA per
+# DoF on the warped curves -> FPCA on the warping functions -> a Gaussian
+# mixture per DoF on the FPC scores (and one on the warp scores).
+# Everything removed or fallen back on the way is recorded in the model, never
+# dropped silently: `removed` (recordings) and `fallbacks` (steps).
+
+#' Fit the generative model of one grasp type
+#'
+#' Fits the model of Jeppsson (2017, eq. 2.5) to the recordings of one grasp
+#' type:
+#' 1. recordings whose frame count is significantly longer than the rest are
+#'    removed by the documented rule of [find_overlong()] (`overlong`);
+#' 2. the rest are aligned by multivariate dynamic time warping
+#'    ([align_recordings()]) to the type's mean frame count `L`; recordings with
+#'    a degenerate warp (one frame repeated over a long stretch, Figure 5.1)
+#'    are dropped, and linear warping is used only if the alignment fails;
+#' 3. functional PCA with `ncomp` components per DoF on the warped curves
+#'    ([fpca_fit()]), with the variance each component explains;
+#' 4. functional PCA with `warp_ncomp` components on the warping functions,
+#'    which are kept in original frames so that one component captures the
+#'    variation in duration;
+#' 5. a `k`-component Gaussian mixture per DoF on the FPC scores, and one on
+#'    the warp scores ([gmm_fit()]); when EM fails the mixture is replaced by a
+#'    single Gaussian with the sample mean and covariance (Table 5.1).
+#'
+#' **Sign convention.** Each DoF component is oriented so that its largest
+#' projection onto the first three Legendre polynomials on the template time
+#' (constant, ramp, parabola) is positive; unlike a rule on the integral alone
+#' this stays stable for S-shaped components whose integral is near zero. The
+#' warp component is oriented so that a positive score means a longer grasp.
+#' Refits and subsets therefore give comparable models.
+#'
+#' A DoF that does not vary (all warped curves equal) cannot carry FPCs: its
+#' components are set to zero, its scores to zero, its mixture to a point mass
+#' at zero, and the DoF is listed in `fallbacks`. The same holds for warping
+#' functions that do not vary (all recordings of one length, linear warps).
+#'
+#' @param x A [grasps()] object holding the recordings of one grasp type (or
+#'   give `grasp` to select one type from a larger set).
+#' @param grasp Optional grasp type (Feix name or id 1-33) to select from `x`.
+#' @param ncomp Number of FPCs per DoF (the thesis uses 2).
+#' @param warp_ncomp Number of FPCs of the warping functions (the thesis uses 1).
+#' @param k Number of mixture components (the thesis uses 2).
+#' @param engine `"fast"` or `"reference"`, passed to the alignment, FPCA and
+#'   mixture steps; or a named list such as
+#'   `list(align = "fast", fpca = "reference", gmm = "reference")` to choose per
+#'   step.
+#' @param overlong The over-long rule, from [overlong_rule()].
+#' @param warping `"dtw"` (default) aligns by dynamic time warping, with the
+#'   linear fallback only when it fails; `"linear"` asks for linear warping of
+#'   every recording (the thesis' fallback, useful to separate the alignment
+#'   from the rest of the model).
+#' @param max_stall Largest share of template frames a warp may spend on one
+#'   original frame before the recording counts as degenerately warped (see
+#'   [align_recordings()]).
+#' @param seed Optional seed for the mixture fits (the global RNG is restored
+#'   afterwards). With `NULL` the current RNG stream is used.
+#' @param keep_data Keep the warped curves and warping functions in the model
+#'   (needed by [autoplot.grasp_model()] for the data layers). Set to `FALSE`
+#'   to keep models small.
+#' @return An object of class `grasp_model`: a list with `grasp`, `grasp_id`,
+#'   `dofs`, `rate`, `unit`, `target_length`, `argvals`, `n_input`, `n_used`,
+#'   `ids` (recordings used), `removed` (data frame: `id`, `n_frames`, `reason`,
+#'   `detail`), `warping` (method, fallback reason, engine, ...), `fpca` (one
+#'   [fpca_fit()] per DoF), `basis` (`mean` L x p and `components`
+#'   L x p x ncomp arrays), `var_explained` (p x ncomp proportions), `scores`
+#'   (n x p x ncomp array), `gmm` (one [gmm_fit()] per DoF), `warp` (the warp
+#'   FPCA, scores and mixture), `fallbacks` (data frame: `step`, `dof`,
+#'   `reason`), `settings`, `engine`, `timing` (seconds per step) and, with
+#'   `keep_data`, `data` (warped array n x L x p, warps n x L, frame counts).
+#' @seealso [fit_grasp_models()] for every type at once, [generate()] and
+#'   [project()] to use a model, [autoplot.grasp_model()] to look at it.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
+#' m <- fit_grasp_model(g, seed = 1)
+#' m
+#' summary(m)
+fit_grasp_model <- function(x, grasp = NULL, ncomp = 2, warp_ncomp = 1, k = 2,
+                            engine = c("fast", "reference"), overlong = overlong_rule(),
+                            warping = c("dtw", "linear"), max_stall = 0.25, seed = NULL,
+                            keep_data = TRUE) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  check_count(ncomp, "ncomp", call)
+  check_count(warp_ncomp, "warp_ncomp", call)
+  check_count(k, "k", call)
+  engines <- resolve_engines(engine, call)
+  warping <- rlang::arg_match(warping, error_call = call)
+  x <- select_one_type(x, grasp, call)
+  settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
+                   k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,
+                   keep_data = keep_data)
+  with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))
+}
+
+fit_grasp_model_impl <- function(x, settings, engines, call) {
+  t0 <- proc.time()[["elapsed"]]
+  type <- as.character(x$meta$grasp[1])
+  prep <- prepare_alignment(x, settings, engines, call)
+  aln <- prep$alignment
+  t_align <- proc.time()[["elapsed"]]
+
+  n <- length(prep$ids)
+  if (n < settings$ncomp + 1L) {
+    hm_abort(c("Grasp type {.val {type}} has {n} usable recording{?s}; {settings$ncomp + 1L} or more are needed for {settings$ncomp} FPC{?s}.",
+               i = if (nrow(prep$removed)) "Recordings in: {prep$n_input}; removed: {nrow(prep$removed)} ({.val {unique(prep$removed$reason)}})."),
+             "too_few_recordings", grasp = type, call = call)
+  }
+
+  L <- aln$target_length
+  dofs <- x$dofs
+  p <- length(dofs)
+  argvals <- seq(0, 1, length.out = L)
+  fallbacks <- prep$fallbacks
+
+  fpca <- vector("list", p)
+  names(fpca) <- dofs
+  for (j in seq_len(p)) {
+    Y <- matrix(aln$warped[, , j], n, L)
+    fpca[[j]] <- orient_components(fit_fpca_or_constant(Y, argvals, settings$ncomp, engines$fpca))
+    if (isTRUE(fpca[[j]]$constant)) {
+      fallbacks <- add_fallback(fallbacks, "fpca", dofs[j], "constant DoF: no variation to model, FPCs set to zero")
+    } else if (length(fpca[[j]]$notes)) {
+      fallbacks <- add_fallback(fallbacks, "fpca_rank", dofs[j], paste(fpca[[j]]$notes, collapse = "; "))
+    }
+  }
+  t_fpca <- proc.time()[["elapsed"]]
+
+  # Warping functions in original frames: one FPC carries the duration.
+  warp_fit <- fit_fpca_or_constant(aln$warps, argvals, settings$warp_ncomp, engines$fpca)
+  warp_fit <- orient_warp_fpca(warp_fit)
+  if (isTRUE(warp_fit$constant)) {
+    fallbacks <- add_fallback(fallbacks, "warp_fpca", NA_character_,
+                              "warping functions do not vary: warp FPCs set to zero")
+  }
+
+  gmm <- vector("list", p)
+  names(gmm) <- dofs
+  for (j in seq_len(p)) {
+    gmm[[j]] <- fit_mixture(fpca[[j]], settings$k, engines$gmm)
+    if (isTRUE(gmm[[j]]$fallback) && !isTRUE(fpca[[j]]$constant)) {
+      fallbacks <- add_fallback(fallbacks, "mixture", dofs[j],
+                                paste("single Gaussian:", gmm_reason(gmm[[j]])))
+    }
+  }
+  warp_gmm <- fit_mixture(warp_fit, settings$k, engines$gmm)
+  if (isTRUE(warp_gmm$fallback) && !isTRUE(warp_fit$constant)) {
+    fallbacks <- add_fallback(fallbacks, "warp_mixture", NA_character_,
+                              paste("single Gaussian:", gmm_reason(warp_gmm)))
+  }
+  t_gmm <- proc.time()[["elapsed"]]
+
+  basis <- model_basis(fpca, dofs, settings$ncomp)
+  scores <- array(0, c(n, p, settings$ncomp), dimnames = list(prep$ids, dofs, paste0("FPC", seq_len(settings$ncomp))))
+  for (j in seq_len(p)) scores[, j, ] <- fpca[[j]]$scores
+  var_explained <- t(vapply(fpca, function(f) as.numeric(f$var_explained), numeric(settings$ncomp)))
+  if (settings$ncomp == 1L) var_explained <- matrix(var_explained, ncol = 1)
+  dimnames(var_explained) <- list(dofs, paste0("FPC", seq_len(settings$ncomp)))
+
+  model <- list(
+    grasp = type,
+    grasp_id = match(type, feix_levels()),
+    dofs = dofs, rate = x$rate, unit = x$unit,
+    target_length = L, argvals = argvals,
+    n_input = prep$n_input, n_used = n, ids = prep$ids,
+    removed = prep$removed,
+    warping = list(method = aln$method, fallback_reason = value_or(aln$fallback_reason, NA_character_),
+                   iterations = value_or(aln$iterations, NA_integer_),
+                   converged = value_or(aln$converged, NA), engine = engines$align),
+    fpca = fpca, basis = basis, var_explained = var_explained, scores = scores, gmm = gmm,
+    warp = list(fpca = warp_fit, mean = as.numeric(warp_fit$mean),
+                components = matrix(warp_fit$components, L), scores = matrix(warp_fit$scores, n),
+                gmm = warp_gmm, constant = isTRUE(warp_fit$constant)),
+    fallbacks = fallbacks,
+    settings = settings, engine = engines,
+    timing = c(align = t_align - t0, fpca = t_fpca - t_align, gmm = t_gmm - t_fpca,
+               total = t_gmm - t0)
+  )
+  model$sampler <- build_sampler(model)
+  if (isTRUE(settings$keep_data)) {
+    model$data <- list(warped = aln$warped, warps = aln$warps,
+                       n_frames = stats::setNames(x$meta$n_frames[match(prep$ids, x$meta$id)], prep$ids))
+  }
+  structure(model, class = "grasp_model")
+}
+
+# Steps 1-2 (also used by the frame-PCA alternative): over-long removal, then
+# alignment to the mean frame count, with degenerate warps dropped and a
+# linear fallback if the aligner itself fails.
+prepare_alignment <- function(x, settings, engines, call) {
+  meta <- x$meta
+  recs <- x$recordings
+  type <- as.character(meta$grasp[1])
+  removed <- empty_removed()
+  fallbacks <- empty_fallbacks()
+  long <- find_overlong(meta$n_frames, rule = settings$overlong)
+  if (any(long)) {
+    removed <- rbind(removed, data.frame(id = meta$id[long], n_frames = meta$n_frames[long],
+                                         reason = "overlong", detail = NA_real_, stringsAsFactors = FALSE))
+  }
+  keep <- !long
+  if (sum(keep) < 2L) {
+    hm_abort(c("Grasp type {.val {type}} has {sum(keep)} recording{?s} left after over-long removal; alignment needs 2 or more.",
+               i = "Recordings in: {length(recs)}."),
+             "too_few_recordings", grasp = type, call = call)
+  }
+  recs <- recs[keep]
+  L <- max(2L, as.integer(round(mean(meta$n_frames[keep]))))
+  if (identical(settings$warping, "linear")) {
+    aln <- linear_alignment(recs, L, "requested")
+  } else {
+    aln <- tryCatch(
+      align_recordings(recs, target_length = L, engine = engines$align, max_stall = settings$max_stall),
+      error = function(e) e
+    )
+    if (inherits(aln, "error")) {
+      reason <- paste("alignment failed:", cli::ansi_strip(conditionMessage(aln)))
+      aln <- linear_alignment(recs, L, reason)
+    }
+  }
+  if (identical(aln$method, "linear") && !identical(settings$warping, "linear")) {
+    fallbacks <- add_fallback(fallbacks, "warping", NA_character_,
+                              paste("linear warping:", value_or(aln$fallback_reason, "unspecified")))
+  }
+  deg <- aln$degenerate
+  if (!is.null(deg) && nrow(deg) > 0L) {
+    removed <- rbind(removed, data.frame(id = as.character(deg$id),
+                                         n_frames = meta$n_frames[match(deg$id, meta$id)],
+                                         reason = "degenerate warp", detail = as.numeric(deg$stall),
+                                         stringsAsFactors = FALSE))
+  }
+  ids <- dimnames(aln$warped)[[1]]
+  if (is.null(ids)) ids <- setdiff(names(recs), removed$id)
+  list(alignment = aln, ids = ids, removed = removed, fallbacks = fallbacks,
+       n_input = length(x$recordings))
+}
+
+# Linear warps for every recording: the thesis' fallback when DTW failed.
+linear_alignment <- function(recs, L, reason) {
+  ids <- names(recs)
+  p <- ncol(recs[[1]])
+  warps <- matrix(0, length(recs), L, dimnames = list(ids, NULL))
+  warped <- array(0, c(length(recs), L, p), dimnames = list(ids, NULL, colnames(recs[[1]])))
+  for (i in seq_along(recs)) {
+    warps[i, ] <- seq(1, nrow(recs[[i]]), length.out = L)
+    warped[i, , ] <- interpolate_rows(recs[[i]], warps[i, ])
+  }
+  structure(list(warped = warped, warps = warps, template = colMeans(warped), target_length = L,
+                 ids = ids, n_frames = vapply(recs, nrow, integer(1)), method = "linear",
+                 fallback_reason = reason,
+                 degenerate = data.frame(id = character(), stall = numeric()),
+                 iterations = 0L, converged = FALSE, engine = "linear"),
+            class = "grasp_alignment")
+}
+
+# Evaluate a frames x DoF matrix at fractional frame times by linear
+# interpolation between neighbouring frames.
+interpolate_rows <- function(x, times) {
+  n <- nrow(x)
+  times <- pmin(pmax(times, 1), n)
+  i <- pmin(floor(times), n - 1L)
+  if (n == 1L) return(x[rep(1L, length(times)), , drop = FALSE])
+  f <- times - i
+  x[i, , drop = FALSE] * (1 - f) + x[i + 1L, , drop = FALSE] * f
+}
+
+# FPCA of one set of curves, or a zero-component stand-in when the curves do
+# not vary (a constant DoF or identical warps), so later steps never divide
+# by a zero variance.
+fit_fpca_or_constant <- function(Y, argvals, ncomp, engine) {
+  v <- sum(apply(Y, 2, stats::var))
+  scale <- max(1, mean(Y^2))
+  if (!is.finite(v) || v <= 1e-12 * scale) {
+    L <- ncol(Y)
+    comps <- matrix(0, L, ncomp)
+    return(structure(list(mean = colMeans(Y), components = comps,
+                          scores = matrix(0, nrow(Y), ncomp), eigenvalues = rep(0, ncomp),
+                          var_explained = rep(NA_real_, ncomp), argvals = argvals,
+                          weights = trapezoid_weights(argvals), engine = engine,
+                          notes = "constant", constant = TRUE),
+                     class = "fpca_fit"))
+  }
+  fit <- fpca_fit(Y, argvals = argvals, ncomp = ncomp, engine = engine)
+  fit$constant <- FALSE
+  fit
+}
+
+# Sign convention for the DoF components. fpca_fit() makes each component's
+# integral positive, which is arbitrary for a component whose integral is
+# near zero (an S-shaped second component): refits then flip it at random.
+# Here each component is flipped so that its largest projection onto the
+# first three Legendre polynomials on [0, 1] (constant, ramp, parabola) is
+# positive: one of the three is always clearly non-zero, so the sign is
+# stable across refits and subsets. Scores are flipped with it.
+orient_components <- function(fit) {
+  if (isTRUE(fit$constant)) return(fit)
+  s <- (fit$argvals - min(fit$argvals)) / diff(range(fit$argvals))
+  legendre <- cbind(1, sqrt(3) * (2 * s - 1), sqrt(5) * (6 * s^2 - 6 * s + 1))
+  comps <- as.matrix(fit$components)
+  proj <- crossprod(comps * fit$weights, legendre)        # ncomp x 3
+  for (c in seq_len(ncol(comps))) {
+    pick <- which.max(abs(proj[c, ]))
+    if (proj[c, pick] < 0) {
+      fit$components[, c] <- -fit$components[, c]
+      fit$scores[, c] <- -fit$scores[, c]
+    }
+  }
+  fit
+}
+
+# Sign convention for the warp FPC: a positive score means a longer grasp
+# (the component is positive at the last template frame).
+orient_warp_fpca <- function(fit) {
+  if (isTRUE(fit$constant)) return(fit)
+  comps <- as.matrix(fit$components)
+  L <- nrow(comps)
+  for (c in seq_len(ncol(comps))) {
+    if (comps[L, c] < 0) {
+      fit$components[, c] <- -fit$components[, c]
+      fit$scores[, c] <- -fit$scores[, c]
+    }
+  }
+  fit
+}
+
+# A mixture on the FPC scores, or a point mass at zero for a constant DoF.
+fit_mixture <- function(fpca, k, engine) {
+  S <- as.matrix(fpca$scores)
+  if (isTRUE(fpca$constant)) return(point_mass_gmm(ncol(S), engine))
+  fit <- gmm_fit(S, k = k, engine = engine)
+  fit
+}
+
+point_mass_gmm <- function(d, engine) {
+  structure(list(weights = 1, means = matrix(0, 1, d), covs = array(0, c(d, d, 1)),
+                 loglik = NA_real_, iterations = 0L, converged = FALSE, fallback = TRUE,
+                 reason = "constant: point mass at zero", engine = engine, point_mass = TRUE),
+            class = "gmm_fit")
+}
+
+gmm_reason <- function(fit) {
+  r <- fit$reason
+  if (is.null(r) || length(r) == 0L || is.na(r[1]) || !nzchar(r[1])) "EM failed" else as.character(r[1])
+}
+
+# Mean curves (L x p) and components (L x p x ncomp) of every DoF, laid out
+# for vectorised generation and projection.
+model_basis <- function(fpca, dofs, ncomp) {
+  L <- length(fpca[[1]]$mean)
+  p <- length(dofs)
+  mean <- matrix(0, L, p, dimnames = list(NULL, dofs))
+  comps <- array(0, c(L, p, ncomp), dimnames = list(NULL, dofs, paste0("FPC", seq_len(ncomp))))
+  for (j in seq_len(p)) {
+    mean[, j] <- fpca[[j]]$mean
+    comps[, j, ] <- fpca[[j]]$components
+  }
+  list(mean = mean, components = comps)
+}
+
+empty_removed <- function() {
+  data.frame(id = character(), n_frames = integer(), reason = character(), detail = numeric(),
+             stringsAsFactors = FALSE)
+}
+
+empty_fallbacks <- function() {
+  data.frame(step = character(), dof = character(), reason = character(), stringsAsFactors = FALSE)
+}
+
+add_fallback <- function(fallbacks, step, dof, reason) {
+  rbind(fallbacks, data.frame(step = step, dof = dof, reason = reason, stringsAsFactors = FALSE))
+}
+
+# engine: one of "fast"/"reference" for every step, or a named list per step.
+resolve_engines <- function(engine, call) {
+  steps <- c("align", "fpca", "gmm")
+  choices <- c("fast", "reference")
+  if (is.list(engine)) {
+    bad <- setdiff(names(engine), steps)
+    if (is.null(names(engine)) || length(bad)) {
+      hm_abort(c("A list {.arg engine} must be named by step ({.val {steps}}).",
+                 x = if (length(bad)) "Unknown step{?s}: {.val {bad}}."),
+               "bad_input", argument = "engine", call = call)
+    }
+    out <- stats::setNames(as.list(rep("fast", 3)), steps)
+    for (s in names(engine)) out[[s]] <- check_engine(engine[[s]], call)
+    return(out)
+  }
+  if (is.character(engine) && identical(engine, choices)) engine <- "fast"
+  e <- check_engine(engine, call)
+  stats::setNames(as.list(rep(e, 3)), steps)
+}
+
+check_engine <- function(e, call) {
+  if (!is.character(e) || length(e) != 1L || !e %in% c("fast", "reference")) {
+    hm_abort("{.arg engine} must be {.val fast} or {.val reference}, not {.val {format(e)}}.",
+             "bad_input", argument = "engine", call = call)
+  }
+  e
+}
+
+check_count <- function(x, arg, call) {
+  if (!is.numeric(x) || length(x) != 1L || !is.finite(x) || x < 1 || x != round(x)) {
+    hm_abort("{.arg {arg}} must be one positive whole number, not {.val {format(x)}}.",
+             "bad_input", argument = arg, call = call)
+  }
+  invisible(x)
+}
+
+# Select the recordings of one type; refuse a set that mixes types.
+select_one_type <- function(x, grasp, call) {
+  if (!is.null(grasp)) {
+    g <- as_feix_grasp(grasp, call = call)
+    if (length(g) != 1L || is.na(g)) {
+      hm_abort("{.arg grasp} must name one grasp type.", "bad_input", argument = "grasp", call = call)
+    }
+    x <- x[!is.na(x$meta$grasp) & x$meta$grasp == g]
+    if (length(x) == 0L) {
+      hm_abort("No recordings of grasp type {.val {as.character(g)}} in {.arg x}.",
+               "too_few_recordings", argument = "grasp", call = call)
+    }
+  }
+  types <- unique(as.character(x$meta$grasp))
+  if (length(types) > 1L) {
+    hm_abort(c("{.arg x} holds {length(types)} grasp types; {.fn fit_grasp_model} fits one.",
+               i = "Types: {.val {types}}.",
+               i = "Give {.arg grasp}, or use {.fn fit_grasp_models} for every type."),
+             "multiple_grasps", argument = "x", call = call)
+  }
+  x
+}
+
+# `a`, or `b` when `a` is NULL (a missing optional field of an alignment).
+value_or <- function(a, b) if (is.null(a)) b else a
+
+#' @export
+print.grasp_model <- function(x, ...) {
+  cat(sprintf("<grasp_model> %s%s: %d DoFs x %d FPCs + %d warp FPC%s, %d-component mixtures\n",
+              x$grasp, if (!is.na(x$grasp_id)) sprintf(" (type %d)", x$grasp_id) else "",
+              length(x$dofs), x$settings$ncomp, x$settings$warp_ncomp,
+              if (x$settings$warp_ncomp == 1) "" else "s", x$settings$k))
+  rm <- table(factor(x$removed$reason, levels = c("overlong", "degenerate warp")))
+  cat(sprintf("  recordings: %d in, %d used (%d over-long, %d degenerate warps removed)\n",
+              x$n_input, x$n_used, rm[["overlong"]], rm[["degenerate warp"]]))
+  cat(sprintf("  target length: %d frames at %g Hz; warping: %s\n", x$target_length, x$rate,
+              x$warping$method))
+  ve <- 100 * rowSums(x$var_explained)
+  if (any(is.finite(ve))) {
+    cat(sprintf("  variance explained by %d FPCs per DoF: min %.1f%%, median %.1f%%, max %.1f%%\n",
+                x$settings$ncomp, min(ve, na.rm = TRUE), stats::median(ve, na.rm = TRUE),
+                max(ve, na.rm = TRUE)))
+  }
+  if (nrow(x$fallbacks) == 0L) {
+    cat("  fallbacks: none\n")
+  } else {
+    cat("  fallbacks:\n")
+    fb <- x$fallbacks
+    cat(paste0("    ", fb$step, ifelse(is.na(fb$dof), "", paste0(" [", fb$dof, "]")), ": ", fb$reason,
+               collapse = "\n"), "\n", sep = "")
+  }
+  invisible(x)
+}
+
+#' Summarise a grasp model
+#'
+#' @param object A `grasp_model` from [fit_grasp_model()].
+#' @param ... Unused.
+#' @return A data frame with one row per DoF: `dof`, the percentage of
+#'   variance explained by each FPC (`FPC1`, `FPC2`, ...) and in total
+#'   (`total`), the mixture used (`"mixture"`, `"single Gaussian"` or
+#'   `"point mass"`) and the fallback reason. The recordings removed and the
+#'   fallbacks are kept as attributes `removed` and `fallbacks` and printed.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
+#' summary(fit_grasp_model(g, seed = 1))
+summary.grasp_model <- function(object, ...) {
+  ve <- 100 * object$var_explained
+  mix <- vapply(object$gmm, function(g) {
+    if (isTRUE(g$point_mass)) "point mass" else if (isTRUE(g$fallback)) "single Gaussian" else "mixture"
+  }, character(1))
+  reason <- vapply(object$gmm, function(g) if (isTRUE(g$fallback)) gmm_reason(g) else NA_character_,
+                   character(1))
+  out <- data.frame(dof = object$dofs, as.data.frame(ve, row.names = NULL), total = rowSums(ve),
+                    mixture = unname(mix), reason = unname(reason), stringsAsFactors = FALSE)
+  rownames(out) <- NULL
+  structure(out, class = c("summary_grasp_model", "data.frame"), grasp = object$grasp,
+            removed = object$removed, fallbacks = object$fallbacks,
+            n_used = object$n_used, n_input = object$n_input, target_length = object$target_length,
+            warping = object$warping$method)
+}
+
+#' @export
+print.summary_grasp_model <- function(x, ...) {
+  cat(sprintf("Grasp model %s: %d of %d recordings used, %d frames, %s warping\n",
+              attr(x, "grasp"), attr(x, "n_used"), attr(x, "n_input"), attr(x, "target_length"),
+              attr(x, "warping")))
+  print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
+  rm <- attr(x, "removed")
+  if (nrow(rm)) {
+    cat("Removed recordings:\n")
+    print(rm, row.names = FALSE)
+  }
+  fb <- attr(x, "fallbacks")
+  cat(if (nrow(fb)) "Fallbacks:\n" else "Fallbacks: none\n")
+  if (nrow(fb)) print(fb, row.names = FALSE)
+  invisible(x)
+}

@@ -1,0 +1,196 @@
+# A set of per-type models, fitted through the future framework. The user
+# picks the plan (future::plan()); the package never sets one. Each type gets
+# its own parallel-safe RNG stream from `seed` (future.seed), so the models are
+# identical whatever the plan or the number of workers.
+
+#' Fit the generative model of every grasp type
+#'
+#' Splits `x` by grasp type and calls [fit_grasp_model()] on each type through
+#' [future.apply::future_lapply()], so the types are fitted in parallel under
+#' whatever [future::plan()] the user has set (sequentially by default).
+#' Progress is reported through `progressr` (wrap the call in
+#' [progressr::with_progress()] or set `progressr::handlers(global = TRUE)` to
+#' see it). A type whose fit fails with a handmotion error (for example too few
+#' usable recordings) is recorded in `attr(, "failed")` instead of stopping
+#' the others.
+#'
+#' @param x A [grasps()] object with labelled recordings.
+#' @param grasps The grasp types to fit (names or ids 1-33); every type
+#'   present in `x` by default.
+#' @param ... Passed to [fit_grasp_model()] (`ncomp`, `warp_ncomp`, `k`,
+#'   `engine`, `overlong`, `max_stall`, `keep_data`).
+#' @param seed Seed of the per-type RNG streams; the same seed gives identical
+#'   models under any plan. `NULL` draws the streams from the current RNG.
+#' @return An object of class `grasp_models`: a named list of `grasp_model`
+#'   objects (names = grasp type), with attributes `failed` (data frame:
+#'   `grasp`, `message`, `class`) and `seed`.
+#' @seealso [summary.grasp_models()] (Tables 5.1 and 5.2), [generate()],
+#'   [project()], [classify()].
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 4, grasps = 1:2, objects = 2, trials = 2, seed = 1)
+#' ms <- fit_grasp_models(g, seed = 1)
+#' ms
+#' summary(ms)
+fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  present <- levels(droplevels(x$meta$grasp))
+  if (is.null(grasps)) {
+    types <- present
+  } else {
+    types <- as.character(as_feix_grasp(grasps, call = call))
+    absent <- setdiff(types, present)
+    if (length(absent)) {
+      hm_abort("No recordings of grasp type{?s} {.val {absent}} in {.arg x}.",
+               "too_few_recordings", argument = "grasps", call = call)
+    }
+  }
+  if (length(types) == 0L) {
+    hm_abort("{.arg x} has no labelled recordings: every grasp is {.val NA}.",
+             "bad_input", argument = "x", call = call)
+  }
+  # Ship each worker only its own type's recordings.
+  parts <- lapply(types, function(g) x[!is.na(x$meta$grasp) & x$meta$grasp == g])
+  names(parts) <- types
+  args <- list(...)
+  future_seed <- if (is.null(seed)) TRUE else as.integer(seed)
+  p <- progressr::progressor(along = types)
+  fits <- future.apply::future_lapply(parts, fit_one_type, args = args, progress = p,
+                                      future.seed = future_seed)
+  failed <- vapply(fits, inherits, logical(1), what = "error")
+  fail_df <- data.frame(
+    grasp = types[failed],
+    message = vapply(fits[failed], function(e) {
+      gsub("\\s*\n\\s*", " ", cli::ansi_strip(conditionMessage(e)))
+    }, character(1)),
+    class = vapply(fits[failed], function(e) class(e)[1], character(1)),
+    stringsAsFactors = FALSE
+  )
+  rownames(fail_df) <- NULL
+  new_grasp_models(fits[!failed], failed = fail_df, seed = seed)
+}
+
+# One type's fit for a worker. A top-level function, so the closure shipped to
+# workers does not drag the caller's frame (the whole data set) along.
+fit_one_type <- function(part, args, progress) {
+  res <- tryCatch(do.call(fit_grasp_model, c(list(part), args)),
+                  handmotion_error = function(e) e)
+  progress(as.character(part$meta$grasp[1]))
+  res
+}
+
+new_grasp_models <- function(models, failed = NULL, seed = NULL) {
+  if (is.null(failed)) {
+    failed <- data.frame(grasp = character(), message = character(), class = character(),
+                         stringsAsFactors = FALSE)
+  }
+  structure(models, class = "grasp_models", failed = failed, seed = seed)
+}
+
+#' @export
+`[.grasp_models` <- function(x, i, ...) {
+  if (missing(i)) return(x)
+  keep <- if (is.character(i) || is.factor(i)) {
+    as.character(as_feix_grasp(i))
+  } else if (is.logical(i)) {
+    names(x)[i]
+  } else {
+    names(x)[i]
+  }
+  absent <- setdiff(keep, names(x))
+  if (length(absent)) {
+    hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input", argument = "i")
+  }
+  new_grasp_models(unclass(x)[keep], failed = attr(x, "failed"), seed = attr(x, "seed"))
+}
+
+# Models chosen by grasp name or id, for generate().
+select_models <- function(x, grasp, call) {
+  if (is.null(grasp)) return(unclass(x))
+  keep <- as.character(as_feix_grasp(grasp, call = call))
+  absent <- setdiff(keep, names(x))
+  if (length(absent)) {
+    hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input",
+             argument = "grasp", call = call)
+  }
+  unclass(x)[keep]
+}
+
+#' @export
+print.grasp_models <- function(x, ...) {
+  s <- summary(x)
+  cat(sprintf("<grasp_models> %d grasp type model%s\n", length(x), if (length(x) == 1) "" else "s"))
+  if (length(x)) {
+    cat(sprintf("  recordings used: %d of %d; target lengths %d to %d frames\n",
+                sum(s$n_used), sum(s$n_input), min(s$target_length), max(s$target_length)))
+    cat(sprintf("  linear warping: %d type%s; EM fallbacks: %d DoF%s in %d type%s\n",
+                sum(s$warping == "linear"), if (sum(s$warping == "linear") == 1) "" else "s",
+                sum(s$n_em_fallback), if (sum(s$n_em_fallback) == 1) "" else "s",
+                sum(s$n_em_fallback > 0), if (sum(s$n_em_fallback > 0) == 1) "" else "s"))
+    cat(sprintf("  variance explained by the FPCs per DoF: min %.1f%%, mean %.1f%%\n",
+                min(s$min_var, na.rm = TRUE), mean(s$mean_var, na.rm = TRUE)))
+  }
+  f <- attr(x, "failed")
+  if (!is.null(f) && nrow(f)) {
+    cat(sprintf("  failed: %s\n", paste0(f$grasp, " (", f$message, ")", collapse = "; ")))
+  }
+  invisible(x)
+}
+
+#' Summarise a set of grasp models
+#'
+#' One row per grasp type, the material of the thesis' Tables 5.1 (warping
+#' and EM fallbacks) and 5.2 (variance explained).
+#'
+#' @param object A `grasp_models` set from [fit_grasp_models()].
+#' @param ... Unused.
+#' @return A data frame with columns `grasp_id`, `grasp`, `n_input`,
+#'   `n_used`, `n_overlong` (removed as over-long), `n_degenerate` (removed
+#'   for a degenerate warp), `target_length`, `warping` (`"dtw"` or
+#'   `"linear"`), `em_fallback` (the DoFs whose mixture fell back to a single
+#'   Gaussian, e.g. `"MCP3, DIP4"`, empty when none), `n_em_fallback`,
+#'   `constant_dofs`, and `min_var`, `median_var`, `mean_var`, `max_var`: the
+#'   percentage of variance explained by the FPCs of each DoF, summarised over
+#'   DoFs. Types that failed to fit are listed in `attr(, "failed")`.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 4, grasps = 1:2, objects = 2, trials = 2, seed = 1)
+#' summary(fit_grasp_models(g, seed = 1))
+summary.grasp_models <- function(object, ...) {
+  rows <- lapply(unclass(object), function(m) {
+    ve <- 100 * rowSums(m$var_explained)
+    fb <- m$fallbacks
+    em <- fb$dof[fb$step == "mixture"]
+    const <- fb$dof[fb$step == "fpca"]
+    stat <- function(f) if (all(is.na(ve))) NA_real_ else f(ve, na.rm = TRUE)
+    data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n_input = m$n_input, n_used = m$n_used,
+               n_overlong = sum(m$removed$reason == "overlong"),
+               n_degenerate = sum(m$removed$reason == "degenerate warp"),
+               target_length = m$target_length, warping = m$warping$method,
+               em_fallback = paste(em, collapse = ", "), n_em_fallback = length(em),
+               constant_dofs = paste(const, collapse = ", "),
+               min_var = stat(min), median_var = stat(stats::median), mean_var = stat(mean),
+               max_var = stat(max), stringsAsFactors = FALSE)
+  })
+  out <- if (length(rows)) do.call(rbind, rows) else
+    data.frame(grasp_id = integer(), grasp = character(), n_input = integer(), n_used = integer(),
+               n_overlong = integer(), n_degenerate = integer(), target_length = integer(),
+               warping = character(), em_fallback = character(), n_em_fallback = integer(),
+               constant_dofs = character(), min_var = numeric(), median_var = numeric(),
+               mean_var = numeric(), max_var = numeric(), stringsAsFactors = FALSE)
+  rownames(out) <- NULL
+  structure(out, class = c("summary_grasp_models", "data.frame"), failed = attr(object, "failed"))
+}
+
+#' @export
+print.summary_grasp_models <- function(x, ...) {
+  cat(sprintf("Grasp models: %d type%s\n", nrow(x), if (nrow(x) == 1) "" else "s"))
+  print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
+  f <- attr(x, "failed")
+  if (!is.null(f) && nrow(f)) {
+    cat("Failed types:\n")
+    print(f, row.names = FALSE)
+  }
+  invisible(x)
+}

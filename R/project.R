@@ -1,0 +1,159 @@
+# Projection of recordings onto a fitted model (Jeppsson 2017, section 4.2):
+# warp each recording to the model's time by the model's MEAN warping
+# function, rescaled to the recording's own length, then project every DoF on
+# its FPCs. The residual norms give the L2 distance of eq. 4.4 over the whole
+# hand, which the FPCA classifier ranks. All recordings are handled at once:
+# they are stacked into one matrix and interpolated by index arithmetic.
+
+#' Project recordings onto a grasp model
+#'
+#' Each recording of `x` (any length) is warped to the model's template time
+#' by the model's mean warping function \eqn{\bar w}, normalised to \[0, 1\]
+#' and mapped onto the recording's frames `1..n`, and evaluated there by
+#' linear interpolation. Each DoF is then projected onto the model's FPCs
+#' ([fpca_project()]); the residual norm per DoF is the L2 norm of the warped
+#' curve minus its projection ([fpca_residual_norm()]), and `distance` is
+#' the square root of the sum over DoFs of the squared residual norms
+#' (eq. 4.4 over the whole hand).
+#'
+#' @param object A `grasp_model` ([fit_grasp_model()]) or a `grasp_models`
+#'   set ([fit_grasp_models()]).
+#' @param x A [grasps()] object with the model's DoFs.
+#' @param details Keep the warped and fitted curves (`TRUE` by default for one
+#'   model, `FALSE` for a model set, where they would take
+#'   recordings x models x frames x DoFs of memory).
+#' @param ... Unused.
+#' @return For one model, an object of class `grasp_projection`: a list with
+#'   `scores` (array recordings x DoF x FPC), `residual` (recordings x DoF
+#'   residual norms), `distance` (one per recording), `ids`, `grasp` (the
+#'   model's type), `target_length` and, with `details`, `warped` and `fitted`
+#'   (lists of L x DoF matrices). For a model set, a named list of such
+#'   projections, one per model.
+#' @seealso [classify()] ranks the distances of every model.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
+#' m <- fit_grasp_model(g, seed = 1)
+#' pr <- project(m, g[1:3])
+#' pr$distance
+project <- function(object, x, ...) UseMethod("project")
+
+#' @rdname project
+#' @export
+project.grasp_model <- function(object, x, details = TRUE, ...) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  check_projection_dofs(object, x, call)
+  project_stacked(object, stack_recordings(x, object$dofs), details = details)
+}
+
+#' @rdname project
+#' @export
+project.grasp_models <- function(object, x, details = FALSE, ...) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  if (length(object) == 0L) {
+    hm_abort("{.arg object} holds no grasp models.", "bad_input", argument = "object", call = call)
+  }
+  check_projection_dofs(object[[1]], x, call)
+  st <- stack_recordings(x, object[[1]]$dofs)
+  lapply(unclass(object), function(m) project_stacked(m, st, details = details))
+}
+
+#' @rdname project
+#' @param newdata A [grasps()] object (for `predict()`).
+#' @export
+predict.grasp_model <- function(object, newdata, ...) {
+  project.grasp_model(object, newdata, ...)
+}
+
+check_projection_dofs <- function(model, x, call) {
+  missing <- setdiff(model$dofs, x$dofs)
+  if (length(missing)) {
+    hm_abort(c("{.arg x} lacks the model's DoF{?s} {.val {missing}}.",
+               i = "The model of {.val {model$grasp}} was fitted on {.val {model$dofs}}."),
+             "bad_input", argument = "x", call = call)
+  }
+}
+
+# All recordings stacked into one (sum n_k) x p matrix with their offsets, so
+# interpolation for every recording is one vectorised step.
+stack_recordings <- function(x, dofs) {
+  recs <- x$recordings
+  n_frames <- x$meta$n_frames
+  cols <- match(dofs, x$dofs)
+  mat <- do.call(rbind, recs)
+  if (!identical(cols, seq_along(x$dofs))) mat <- mat[, cols, drop = FALSE]
+  list(values = mat, n_frames = n_frames, starts = cumsum(n_frames) - n_frames, ids = x$meta$id)
+}
+
+# Warp every stacked recording onto the template grid with the model's mean
+# warp: an (n * L) x p matrix, recording-major.
+warp_stacked <- function(model, st) {
+  L <- model$target_length
+  wbar <- model$warp$mean
+  span <- wbar[L] - wbar[1]
+  u <- if (is.finite(span) && span > 0) (wbar - wbar[1]) / span else seq(0, 1, length.out = L)
+  u <- pmin(pmax(cummax(u), 0), 1)
+  nk <- st$n_frames
+  n <- length(nk)
+  times <- 1 + outer(u, nk - 1)                            # L x n, column per recording
+  i <- floor(times)
+  i <- pmin(i, matrix(pmax(nk - 1L, 1L), L, n, byrow = TRUE))
+  f <- times - i
+  f[, nk == 1L] <- 0
+  rows <- i + matrix(st$starts, L, n, byrow = TRUE)
+  nxt <- pmin(rows + 1L, matrix(st$starts + nk, L, n, byrow = TRUE))
+  rows <- as.vector(rows)
+  f <- as.vector(f)
+  st$values[rows, , drop = FALSE] * (1 - f) + st$values[as.vector(nxt), , drop = FALSE] * f
+}
+
+project_stacked <- function(model, st, details = TRUE) {
+  L <- model$target_length
+  n <- length(st$n_frames)
+  p <- length(model$dofs)
+  k <- model$settings$ncomp
+  warped <- warp_stacked(model, st)
+  scores <- array(0, c(n, p, k), dimnames = list(st$ids, model$dofs, paste0("FPC", seq_len(k))))
+  resid <- matrix(0, n, p, dimnames = list(st$ids, model$dofs))
+  fitted <- if (details) matrix(0, n * L, p) else NULL
+  for (j in seq_len(p)) {
+    Y <- matrix(warped[, j], n, L, byrow = TRUE)
+    fit <- model$fpca[[j]]
+    if (isTRUE(fit$constant)) {
+      S <- matrix(0, n, k)
+      R <- Y - matrix(fit$mean, n, L, byrow = TRUE)
+      resid[, j] <- sqrt(drop(R^2 %*% fit$weights))
+    } else {
+      S <- matrix(fpca_project(fit, Y), n, k)
+      resid[, j] <- fpca_residual_norm(fit, Y)
+    }
+    scores[, j, ] <- S
+    if (details) {
+      rec <- matrix(model$basis$mean[, j], L, n) + matrix(model$basis$components[, j, ], L) %*% t(S)
+      fitted[, j] <- as.vector(rec)
+    }
+  }
+  out <- list(scores = scores, residual = resid, distance = sqrt(rowSums(resid^2)),
+              ids = st$ids, grasp = model$grasp, target_length = L)
+  names(out$distance) <- st$ids
+  if (details) {
+    colnames(warped) <- model$dofs
+    colnames(fitted) <- model$dofs
+    out$warped <- stats::setNames(split_rows(warped, rep.int(L, n)), st$ids)
+    out$fitted <- stats::setNames(split_rows(fitted, rep.int(L, n)), st$ids)
+  }
+  structure(out, class = "grasp_projection")
+}
+
+#' @export
+print.grasp_projection <- function(x, ...) {
+  cat(sprintf("<grasp_projection> %d recording%s onto the %s model (%d frames)\n",
+              length(x$ids), if (length(x$ids) == 1) "" else "s", x$grasp, x$target_length))
+  if (length(x$distance)) {
+    q <- stats::quantile(x$distance, c(0, 0.5, 1), names = FALSE)
+    cat(sprintf("  L2 distance to the projection: min %.3g, median %.3g, max %.3g\n", q[1], q[2], q[3]))
+  }
+  invisible(x)
+}

@@ -1,0 +1,142 @@
+planted_model <- function(n = 80, p = 3, seed = 31, ...) {
+  fit_grasp_model(planted_grasps(n = n, p = p, seed = seed, ...), warping = "linear", seed = 1)
+}
+
+# Scores that rebuild curves exactly: least squares on the model's components
+# (independent of fpca_project's quadrature).
+recover_alpha <- function(model, rec, j) {
+  P <- matrix(model$basis$components[, j, ], model$target_length)
+  drop(qr.solve(P, rec[, j] - model$basis$mean[, j]))
+}
+
+# CDF of the marginal of a Gaussian mixture along direction `a`.
+mixture_cdf <- function(gm, a) {
+  mu <- drop(gm$means %*% a)
+  sdv <- vapply(seq_along(gm$weights), function(c) sqrt(drop(t(a) %*% gm$covs[, , c] %*% a)), 1)
+  function(q) vapply(q, function(v) sum(gm$weights * stats::pnorm(v, mu, sdv)), 1)
+}
+
+gaussian_draws <- function(n, mu, S, seed) {
+  with_seed(seed, matrix(stats::rnorm(n * length(mu)), n) %*% chol(S) + rep(mu, each = n))
+}
+
+test_that("generate returns a grasps set of the model's type, seeded and RNG-neutral", {
+  m <- planted_model()
+  set.seed(7)
+  before <- .Random.seed
+  new <- generate(m, n = 6, seed = 3)
+  expect_identical(.Random.seed, before)
+  expect_s3_class(new, "grasps")
+  expect_length(new, 6)
+  expect_identical(new$meta$id, paste0("gen", 1:6))
+  expect_true(all(new$meta$grasp == "Tripod"))
+  expect_true(all(is.na(new$meta$subject)))
+  expect_true(all(new$meta$source == "generated"))
+  expect_identical(new$dofs, m$dofs)
+  expect_identical(new$rate, m$rate)
+  expect_identical(generate(m, n = 6, seed = 3), new)
+  expect_false(identical(generate(m, n = 6, seed = 4)$recordings, new$recordings))
+  expect_identical(simulate(m, nsim = 6, seed = 3), new)
+  expect_error(generate(m, n = 0), class = "handmotion_error_bad_input")
+})
+
+test_that("without the warp, curves are mean + FPCs times the attached scores", {
+  m <- planted_model()
+  new <- generate(m, n = 20, seed = 5, warp = FALSE)
+  expect_true(all(new$meta$n_frames == m$target_length))
+  sc <- attr(new, "scores")
+  for (i in c(1, 7, 20)) for (j in 1:3) {
+    expect_equal(recover_alpha(m, new$recordings[[i]], j), unname(sc[i, j, ]), tolerance = 1e-8)
+  }
+})
+
+test_that("the warp is eq. 2.5's: length round(w(L)) and values at the inverted time", {
+  m <- planted_model(len_sd = 6)
+  flat <- generate(m, n = 30, seed = 9, warp = FALSE)
+  warped <- generate(m, n = 30, seed = 9, warp = TRUE)
+  L <- m$target_length
+  for (i in 1:30) {
+    beta <- warped$meta$warp_score[i]
+    w <- m$warp$mean + beta * m$warp$components[, 1]
+    w <- cummax(pmax(w, 1))
+    w[1] <- 1
+    n_new <- max(2L, as.integer(round(w[L])))
+    expect_equal(warped$meta$n_frames[i], n_new)
+    # the template time of each original frame, by approx() on the inverse
+    s_of_t <- stats::approx(w, seq_len(L), xout = seq_len(n_new), rule = 2, ties = max)$y
+    for (j in 1:3) {
+      expect_equal(unname(warped$recordings[[i]][, j]),
+                   stats::approx(seq_len(L), flat$recordings[[i]][, j], xout = s_of_t)$y,
+                   tolerance = 1e-8)
+    }
+  }
+  # lengths follow the training lengths (mean and spread within 15 %)
+  big <- generate(m, n = 2000, seed = 1)
+  expect_equal(mean(big$meta$n_frames), mean(m$data$n_frames), tolerance = 0.05)
+  expect_equal(stats::sd(big$meta$n_frames), stats::sd(m$data$n_frames), tolerance = 0.15)
+})
+
+test_that("generated scores follow the fitted mixture (and a wrong sampler fails the test)", {
+  m <- planted_model(n = 150, p = 2, sep = 10)
+  new <- generate(m, n = 3000, seed = 11, warp = FALSE)
+  dirs <- list(c(1, 0), c(0, 1), c(1, 1) / sqrt(2))
+  for (j in 1:2) {
+    alpha <- t(vapply(new$recordings, recover_alpha, numeric(2), model = m, j = j))
+    gm <- m$gmm[[j]]
+    expect_false(isTRUE(gm$fallback))
+    for (a in dirs) {
+      p <- suppressWarnings(stats::ks.test(drop(alpha %*% a), mixture_cdf(gm, a))$p.value)
+      expect_gt(p, 1e-3)
+    }
+    # power check: a moment-matched single Gaussian is rejected by the same test
+    wrong <- gaussian_draws(3000, colMeans(alpha), stats::cov(alpha), seed = 2)
+    p_wrong <- suppressWarnings(stats::ks.test(wrong[, 1], mixture_cdf(gm, c(1, 0)))$p.value)
+    expect_lt(p_wrong, 1e-3)
+  }
+})
+
+test_that("a model set generates each requested type with n grasps", {
+  a <- planted_grasps(n = 20, p = 2, grasp = "Ring", seed = 1)
+  b <- planted_grasps(n = 20, p = 2, grasp = "Tripod", len = 60, seed = 2)
+  g <- grasps(c(a$recordings, b$recordings),
+              meta = data.frame(id = paste0("x", 1:40), grasp = c(a$meta$grasp, b$meta$grasp)),
+              dofs = a$dofs)
+  ms <- fit_grasp_models(g, warping = "linear", seed = 1)
+  new <- generate(ms, n = 4, seed = 1)
+  expect_length(new, 8)
+  expect_identical(new$meta$id, paste0("gen", 1:8))
+  expect_identical(as.character(new$meta$grasp), rep(c("Tripod", "Ring"), each = 4))
+  expect_equal(dim(attr(new, "scores")), c(8L, 2L, 2L))
+  one <- generate(ms, grasp = 31, n = 3, seed = 1)
+  expect_true(all(one$meta$grasp == "Ring"))
+  expect_identical(simulate(ms, nsim = 3, grasp = "Ring", seed = 1), one)
+  expect_error(generate(ms, grasp = "Lateral"), class = "handmotion_error_bad_input")
+  # the Tripod type was planted about 60 frames long, the Ring type about 40
+  expect_gt(mean(new$meta$n_frames[1:4]), mean(new$meta$n_frames[5:8]))
+})
+
+test_that("generated grasps from simulated data have the type's length and plausible angles", {
+  skip_if_not(exists("simulate_grasps", mode = "function"))
+  g <- simulate_grasps(subjects = 5, grasps = 17, seed = 2)
+  m <- fit_grasp_model(g, seed = 1)
+  new <- generate(m, n = 200, seed = 1)
+  expect_equal(mean(new$meta$n_frames), m$target_length, tolerance = 0.15)
+  train <- do.call(rbind, g$recordings)
+  gen <- do.call(rbind, new$recordings)
+  span <- apply(train, 2, function(v) diff(range(v)))
+  for (j in seq_along(g$dofs)) {
+    expect_gte(min(gen[, j]), min(train[, j]) - 0.5 * span[j])
+    expect_lte(max(gen[, j]), max(train[, j]) + 0.5 * span[j])
+  }
+  # the mean generated curve is close to the mean training curve (warped time)
+  expect_lt(max(abs(colMeans(gen) - colMeans(train)) / span), 0.2)
+})
+
+test_that("the native kernel matches the vectorised R reference exactly", {
+  m <- planted_model(len_sd = 6)
+  for (warp in c(TRUE, FALSE)) {
+    fast <- with_seed(4, generate_batch(m, 50L, warp = warp, kernel = "c"))
+    ref <- with_seed(4, generate_batch(m, 50L, warp = warp, kernel = "r"))
+    expect_equal(fast, ref, tolerance = 1e-10)
+  }
+})

@@ -1,0 +1,194 @@
+# Planted truth (helper-grasp-model.R): each DoF is mean + a1 phi1 + a2 phi2 on
+# template time, a1 bimodal at +-sep, recordings linear time-scalings of
+# planted lengths. Linear warping recovers the template curves exactly up to
+# interpolation, so FPCA, scores, mixtures and warps can be checked against
+# what was planted.
+
+test_that("FPCs, mean, scores and variance explained recover the planted truth", {
+  g <- planted_grasps(n = 80, p = 3, seed = 11)
+  tr <- attr(g, "truth")
+  m <- fit_grasp_model(g, warping = "linear", seed = 1)
+  expect_s3_class(m, "grasp_model")
+  expect_identical(m$grasp, "Tripod")
+  expect_equal(m$n_used, 80L)
+  expect_equal(m$target_length, as.integer(round(mean(tr$lens))))
+  s <- m$argvals
+  phi <- planted_phi(s)
+  for (j in 1:3) {
+    P <- m$basis$components[, j, ]
+    # phi1 has a positive integral: the sign convention keeps it positive
+    expect_gt(cor(P[, 1], phi[, 1]), 0.99)
+    expect_gt(abs(cor(P[, 2], phi[, 2])), 0.99)
+    truth_mean <- planted_mean(s, j) + mean(tr$a1[, j]) * phi[, 1] + mean(tr$a2[, j]) * phi[, 2]
+    expect_lt(max(abs(m$basis$mean[, j] - truth_mean)), 0.3)
+    expect_gt(sum(m$var_explained[j, ]), 0.99)
+    expect_gt(cor(m$scores[, j, 1], tr$a1[, j]), 0.995)
+    expect_gt(abs(cor(m$scores[, j, 2], tr$a2[, j])), 0.95)
+  }
+})
+
+test_that("the mixture on FPC1 finds the two planted modes", {
+  g <- planted_grasps(n = 120, p = 2, sep = 10, seed = 12)
+  m <- fit_grasp_model(g, warping = "linear", seed = 1)
+  for (j in 1:2) {
+    gm <- m$gmm[[j]]
+    expect_false(isTRUE(gm$fallback))
+    modes <- sort(gm$means[, 1])
+    # scores are centred, so the modes sit at about -+sep (planted), within 2
+    expect_equal(modes, c(-10, 10), tolerance = 0.2)
+    expect_true(all(gm$weights > 0.3 & gm$weights < 0.7))
+  }
+})
+
+test_that("warping functions are in original frames and one FPC carries the length", {
+  g <- planted_grasps(n = 50, p = 2, len_sd = 5, seed = 13)
+  m <- fit_grasp_model(g, warping = "linear", seed = 1)
+  nk <- m$data$n_frames
+  L <- m$target_length
+  expect_equal(unname(m$data$warps[, L]), unname(as.numeric(nk)))
+  expect_equal(unname(m$data$warps[, 1]), rep(1, 50))
+  expect_gt(m$warp$fpca$var_explained[1], 0.999)
+  # positive warp score = longer grasp
+  expect_gt(cor(m$warp$scores[, 1], nk), 0.999)
+  expect_gt(m$warp$components[L, 1], 0)
+})
+
+test_that("over-long recordings are removed by the documented rule and recorded", {
+  g <- planted_grasps(n = 30, p = 2, seed = 14)
+  recs <- g$recordings
+  recs[[3]] <- rbind(recs[[3]], recs[[3]], recs[[3]])
+  recs[[7]] <- rbind(recs[[7]], recs[[7]], recs[[7]])
+  g2 <- grasps(recs, meta = g$meta, dofs = g$dofs)
+  m <- fit_grasp_model(g2, warping = "linear", seed = 1)
+  expect_setequal(m$removed$id[m$removed$reason == "overlong"], c("r3", "r7"))
+  expect_equal(m$n_used, 28L)
+  expect_false(any(c("r3", "r7") %in% m$ids))
+  # the target length is the mean of what is kept
+  expect_equal(m$target_length, as.integer(round(mean(g2$meta$n_frames[-c(3, 7)]))))
+})
+
+test_that("the DTW path keeps the books: used + removed = input", {
+  g <- planted_grasps(n = 25, p = 3, sep = 3, sd2 = 1, seed = 15)
+  m <- fit_grasp_model(g, seed = 1)
+  expect_true(m$warping$method %in% c("dtw", "linear"))
+  expect_equal(m$n_used + nrow(m$removed), m$n_input)
+  expect_equal(dim(m$scores), c(m$n_used, 3L, 2L))
+  expect_equal(dim(m$data$warped), c(m$n_used, m$target_length, 3L))
+  expect_identical(rownames(m$data$warps), m$ids)
+  if (m$warping$method == "linear") expect_true("warping" %in% m$fallbacks$step)
+})
+
+test_that("a constant DoF is a recorded fallback, not a crash", {
+  g <- planted_grasps(n = 20, p = 3, seed = 16)
+  recs <- lapply(g$recordings, function(r) { r[, 2] <- 10; r })
+  g2 <- grasps(recs, meta = g$meta, dofs = g$dofs)
+  m <- fit_grasp_model(g2, warping = "linear", seed = 1)
+  expect_true(any(m$fallbacks$step == "fpca" & m$fallbacks$dof == "d2"))
+  expect_true(all(is.na(m$var_explained["d2", ])))
+  expect_true(isTRUE(m$gmm$d2$point_mass))
+  expect_equal(unname(m$basis$mean[, "d2"]), rep(10, m$target_length))
+  s <- summary(m)
+  expect_identical(s$mixture[s$dof == "d2"], "point mass")
+  new <- generate(m, n = 3, seed = 1)
+  expect_true(all(vapply(new$recordings, function(r) all(abs(r[, "d2"] - 10) < 1e-9), logical(1))))
+})
+
+test_that("identical recordings give fallbacks for every DoF and the warp", {
+  g <- planted_grasps(n = 1, p = 2, seed = 17)
+  r <- g$recordings[[1]]
+  g2 <- grasps(rep(list(r), 6), meta = data.frame(grasp = rep("Ring", 6)), dofs = g$dofs)
+  m <- fit_grasp_model(g2, warping = "linear", seed = 1)
+  expect_setequal(m$fallbacks$dof[m$fallbacks$step == "fpca"], c("d1", "d2"))
+  expect_true("warp_fpca" %in% m$fallbacks$step)
+  new <- generate(m, n = 2, seed = 1)
+  expect_equal(unname(new$recordings[[1]]), unname(r), tolerance = 1e-8)
+})
+
+test_that("too few recordings, mixed types and bad arguments are clear errors", {
+  g <- planted_grasps(n = 2, p = 2, seed = 18)
+  expect_error(fit_grasp_model(g, warping = "linear"), class = "handmotion_error_too_few_recordings")
+  a <- planted_grasps(n = 5, p = 2, grasp = "Ring", seed = 1)
+  b <- planted_grasps(n = 5, p = 2, grasp = "Tripod", seed = 2)
+  mixed <- grasps(c(a$recordings, b$recordings),
+                  meta = data.frame(id = paste0("x", 1:10), grasp = c(a$meta$grasp, b$meta$grasp)),
+                  dofs = a$dofs)
+  expect_error(fit_grasp_model(mixed), class = "handmotion_error_multiple_grasps")
+  m <- fit_grasp_model(mixed, grasp = "ring", warping = "linear", seed = 1)
+  expect_identical(m$grasp, "Ring")
+  expect_equal(m$grasp_id, 31L)
+  expect_error(fit_grasp_model(mixed, grasp = "Tripod", engine = "quick"),
+               class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_model(mixed, grasp = "Tripod", ncomp = 0), class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_model(list()), class = "handmotion_error_bad_input")
+})
+
+test_that("engines can be chosen per step", {
+  e <- resolve_engines(list(fpca = "reference"), call = NULL)
+  expect_identical(e, list(align = "fast", fpca = "reference", gmm = "fast"))
+  expect_identical(resolve_engines(c("fast", "reference"), NULL)$gmm, "fast")
+  expect_error(resolve_engines(list(dtw = "fast"), NULL), class = "handmotion_error_bad_input")
+  g <- planted_grasps(n = 20, p = 2, seed = 19)
+  m1 <- fit_grasp_model(g, warping = "linear", engine = list(fpca = "reference"), seed = 1)
+  m2 <- fit_grasp_model(g, warping = "linear", seed = 1)
+  expect_equal(m1$basis, m2$basis, tolerance = 1e-6)
+})
+
+test_that("the sign convention makes refits on subsets comparable", {
+  g <- planted_grasps(n = 80, p = 3, seed = 20)
+  full <- fit_grasp_model(g, warping = "linear", seed = 1)
+  sub <- fit_grasp_model(g[seq(2, 80, by = 2)], warping = "linear", seed = 2)
+  # the two fits may have different target lengths: compare on normalised time
+  w <- full$fpca[[1]]$weights
+  for (j in 1:3) for (c in 1:2) {
+    on_full <- stats::approx(sub$argvals, sub$basis$components[, j, c], xout = full$argvals)$y
+    inner <- sum(full$basis$components[, j, c] * on_full * w)
+    expect_gt(inner, 0.9)
+  }
+})
+
+test_that("a fit is reproducible with its seed and leaves the global RNG alone", {
+  g <- planted_grasps(n = 30, p = 2, seed = 21)
+  set.seed(99)
+  before <- .Random.seed
+  m1 <- fit_grasp_model(g, warping = "linear", seed = 5)
+  expect_identical(.Random.seed, before)
+  m2 <- fit_grasp_model(g, warping = "linear", seed = 5)
+  m1$timing <- m2$timing <- NULL
+  expect_identical(m1, m2)
+})
+
+test_that("print and summary list what was removed and what fell back", {
+  g <- planted_grasps(n = 20, p = 3, seed = 22)
+  recs <- g$recordings
+  recs[[2]] <- rbind(recs[[2]], recs[[2]], recs[[2]])
+  recs <- lapply(recs, function(r) { r[, 3] <- 1; r })
+  m <- fit_grasp_model(grasps(recs, meta = g$meta, dofs = g$dofs), warping = "linear", seed = 1)
+  s <- summary(m)
+  expect_s3_class(s, "summary_grasp_model")
+  expect_identical(names(s), c("dof", "FPC1", "FPC2", "total", "mixture", "reason"))
+  expect_equal(nrow(attr(s, "removed")), 1L)
+  expect_snapshot(print(m))
+  expect_snapshot(print(s))
+})
+
+test_that("simulated grasps fit with DTW and explain most of the variance", {
+  skip_if_not(exists("simulate_grasps", mode = "function"))
+  g <- simulate_grasps(subjects = 5, grasps = 3, seed = 1)
+  m <- fit_grasp_model(g, seed = 1)
+  expect_identical(m$grasp, "Medium Wrap")
+  expect_equal(m$n_used + nrow(m$removed), length(g))
+  expect_gt(stats::median(rowSums(m$var_explained)), 0.7)
+})
+
+test_that("a failed EM is replaced by a single Gaussian and recorded (Table 5.1)", {
+  # 5 recordings cannot carry two full-covariance components in 2-D
+  g <- planted_grasps(n = 5, p = 2, seed = 23)
+  m <- fit_grasp_model(g, warping = "linear", seed = 1)
+  em <- m$fallbacks[m$fallbacks$step == "mixture", ]
+  expect_setequal(em$dof, c("d1", "d2"))
+  expect_true(all(grepl("single Gaussian", em$reason)))
+  expect_true(all(vapply(m$gmm, function(x) isTRUE(x$fallback), logical(1))))
+  # the single Gaussian has the sample mean of the scores
+  expect_equal(unname(drop(m$gmm$d1$means)), unname(colMeans(m$scores[, "d1", ])), tolerance = 1e-8)
+  expect_identical(summary(m)$mixture, c("single Gaussian", "single Gaussian"))
+})

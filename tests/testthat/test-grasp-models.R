@@ -1,0 +1,99 @@
+three_types <- function() {
+  parts <- list(planted_grasps(n = 20, p = 2, grasp = "Ring", seed = 1),
+                planted_grasps(n = 20, p = 2, grasp = "Tripod", seed = 2),
+                planted_grasps(n = 2, p = 2, grasp = "Lateral", seed = 3))
+  grasps(unlist(lapply(parts, `[[`, "recordings"), recursive = FALSE),
+         meta = data.frame(id = paste0("x", 1:42),
+                           grasp = unlist(lapply(parts, function(p) as.character(p$meta$grasp)))),
+         dofs = parts[[1]]$dofs)
+}
+
+strip_timing <- function(ms) {
+  for (i in seq_along(ms)) ms[[i]]$timing <- NULL
+  unclass(ms)
+}
+
+test_that("every type is fitted; a type that cannot be fitted is recorded, not fatal", {
+  ms <- fit_grasp_models(three_types(), warping = "linear", seed = 1)
+  expect_s3_class(ms, "grasp_models")
+  expect_named(ms, c("Tripod", "Lateral", "Ring")[c(1, 3)])
+  f <- attr(ms, "failed")
+  expect_identical(f$grasp, "Lateral")
+  expect_identical(f$class, "handmotion_error_too_few_recordings")
+  expect_s3_class(ms[["Ring"]], "grasp_model")
+  expect_named(ms["ring"], "Ring")
+  expect_named(ms[2], "Ring")
+  expect_error(ms["Lateral"], class = "handmotion_error_bad_input")
+  only <- fit_grasp_models(three_types(), grasps = 14, warping = "linear", seed = 1)
+  expect_named(only, "Tripod")
+  expect_error(fit_grasp_models(three_types(), grasps = "Stick"),
+               class = "handmotion_error_too_few_recordings")
+})
+
+test_that("summary is a tidy table with one row per type (Tables 5.1, 5.2)", {
+  g <- three_types()
+  recs <- g$recordings
+  recs[[1]] <- rbind(recs[[1]], recs[[1]], recs[[1]])     # an over-long Ring
+  g <- grasps(recs, meta = g$meta, dofs = g$dofs)
+  ms <- fit_grasp_models(g, warping = "linear", seed = 1)
+  s <- summary(ms)
+  expect_s3_class(s, "data.frame")
+  expect_identical(s$grasp, c("Tripod", "Ring"))
+  expect_identical(s$grasp_id, c(14L, 31L))
+  expect_identical(s$n_overlong, c(0L, 1L))
+  expect_identical(s$n_used, c(20L, 19L))
+  expect_identical(s$warping, c("linear", "linear"))
+  expect_true(all(s$min_var <= s$median_var & s$median_var <= s$max_var))
+  expect_true(all(s$min_var > 99))
+  expect_identical(attr(s, "failed")$grasp, "Lateral")
+  expect_snapshot(print(ms))
+})
+
+test_that("EM fallbacks are listed per type in the summary", {
+  small <- planted_grasps(n = 5, p = 2, grasp = "Palmar Pinch", seed = 4)
+  ms <- fit_grasp_models(small, warping = "linear", seed = 1)
+  s <- summary(ms)
+  expect_identical(s$em_fallback, "d1, d2")
+  expect_identical(s$n_em_fallback, 2L)
+})
+
+test_that("the same seed gives identical models whatever the future plan", {
+  skip_if_not_installed("future")
+  g <- three_types()
+  old <- future::plan(future::sequential)
+  on.exit(future::plan(old), add = TRUE)
+  seq_fit <- fit_grasp_models(g, seed = 7)
+  again <- fit_grasp_models(g, seed = 7)
+  expect_identical(strip_timing(again), strip_timing(seq_fit))
+  if (future::supportsMulticore()) {
+    future::plan(future::multicore, workers = 2)
+    expect_identical(strip_timing(fit_grasp_models(g, seed = 7)), strip_timing(seq_fit))
+  }
+  # multisession workers load the installed package (as under R CMD check)
+  installed <- nzchar(tryCatch(find.package("handmotion", lib.loc = .libPaths(), quiet = TRUE),
+                               error = function(e) ""))
+  skip_if_not(length(installed) == 1L && installed, "handmotion is not installed for workers")
+  future::plan(future::multisession, workers = 2)
+  expect_identical(strip_timing(fit_grasp_models(g, seed = 7)), strip_timing(seq_fit))
+})
+
+test_that("progress is reported through progressr, once per type", {
+  withr::local_options(progressr.enable = TRUE)
+  n <- 0L
+  withCallingHandlers(
+    fit_grasp_models(three_types(), warping = "linear", seed = 1),
+    progression = function(c) n <<- n + 1L
+  )
+  expect_gte(n, 3L)
+})
+
+test_that("simulated data: all types present fit, with their target lengths", {
+  skip_if_not(exists("simulate_grasps", mode = "function"))
+  g <- simulate_grasps(subjects = 4, grasps = c(1, 9, 22), seed = 1)
+  ms <- fit_grasp_models(g, seed = 1)
+  expect_named(ms, c("Large Diameter", "Palmar Pinch", "Parallel Extension"))
+  expect_equal(nrow(attr(ms, "failed")), 0L)
+  s <- summary(ms)
+  expect_true(all(s$target_length >= 10))
+  expect_equal(s$n_used + s$n_overlong + s$n_degenerate, s$n_input)
+})
