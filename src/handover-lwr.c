@@ -1,0 +1,202 @@
+/* Locally weighted linear regression for sparse-marker hand-over
+ * (R/handover.R, lwr_predict()). For each query row: the k nearest
+ * reference rows by exact partial-distance search with a max-heap, inverse
+ * distance weights, weighted moments of the local linear model centred on
+ * the query, and its intercept (the prediction at the query) through the
+ * equivalent kernel after a ridge-stabilised Cholesky solve.
+ * The R function lwr_predict_r() is the reference implementation.
+ */
+#include <R.h>
+#include <Rinternals.h>
+#include <math.h>
+#include <stdlib.h>
+
+/* Max-heap of (distance, index) pairs, the current k nearest candidates. */
+static void heap_sift_down(double *hd, int *hi, int k, int pos) {
+  for (;;) {
+    int l = 2 * pos + 1, r = l + 1, m = pos;
+    if (l < k && hd[l] > hd[m]) m = l;
+    if (r < k && hd[r] > hd[m]) m = r;
+    if (m == pos) return;
+    double td = hd[pos]; hd[pos] = hd[m]; hd[m] = td;
+    int ti = hi[pos]; hi[pos] = hi[m]; hi[m] = ti;
+    pos = m;
+  }
+}
+
+static void heap_build(double *hd, int *hi, int k) {
+  for (int pos = k / 2 - 1; pos >= 0; pos--) heap_sift_down(hd, hi, k, pos);
+}
+
+/* In-place Cholesky of the d x d matrix a (column-major); 0 on failure. */
+static int cholesky(double *a, int d) {
+  for (int j = 0; j < d; j++) {
+    double s = a[j + j * d];
+    for (int k = 0; k < j; k++) s -= a[j + k * d] * a[j + k * d];
+    if (!(s > 0)) return 0;
+    double l = sqrt(s);
+    a[j + j * d] = l;
+    for (int i = j + 1; i < d; i++) {
+      double t = a[i + j * d];
+      for (int k = 0; k < j; k++) t -= a[i + k * d] * a[j + k * d];
+      a[i + j * d] = t / l;
+    }
+  }
+  return 1;
+}
+
+/* Solve L L' x = b for q right-hand sides (b is d x q, overwritten). */
+static void chol_solve(const double *l, int d, double *b, int q) {
+  for (int c = 0; c < q; c++) {
+    double *x = b + c * d;
+    for (int i = 0; i < d; i++) {
+      double t = x[i];
+      for (int k = 0; k < i; k++) t -= l[i + k * d] * x[k];
+      x[i] = t / l[i + i * d];
+    }
+    for (int i = d - 1; i >= 0; i--) {
+      double t = x[i];
+      for (int k = i + 1; k < d; k++) t -= l[k + i * d] * x[k];
+      x[i] = t / l[i + i * d];
+    }
+  }
+}
+
+SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SEXP eps_) {
+  const int N = nrows(ref_x), d = ncols(ref_x), q = ncols(ref_y), n = nrows(query);
+  if (nrows(ref_y) != N || ncols(query) != d) error("lwr: dimension mismatch");
+  int k = asInteger(k_);
+  if (k > N) k = N;
+  if (k < 1) error("lwr: k must be positive");
+  const double ridge = asReal(ridge_), eps = asReal(eps_);
+  const double *X = REAL(ref_x), *Y = REAL(ref_y), *Q = REAL(query);
+  SEXP out = PROTECT(allocMatrix(REALSXP, n, q));
+  double *O = REAL(out);
+
+  /* Reference points stored row-major with the coordinates reordered by
+   * decreasing spread, so a partial distance exceeds the current k-th best
+   * after few coordinates and the search moves on (partial distance search). */
+  int *perm = (int *) R_alloc(d, sizeof(int));
+  double *var = (double *) R_alloc(d, sizeof(double));
+  for (int j = 0; j < d; j++) {
+    double m = 0.0, v = 0.0;
+    for (int i = 0; i < N; i++) m += X[i + (size_t) j * N];
+    m /= N;
+    for (int i = 0; i < N; i++) { double t = X[i + (size_t) j * N] - m; v += t * t; }
+    var[j] = v;
+    perm[j] = j;
+  }
+  for (int j = 1; j < d; j++) {            /* insertion sort, d is small */
+    int pj = perm[j], i = j - 1;
+    while (i >= 0 && var[perm[i]] < var[pj]) { perm[i + 1] = perm[i]; i--; }
+    perm[i + 1] = pj;
+  }
+  double *XR = (double *) R_alloc((size_t) N * d, sizeof(double));
+  for (int i = 0; i < N; i++)
+    for (int j = 0; j < d; j++) XR[(size_t) i * d + j] = X[i + (size_t) perm[j] * N];
+
+  double *qv = (double *) R_alloc(d, sizeof(double));
+  double *hd = (double *) R_alloc(k, sizeof(double));
+  int *hi = (int *) R_alloc(k, sizeof(int));
+  int *prev = (int *) R_alloc(k, sizeof(int));
+  int *seen = (int *) R_alloc(N, sizeof(int));
+  double *xc = (double *) R_alloc(d, sizeof(double));
+  double *sx = (double *) R_alloc(d, sizeof(double));
+  double *sxx = (double *) R_alloc((size_t) d * d, sizeof(double));
+  double *a = (double *) R_alloc((size_t) d * d, sizeof(double));
+  double *hy = (double *) R_alloc(q, sizeof(double));
+  double *beta = (double *) R_alloc(d, sizeof(double));
+  for (int i = 0; i < N; i++) seen[i] = -1;
+  for (int m = 0; m < k; m++) prev[m] = m;
+
+  for (int r = 0; r < n; r++) {
+    if (r % 256 == 0) R_CheckUserInterrupt();
+    for (int j = 0; j < d; j++) qv[j] = Q[r + (size_t) perm[j] * n];
+    /* seed the heap with the previous frame's neighbours: consecutive frames
+     * are close, so the threshold starts tight */
+    for (int m = 0; m < k; m++) {
+      int i = prev[m];
+      const double *xi = XR + (size_t) i * d;
+      double s = 0.0;
+      for (int j = 0; j < d; j++) { double t = xi[j] - qv[j]; s += t * t; }
+      hd[m] = s;
+      hi[m] = i;
+      seen[i] = r;
+    }
+    if (k < N) {
+      heap_build(hd, hi, k);
+      double thr = hd[0];
+      for (int i = 0; i < N; i++) {
+        if (seen[i] == r) continue;
+        const double *xi = XR + (size_t) i * d;
+        double s = 0.0;
+        int j = 0;
+        for (; j < d; j++) {
+          double t = xi[j] - qv[j];
+          s += t * t;
+          if (s >= thr) break;
+        }
+        if (j == d) {
+          hd[0] = s;
+          hi[0] = i;
+          heap_sift_down(hd, hi, k, 0);
+          thr = hd[0];
+        }
+      }
+    }
+    for (int m = 0; m < k; m++) prev[m] = hi[m];
+
+    /* first pass: weighted moments of the centred markers */
+    double sw = 0.0;
+    for (int j = 0; j < d; j++) sx[j] = 0.0;
+    for (int j = 0; j < d * d; j++) sxx[j] = 0.0;
+    for (int m = 0; m < k; m++) {
+      const double *xi = XR + (size_t) hi[m] * d;
+      double dist = sqrt(hd[m]);
+      double w = 1.0 / (dist > eps ? dist : eps);
+      hd[m] = w;                          /* keep the weight for the second pass */
+      for (int j = 0; j < d; j++) xc[j] = xi[j] - qv[j];
+      sw += w;
+      for (int j = 0; j < d; j++) {
+        double wx = w * xc[j];
+        sx[j] += wx;
+        for (int l = 0; l <= j; l++) sxx[j + l * d] += wx * xc[l];
+      }
+    }
+    double tr = 0.0;
+    for (int j = 0; j < d; j++) tr += sxx[j + j * d];
+    double lam = ridge * tr / d + 1e-12;
+    int ok = 0;
+    for (int attempt = 0; attempt < 8 && !ok; attempt++) {
+      for (int j = 0; j < d; j++)
+        for (int l = 0; l <= j; l++) {
+          double v = sxx[j + l * d] - sx[j] * sx[l] / sw;
+          a[j + l * d] = v;
+          a[l + j * d] = v;
+        }
+      for (int j = 0; j < d; j++) a[j + j * d] += lam;
+      ok = cholesky(a, d);
+      if (!ok) lam = lam * 100 + 1e-8 * (tr / d + 1.0);
+    }
+    if (!ok) error("lwr: local regression is singular at query row %d", r + 1);
+    /* The intercept of the centred fit is linear in the targets:
+     * prediction = sum_m alpha_m y_m with alpha_m = w_m (1 + v'sx / sw - v'xc_m) / sw,
+     * v = A^-1 sx (the equivalent kernel), so each neighbour costs O(d + q). */
+    for (int j = 0; j < d; j++) beta[j] = sx[j];
+    chol_solve(a, d, beta, 1);
+    double vsx = 0.0;
+    for (int j = 0; j < d; j++) vsx += beta[j] * sx[j];
+    for (int c = 0; c < q; c++) hy[c] = 0.0;
+    for (int m = 0; m < k; m++) {
+      const int i = hi[m];
+      const double *xi = XR + (size_t) i * d;
+      double vx = 0.0;
+      for (int j = 0; j < d; j++) vx += beta[j] * (xi[j] - qv[j]);
+      double alpha = hd[m] * (1.0 + vsx / sw - vx) / sw;
+      for (int c = 0; c < q; c++) hy[c] += alpha * Y[i + (size_t) c * N];
+    }
+    for (int c = 0; c < q; c++) O[r + (size_t) c * n] = hy[c];
+  }
+  UNPROTECT(1);
+  return out;
+}

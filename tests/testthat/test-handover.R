@@ -1,0 +1,252 @@
+# A reference database of some grasp types and subjects, and a test set of
+# unseen types performed by unseen subjects (the paper's letters vs words).
+handover_split <- function() {
+  g <- simulate_grasps(subjects = 6, grasps = 1:12, objects = 1, trials = 1, seed = 2,
+                       overlong = FALSE)
+  types <- levels(droplevels(g$meta$grasp))
+  subj <- unique(g$meta$subject)
+  list(ref = g[g$meta$grasp %in% types[1:9] & g$meta$subject %in% subj[1:4]],
+       test = g[!g$meta$grasp %in% types[1:9] & !g$meta$subject %in% subj[1:4]])
+}
+split <- handover_split()
+
+test_that("a frame seen in the reference is reconstructed almost exactly", {
+  fit <- fit_handover(split$ref, markers = 3, smooth = FALSE)
+  rec <- reconstruct(fit, split$ref[1:2])
+  expect_s3_class(rec, "grasps")
+  expect_identical(rec$meta$id, split$ref$meta$id[1:2])
+  expect_lt(handover_error(split$ref[1:2], rec), 1e-3)
+})
+
+test_that("ranked 6 markers beat 3, the no-PCA regression and the hand-picked set on unseen data", {
+  ref <- split$ref
+  test <- split$test
+  rk <- rank_markers(ref)
+  m6 <- select_markers(rk, 6)
+  m3 <- select_markers(rk, 3)
+  e6 <- handover_error(test, reconstruct(fit_handover(ref, m6), test))
+  e3 <- handover_error(test, reconstruct(fit_handover(ref, m3), test))
+  e_direct <- handover_error(test, reconstruct(fit_handover(ref, m6, method = "direct"), test))
+  e_hand <- handover_error(test, reconstruct(fit_handover(ref, handpicked_markers()), test))
+  # a useful reconstruction: well under the spread of the test angles themselves
+  spread <- mean(abs(sweep(do.call(rbind, test$recordings), 2, colMeans(do.call(rbind, ref$recordings)))))
+  expect_lt(e6, spread / 3)
+  expect_lt(e6, e3)
+  expect_lt(e6, e_direct)
+  expect_lt(e6, e_hand)
+})
+
+test_that("LWR on all components equals LWR straight to the angles (why 'direct' is global)", {
+  ref <- split$ref
+  fit <- fit_handover(ref, markers = 3, smooth = FALSE)
+  q <- markers_from_angles(split$test[1], markers = fit$markers)[[1]]
+  y <- do.call(rbind, ref$recordings)
+  direct_local <- lwr_predict(fit$ref_x, y, q, fit$k_used, fit$ridge, fit$eps)
+  via_pca <- reconstruct(fit, split$test[1])$recordings[[1]]
+  expect_equal(unname(via_pca), unname(direct_local), tolerance = 1e-8)
+  # with fewer components the two differ
+  few <- reconstruct(fit_handover(ref, fit$markers, ncomp = 3, smooth = FALSE), split$test[1])
+  expect_gt(max(abs(few$recordings[[1]] - via_pca)), 0.1)
+})
+
+test_that("a marker matrix query gives the same result as the grasps query; columns may be reordered", {
+  fit <- fit_handover(split$ref, markers = 4)
+  g1 <- split$test[1]
+  mk <- markers_from_angles(g1, markers = fit$markers)[[1]]
+  a <- reconstruct(fit, g1)$recordings[[1]]
+  b <- reconstruct(fit, mk)
+  expect_equal(unname(b$recordings[[1]]), unname(a))
+  rev_cols <- mk[, rev(colnames(mk))]
+  expect_equal(reconstruct(fit, rev_cols)$recordings[[1]], b$recordings[[1]])
+  expect_equal(predict(fit, mk)$recordings[[1]], b$recordings[[1]])
+  # extra named markers (e.g. the full set) are ignored
+  all13 <- markers_from_angles(g1)[[1]]
+  expect_equal(reconstruct(fit, all13)$recordings[[1]], b$recordings[[1]])
+  # unnamed columns are taken in model order
+  expect_equal(reconstruct(fit, unname(mk))$recordings[[1]], b$recordings[[1]])
+})
+
+test_that("wrong marker sets are refused with classed errors", {
+  ref <- split$ref
+  fit <- fit_handover(ref, markers = c("thumb_tip", "index_tip", "ring_tip"))
+  mk <- markers_from_angles(split$test[1], markers = fit$markers)[[1]]
+  expect_error(reconstruct(fit, unname(mk[, 1:6])), class = "handmotion_error_bad_markers")
+  expect_error(reconstruct(fit, mk[, 1:6]), class = "handmotion_error_bad_markers")
+  expect_error(reconstruct(fit, mk[0, ]), class = "handmotion_error_bad_markers")
+  inf <- mk
+  inf[1, 1] <- Inf
+  expect_error(reconstruct(fit, inf), class = "handmotion_error_bad_markers")
+  expect_error(fit_handover(ref, markers = c("thumb_tip", "wrist")), class = "handmotion_error_bad_markers")
+  expect_error(fit_handover(ref, markers = c("thumb_tip", "thumb_tip")), class = "handmotion_error_bad_markers")
+  expect_error(fit_handover(ref, markers = c("thumb_tip", "forearm_radial")),
+               class = "handmotion_error_bad_markers")
+  expect_error(fit_handover(ref, markers = 14), class = "handmotion_error_bad_markers")
+  expect_error(fit_handover(ref, markers = 3, ncomp = 17), class = "handmotion_error_bad_input")
+  expect_error(fit_handover(ref, markers = 3, k = 2), class = "handmotion_error_bad_input")
+  expect_error(fit_handover(ref, markers = 3, filter_size = 0), class = "handmotion_error_bad_input")
+  expect_error(fit_handover("ref"), class = "handmotion_error_bad_input")
+})
+
+test_that("a reference too small for the regression is a classed error", {
+  tiny <- split$ref[1]
+  tiny$recordings[[1]] <- tiny$recordings[[1]][1:10, ]
+  tiny$meta$n_frames <- 10L
+  expect_error(fit_handover(tiny, markers = c("thumb_tip", "index_tip", "ring_tip")),
+               class = "handmotion_error_reference_too_small")
+  # with enough frames but fewer than k, every frame is a neighbour (recorded)
+  fit <- fit_handover(split$ref[1], markers = c("thumb_tip", "index_tip"), k = 1000)
+  expect_equal(fit$k_used, split$ref$meta$n_frames[1])
+})
+
+test_that("occluded (NaN) markers are dropped per frame, and fully occluded frames are an error", {
+  fit <- fit_handover(split$ref, markers = 6)
+  mk <- markers_from_angles(split$test[1], markers = fit$markers)[[1]]
+  full <- reconstruct(fit, mk)
+  occ <- mk
+  occ[5:9, 1:3] <- NaN           # first marker hidden for five frames
+  occ[7, 4:6] <- NA              # and the second in one of them
+  rec <- reconstruct(fit, occ)
+  used <- attr(rec, "handover")$markers_used[[1]]
+  expect_equal(used[c(4, 5, 7, 10)], c(6, 5, 4, 6))
+  expect_equal(rec$meta$occluded_frames, 5L)
+  # a small degradation, not a collapse
+  truth <- split$test[1]$recordings[[1]]
+  e_full <- mean(abs(full$recordings[[1]][5:9, ] - truth[5:9, ]))
+  e_occ <- mean(abs(rec$recordings[[1]][5:9, ] - truth[5:9, ]))
+  expect_lt(e_occ, e_full + 5)
+  blind <- mk
+  blind[3, ] <- NaN
+  expect_error(reconstruct(fit, blind), class = "handmotion_error_occluded")
+  direct <- fit_handover(split$ref, markers = fit$markers, method = "direct")
+  expect_error(reconstruct(direct, occ), class = "handmotion_error_occluded")
+})
+
+test_that("the cone filter scales with the rate and smooths without bias", {
+  expect_equal(cone_size(120), 17L)
+  expect_equal(cone_size(50), 7L)
+  expect_equal(cone_size(60), 9L)
+  expect_equal(cone_size(5), 1L)
+  x <- cbind(rep(3, 50), seq_len(50))
+  sm <- cone_filter(x, 7)
+  expect_equal(sm[, 1], rep(3, 50))
+  expect_equal(sm[4:47, 2], 4:47)        # linear trends pass through the interior
+  noise <- with_seed(1, matrix(stats::rnorm(2000), 1000, 2))
+  expect_lt(stats::sd(cone_filter(noise, 7)[, 1]), 0.6)
+  expect_identical(cone_filter(x, 1), x)
+})
+
+test_that("k = Inf is the paper's all-frame weighting and matches k = all frames", {
+  small <- split$ref[1:6]
+  a <- fit_handover(small, markers = c("thumb_tip", "middle_tip"), k = Inf)
+  b <- fit_handover(small, markers = c("thumb_tip", "middle_tip"), k = sum(small$meta$n_frames))
+  expect_equal(reconstruct(a, split$test[1])$recordings, reconstruct(b, split$test[1])$recordings)
+})
+
+test_that("handover_error is the mean absolute angle error per frame in degrees", {
+  g <- split$test[1:2]
+  off <- g
+  off$recordings <- lapply(g$recordings, function(r) r + rep(c(2, -2), length.out = length(r)))
+  expect_equal(handover_error(g, off), 2)
+  by_rec <- handover_error(g, off, by = "recording")
+  expect_equal(by_rec$error, c(2, 2))
+  expect_equal(nrow(handover_error(g, off, by = "frame")), sum(g$meta$n_frames))
+  expect_equal(handover_error(g, off, by = "dof")$error, rep(2, 16))
+  rad <- g
+  rad$unit <- "rad"
+  rad_off <- off
+  rad_off$unit <- "rad"
+  expect_equal(handover_error(rad, rad_off), 2 * 180 / pi)
+  expect_error(handover_error(g, split$test[2:3]), class = "handmotion_error_bad_input")
+  expect_error(handover_error(g, rad_off), class = "handmotion_error_bad_input")
+})
+
+test_that("PCA reconstruction error falls with the number of components (Figure 1)", {
+  pe <- handover_pca_error(split$ref)
+  expect_s3_class(pe, "handover_pca_error")
+  expect_equal(nrow(pe), 16)
+  expect_true(all(diff(pe$error) <= 1e-9))
+  expect_lt(pe$error[16], 1e-8)
+  expect_equal(pe$variance[16], 1)
+  held <- handover_pca_error(split$ref, split$test)
+  expect_gt(held$error[2], pe$error[2] * 0.5)
+  fit <- fit_handover(split$ref, markers = 3)
+  expect_equal(handover_pca_error(fit, split$test)$error, held$error)
+  b <- ggplot2::ggplot_build(ggplot2::autoplot(pe))
+  expect_equal(nrow(b$data[[1]]), 16)
+})
+
+test_that("search-based selection returns a logged greedy set", {
+  s <- search_markers(split$ref, n = 2, max_frames = 150, k = 64)
+  expect_length(s, 2)
+  log <- attr(s, "search")
+  expect_equal(nrow(log), 13 + 12)
+  expect_equal(s[1], sub(",.*", "", log$set[log$step == 1][which.min(log$error[log$step == 1])]))
+  expect_error(search_markers(split$ref, n = 2, holdout = "nope"), class = "handmotion_error_bad_input")
+  expect_error(search_markers(split$ref[split$ref$meta$grasp == split$ref$meta$grasp[1]], n = 2),
+               class = "handmotion_error_reference_too_small")
+})
+
+test_that("compare_marker_sets tabulates and plots the comparison", {
+  cmp <- compare_marker_sets(split$ref, split$test[1:2],
+                             sets = list(a = c("thumb_tip", "index_tip"),
+                                         b = list(markers = c("thumb_tip", "index_tip"), method = "direct")),
+                             k = 64)
+  expect_s3_class(cmp, "handover_comparison")
+  expect_equal(as.character(cmp$set), c("a", "b"))
+  expect_equal(cmp$method, c("pca", "direct"))
+  expect_true(all(cmp$error > 0))
+  expect_output(print(cmp), "handover_comparison")
+  b <- ggplot2::ggplot_build(ggplot2::autoplot(cmp))
+  expect_equal(b$data[[1]]$y, cmp$error)
+  expect_error(compare_marker_sets(split$ref, split$test, sets = list(1)), class = "handmotion_error_bad_input")
+})
+
+test_that("the figures build: markers on the hand, component trajectories, ranking", {
+  p <- plot_marker_sets(list(`hand-picked` = handpicked_markers(), tips = c("thumb_tip", "index_tip")))
+  b <- ggplot2::ggplot_build(p)
+  marks <- b$plot$layers[[3]]$data
+  expect_equal(sum(marks$selected), 8)
+  expect_equal(nrow(marks), 2 * 16)
+  fit <- fit_handover(split$ref, markers = 3)
+  rec <- reconstruct(fit, split$test[1])
+  p5 <- plot_handover_components(fit, split$test[1], list(`3 markers` = rec), components = 1:2)
+  d5 <- ggplot2::ggplot_build(p5)$plot$data
+  expect_setequal(levels(d5$source), c("ground truth", "3 markers"))
+  # with all components and smoothing the plotted scores are the model's smoothed scores
+  s <- attr(rec, "handover")$scores[[1]]
+  expect_equal(d5$score[d5$source == "3 markers" & d5$component == "PC1"], unname(s[, 1]))
+  b_rank <- ggplot2::ggplot_build(ggplot2::autoplot(rank_markers(split$ref)))
+  expect_equal(nrow(b_rank$data[[1]]), 13)
+  expect_output(print(fit), "handover_model")
+})
+
+test_that("hand-over runs on the real GraspDB14 samples (radians, CyberGlove mapping)", {
+  f1 <- shared_file("data", "graspdb14", "01_11_ex03-rad-004-grasp-su04.txt")
+  f2 <- shared_file("data", "graspdb14", "04_ex01-rad-045-grasp-su03.txt")
+  g <- read_graspdb14(c(f1, f2))
+  skip_if_not(inherits(g, "grasps") && length(g) == 2)
+  fit <- fit_handover(g[2], markers = 6, k = 64)
+  rec <- reconstruct(fit, g[1])
+  expect_equal(rec$unit, "rad")
+  e <- handover_error(g[1], rec)
+  expect_true(is.finite(e))
+  # reconstructing the reference's own frames is near exact; not exact, because
+  # the sensors the CyberGlove mapping does not apply (I-AA, P-Arch) change
+  # angles without moving any marker
+  expect_lt(handover_error(g[2], reconstruct(fit_handover(g[2], 6, k = 64, smooth = FALSE), g[2])), 0.2)
+})
+
+test_that("the C regression engine agrees with the R reference engine", {
+  fit <- fit_handover(split$ref, markers = 4, smooth = FALSE)
+  q <- markers_from_angles(split$test[1:2], markers = fit$markers)
+  q <- do.call(rbind, q)
+  for (k in c(20, 256, nrow(fit$ref_x))) {
+    a <- lwr_predict(fit$ref_x, fit$ref_scores, q, k, fit$ridge, fit$eps)
+    b <- lwr_predict(fit$ref_x, fit$ref_scores, q, k, fit$ridge, fit$eps, engine = "r")
+    expect_equal(a, b, tolerance = 1e-8)
+  }
+  # a local model whose neighbours all coincide is rescued by the ridge
+  flat <- matrix(1, 30, 3)
+  y <- matrix(seq_len(30), 30, 1)
+  expect_equal(drop(lwr_predict(flat, y, matrix(2, 1, 3), 30, 1e-3, 1e-6)), 15.5, tolerance = 1e-6)
+})
