@@ -1,0 +1,377 @@
+# Functional principal component analysis of a set of curves sampled on a
+# common grid (thesis sections 3.4 and 4.1.3).
+#
+# Two engines compute the same thing:
+# * "reference" calls fda.usc::fdata2pc(), the package the thesis used;
+# * "fast" reproduces fdata2pc's arithmetic with one eigen-decomposition and
+#   one matrix product, so it is a few hundred times quicker.
+#
+# What fdata2pc computes (fda.usc 2.x, norm = TRUE, lambda = 0), and hence
+# what both engines return:
+# 1. centre the curves on their pointwise mean;
+# 2. take the SVD of the centred n x L data matrix *without* quadrature
+#    weights: Yc = U diag(s) V';
+# 3. rescale the right singular vectors by 1 / delta, where delta is the
+#    square root of the mean grid spacing, so that the components have unit
+#    norm under the uniform rule (sum(phi^2) * delta^2 = 1); the reported
+#    singular values become s * delta;
+# 4. compute the scores as inner products <Yc_i, phi_r> with the trapezoidal
+#    rule (fda.usc's default integration method "TRAPZ").
+# The proportion of variance of component r is s_r^2 / sum(s^2). We report the
+# eigenvalues of the covariance operator as (s * delta)^2 / n (the 1/N
+# convention of the thesis' eq. in section 3.3).
+
+#' Functional principal component analysis of curves
+#'
+#' Fits a functional PCA to curves sampled on a common grid, as the thesis does
+#' for each joint angle after time warping (two components) and for the
+#' warping functions (one component).
+#'
+#' Both engines centre the curves, take the singular value decomposition of
+#' the centred data, scale the components to unit norm on the grid (the right
+#' singular vectors divided by `delta`, the square root of the mean grid
+#' spacing) and compute scores as trapezoidal-rule inner products, exactly as
+#' [fda.usc::fdata2pc()] does. `engine = "reference"` calls `fdata2pc()`;
+#' `engine = "fast"` (the default) does the same arithmetic with one
+#' eigen-decomposition of the smaller Gram matrix and agrees with the
+#' reference to about 1e-10 (up to the sign, which both then fix).
+#'
+#' Like `fdata2pc()`, the components have unit norm under the uniform weight
+#' `delta^2` while inner products (scores, projections, residual norms) use
+#' the trapezoidal rule; the two differ only through the halved end points,
+#' so re-projecting a reconstructed curve returns its scores up to that small
+#' end-point term. `eigenvalues` are `(s * delta)^2 / n` for the singular
+#' values `s` of the centred data (the 1/N convention of the thesis), and
+#' `var_explained` is `s_r^2 / sum(s^2)`, as `summary()` of an `fdata2pc()`
+#' fit reports it.
+#'
+#' **Sign convention.** The sign of a principal component is arbitrary. Each
+#' component is flipped so that its integral (trapezoidal rule) is positive;
+#' when the integral is zero to rounding, so that its value of largest absolute
+#' size is positive. Scores are flipped with it. Refits, row permutations and
+#' subsets of similar data therefore give comparable components.
+#'
+#' **Degenerate data.** Components whose eigenvalue is zero to rounding (for
+#' instance when `ncomp` exceeds the rank: `ncomp > n - 1` or `ncomp > L`, or
+#' when all curves are identical) are returned as zero curves with zero
+#' scores; `var_explained` is 0 for them, or `NA` when the curves do not vary
+#' at all. Each such case is recorded in `notes`.
+#'
+#' @param Y Curves: an `n x L` numeric matrix with one curve per row, or an
+#'   [fda.usc::fdata()] object.
+#' @param argvals The grid the curves are sampled on, strictly increasing, of
+#'   length `L`. Defaults to the `fdata` object's grid, or to
+#'   `seq(0, 1, length.out = L)` for a matrix (the thesis' normalised time).
+#' @param ncomp Number of components to keep.
+#' @param engine `"fast"` (default) or `"reference"` ([fda.usc::fdata2pc()]).
+#' @return An object of class `fpca_fit`: a list with `mean` (length `L`),
+#'   `components` (`L x ncomp`), `scores` (`n x ncomp`), `eigenvalues` (all
+#'   non-zero eigenvalues of the covariance operator, decreasing),
+#'   `var_explained` (proportion of the total variance for each kept
+#'   component), `argvals`, `weights` (the trapezoidal quadrature weights used
+#'   for inner products and norms), `delta`, `rangeval`, `n`, `ncomp`,
+#'   `engine` and `notes` (character vector of recorded special cases).
+#' @seealso [fpca_project()], [fpca_reconstruct()], [fpca_residual_norm()].
+#' @export
+#' @examples
+#' t <- seq(0, 1, length.out = 30)
+#' Y <- outer(rnorm(40), sin(pi * t)) + outer(rnorm(40, sd = 0.3), cos(pi * t))
+#' fit <- fpca_fit(Y, argvals = t, ncomp = 2)
+#' fit
+#' head(fit$scores)
+fpca_fit <- function(Y, argvals = NULL, ncomp = 2, engine = c("fast", "reference")) {
+  call <- rlang::caller_env()
+  engine <- rlang::arg_match(engine)
+  cur <- fpca_curves(Y, argvals, call = call)
+  ncomp <- fpca_check_ncomp(ncomp, call = call)
+  mean <- colMeans(cur$Y)
+  Yc <- cur$Y - rep(mean, each = nrow(cur$Y))
+  delta <- fpca_delta(cur$argvals, cur$rangeval)
+  weights <- trapezoid_weights(cur$argvals)
+  raw <- switch(engine,
+    fast = fpca_engine_fast(Yc, ncomp),
+    reference = fpca_engine_reference(cur, ncomp, call = call))
+  fit <- fpca_finish(raw, Yc, cur, mean, ncomp, delta, weights)
+  fit$engine <- engine
+  fit
+}
+
+# Validate curves and grid; returns list(Y, argvals, rangeval).
+fpca_curves <- function(Y, argvals, arg = "Y", call = rlang::caller_env()) {
+  rangeval <- NULL
+  if (inherits(Y, "fdata")) {
+    if (is.null(argvals)) argvals <- Y$argvals
+    rangeval <- Y$rangeval
+    Y <- Y$data
+  }
+  if (is.data.frame(Y)) Y <- as.matrix(Y)
+  if (!is.numeric(Y) || !is.matrix(Y)) {
+    hm_abort("{.arg {arg}} must be a numeric matrix with one curve per row or an {.cls fdata} object.",
+             "bad_input", argument = arg, call = call)
+  }
+  if (ncol(Y) < 2L || nrow(Y) < 1L) {
+    hm_abort("{.arg {arg}} must hold at least one curve of at least 2 points, not {nrow(Y)} x {ncol(Y)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  bad <- which(!is.finite(Y), arr.ind = TRUE)
+  if (nrow(bad) > 0L) {
+    hm_abort(c("{.arg {arg}} has {nrow(bad)} non-finite value{?s}.",
+               x = "First at curve {bad[1, 1]}, point {bad[1, 2]}."),
+             "bad_input", argument = arg, recording = bad[1, 1], call = call)
+  }
+  L <- ncol(Y)
+  if (is.null(argvals)) argvals <- seq(0, 1, length.out = L)
+  if (!is.numeric(argvals) || length(argvals) != L || any(!is.finite(argvals)) ||
+      any(diff(argvals) <= 0)) {
+    hm_abort("{.arg argvals} must be {L} finite, strictly increasing values (one per column of {.arg {arg}}).",
+             "bad_input", argument = "argvals", call = call)
+  }
+  argvals <- as.numeric(argvals)
+  if (is.null(rangeval)) rangeval <- range(argvals)
+  storage.mode(Y) <- "double"
+  list(Y = unname(Y), argvals = argvals, rangeval = as.numeric(rangeval))
+}
+
+fpca_check_ncomp <- function(ncomp, call) {
+  if (!is.numeric(ncomp) || length(ncomp) != 1L || is.na(ncomp) || ncomp < 1 || ncomp != round(ncomp)) {
+    hm_abort("{.arg ncomp} must be a positive whole number, not {.val {ncomp}}.",
+             "bad_input", argument = "ncomp", call = call)
+  }
+  as.integer(ncomp)
+}
+
+# Trapezoidal weights as fda.usc's "TRAPZ" rule applies them: on a grid that
+# is equispaced to 0.1% it uses the nominal spacing range / (L - 1), otherwise
+# the actual spacings.
+trapezoid_weights <- function(argvals) {
+  L <- length(argvals)
+  h_nominal <- diff(range(argvals)) / (L - 1)
+  dt <- diff(argvals)
+  if (all(abs(dt - h_nominal) < 0.001 * h_nominal)) dt <- rep(h_nominal, L - 1L)
+  c(dt, 0) / 2 + c(0, dt) / 2
+}
+
+# The normalising constant of fdata2pc: sqrt(range / (L - 1)). fdata2pc tests
+# "equispaced" against a tolerance of 10 machine epsilons around each spacing
+# itself, which holds unless the spacing is so large (> ~32) that the
+# tolerance vanishes in rounding; then it falls back to the harmonic mean
+# spacing. We reproduce both branches so the engines agree on any grid.
+fpca_delta <- function(argvals, rangeval) {
+  L <- length(argvals)
+  dt <- diff(argvals)
+  eps <- 10 * .Machine$double.eps
+  if (all(dt > dt - eps) && all(dt < dt + eps)) sqrt(diff(rangeval) / (L - 1)) else 1 / sqrt(mean(1 / dt))
+}
+
+# Leading right singular vectors and all squared singular values of Yc, from
+# the eigen-decomposition of the smaller Gram matrix (4x cheaper than svd()).
+fpca_engine_fast <- function(Yc, ncomp) {
+  n <- nrow(Yc)
+  L <- ncol(Yc)
+  k <- min(ncomp, n, L)
+  if (L <= n) {
+    e <- eigen(crossprod(Yc), symmetric = TRUE)
+    V <- e$vectors[, seq_len(k), drop = FALSE]
+  } else {
+    e <- eigen(tcrossprod(Yc), symmetric = TRUE)
+    s <- sqrt(pmax(e$values[seq_len(k)], 0))
+    V <- crossprod(Yc, e$vectors[, seq_len(k), drop = FALSE])
+    V <- sweep(V, 2L, ifelse(s > 0, s, 1), "/")
+  }
+  list(V = V, s2 = pmax(e$values, 0))
+}
+
+# fda.usc::fdata2pc itself: its unit-norm singular vectors (components times
+# delta, to share fpca_finish() with the fast engine), singular values and
+# scores.
+fpca_engine_reference <- function(cur, ncomp, call) {
+  k <- min(ncomp, nrow(cur$Y), ncol(cur$Y))
+  fd <- fda.usc::fdata(cur$Y, argvals = cur$argvals, rangeval = cur$rangeval)
+  pc <- tryCatch(
+    withCallingHandlers(fda.usc::fdata2pc(fd, ncomp = k),
+      # fda.usc runs its inner products through foreach; without a registered
+      # backend foreach warns once per session, which is noise here.
+      warning = function(w) {
+        if (grepl("executing %dopar% sequentially", conditionMessage(w), fixed = TRUE)) {
+          invokeRestart("muffleWarning")
+        }
+      }),
+    error = function(e) {
+      hm_abort(c("fda.usc::fdata2pc() failed.", x = conditionMessage(e)), "engine_failed",
+               argument = "engine", call = call)
+    })
+  delta <- fpca_delta(cur$argvals, cur$rangeval)
+  comps <- t(pc$rotation$data)[, seq_len(k), drop = FALSE]
+  list(V = unname(comps) * delta, s2 = (pc$d / delta)^2,
+       scores = unname(pc$x[, seq_len(k), drop = FALSE]))
+}
+
+# Shared tail of both engines: zero components, sign convention, scores,
+# variance explained, padding to ncomp.
+fpca_finish <- function(raw, Yc, cur, mean, ncomp, delta, weights) {
+  n <- nrow(Yc)
+  L <- ncol(Yc)
+  s2 <- sort(raw$s2, decreasing = TRUE)
+  notes <- character(0)
+  # Eigenvalues below this are rounding noise: relative to the largest (the
+  # eigen route leaves noise of about L * eps there, the SVD route less), or
+  # absolute relative to the size of the data (all curves identical).
+  scale2 <- max(abs(cur$Y))^2 * n * L
+  zero_tol <- max(1e-12 * s2[1], 1e-24 * scale2)
+  nonzero <- s2 > zero_tol
+  total <- sum(s2[nonzero])
+  comps <- matrix(0, L, ncomp)
+  k <- ncol(raw$V)
+  comps[, seq_len(k)] <- raw$V / delta
+  live <- seq_len(ncomp) <= min(k, sum(nonzero))
+  comps[, !live] <- 0
+  flip <- rep(1, ncomp)
+  for (r in which(live)) flip[r] <- fpca_sign(comps[, r], weights)
+  comps <- comps * rep(flip, each = L)
+  if (is.null(raw$scores)) {
+    scores <- Yc %*% (comps * weights)
+  } else {
+    # the reference engine's own scores (same trapezoidal inner products)
+    scores <- matrix(0, n, ncomp)
+    scores[, seq_len(k)] <- raw$scores
+    scores <- scores * rep(flip * live, each = n)
+  }
+  var_explained <- numeric(ncomp)
+  var_explained[live] <- s2[which(live)] / total
+  if (total == 0) {
+    var_explained[] <- NA_real_
+    notes <- c(notes, "the curves do not vary: all components are zero and var_explained is NA")
+  } else if (any(!live)) {
+    notes <- c(notes, sprintf(
+      "component%s %s: zero variance (the centred curves have rank %d), returned as zero",
+      if (sum(!live) > 1) "s" else "", paste(which(!live), collapse = ", "), sum(nonzero)))
+  }
+  colnames(comps) <- colnames(scores) <- names(var_explained) <- paste0("FPC", seq_len(ncomp))
+  structure(list(
+    mean = mean, components = comps, scores = scores,
+    eigenvalues = s2[nonzero] * delta^2 / n, var_explained = var_explained,
+    argvals = cur$argvals, weights = weights, delta = delta, rangeval = cur$rangeval,
+    n = n, ncomp = ncomp, engine = NA_character_, notes = notes),
+    class = "fpca_fit")
+}
+
+# +1 or -1: makes the component's integral positive, or, when the integral is
+# zero to rounding, its largest-magnitude value positive.
+fpca_sign <- function(phi, weights) {
+  integral <- sum(weights * phi)
+  if (abs(integral) > 1e-8 * sum(weights * abs(phi))) return(sign(integral))
+  if (phi[which.max(abs(phi))] < 0) -1 else 1
+}
+
+#' Project curves onto a functional PCA
+#'
+#' Scores of new curves on the components of a fit, with the inner product the
+#' fit used (trapezoidal rule on its grid): `<Y_i - mean, phi_r>`. On the
+#' curves the model was fitted to this returns `fit$scores`.
+#'
+#' @param fit An [fpca_fit()] object.
+#' @param Ynew Curves on the fit's grid: an `m x L` matrix, a numeric vector of
+#'   length `L` (one curve), or an `fdata` object.
+#' @return An `m x ncomp` matrix of scores.
+#' @export
+#' @examples
+#' t <- seq(0, 1, length.out = 30)
+#' Y <- outer(rnorm(40), sin(pi * t)) + outer(rnorm(40, sd = 0.3), cos(pi * t))
+#' fit <- fpca_fit(Y, argvals = t)
+#' fpca_project(fit, Y[1:3, ])
+fpca_project <- function(fit, Ynew) {
+  call <- rlang::caller_env()
+  Ynew <- fpca_new_curves(fit, Ynew, call = call)
+  sweep(Ynew, 2L, fit$mean, "-") %*% (fit$components * fit$weights)
+}
+
+#' Rebuild curves from functional PCA scores
+#'
+#' `mean + scores %*% t(components)`: the curves a set of scores stands for,
+#' as used to generate new motion from sampled scores.
+#'
+#' @param fit An [fpca_fit()] object.
+#' @param scores An `m x ncomp` matrix (or a vector of length `ncomp`).
+#' @return An `m x L` matrix of curves.
+#' @export
+#' @examples
+#' t <- seq(0, 1, length.out = 30)
+#' Y <- outer(rnorm(40), sin(pi * t)) + outer(rnorm(40, sd = 0.3), cos(pi * t))
+#' fit <- fpca_fit(Y, argvals = t)
+#' dim(fpca_reconstruct(fit, fit$scores[1:5, ]))
+fpca_reconstruct <- function(fit, scores) {
+  call <- rlang::caller_env()
+  check_fpca_fit(fit, call = call)
+  k <- ncol(fit$components)
+  if (is.null(dim(scores)) && is.numeric(scores) && length(scores) == k) scores <- matrix(scores, 1L)
+  if (!is.numeric(scores) || !is.matrix(scores) || ncol(scores) != k || any(!is.finite(scores))) {
+    hm_abort("{.arg scores} must be a finite numeric matrix with {k} column{?s} (one per component).",
+             "bad_input", argument = "scores", call = call)
+  }
+  out <- scores %*% t(fit$components)
+  out <- sweep(out, 2L, fit$mean, "+")
+  dimnames(out) <- NULL
+  out
+}
+
+#' Distance of curves to their functional PCA reconstruction
+#'
+#' The L2 norm (trapezoidal rule on the fit's grid) of each curve minus its
+#' reconstruction from its own projection, `||g - proj(g)||` (thesis eq. 4.4,
+#' used by the FPCA classifier).
+#'
+#' @inheritParams fpca_project
+#' @return A numeric vector of length `m`.
+#' @export
+#' @examples
+#' t <- seq(0, 1, length.out = 30)
+#' Y <- outer(rnorm(40), sin(pi * t)) + outer(rnorm(40, sd = 0.3), cos(pi * t))
+#' fit <- fpca_fit(Y, argvals = t, ncomp = 1)
+#' summary(fpca_residual_norm(fit, Y))
+fpca_residual_norm <- function(fit, Ynew) {
+  call <- rlang::caller_env()
+  Ynew <- fpca_new_curves(fit, Ynew, call = call)
+  Yc <- sweep(Ynew, 2L, fit$mean, "-")
+  R <- Yc - (Yc %*% (fit$components * fit$weights)) %*% t(fit$components)
+  sqrt(pmax(drop(R^2 %*% fit$weights), 0))
+}
+
+check_fpca_fit <- function(fit, arg = "fit", call = rlang::caller_env()) {
+  if (!inherits(fit, "fpca_fit")) {
+    hm_abort("{.arg {arg}} must be an {.cls fpca_fit} object (from {.fn fpca_fit}).",
+             "bad_input", argument = arg, call = call)
+  }
+  invisible(fit)
+}
+
+fpca_new_curves <- function(fit, Ynew, call) {
+  check_fpca_fit(fit, call = call)
+  L <- length(fit$mean)
+  if (inherits(Ynew, "fdata")) Ynew <- Ynew$data
+  if (is.null(dim(Ynew)) && is.numeric(Ynew) && length(Ynew) == L) Ynew <- matrix(Ynew, 1L)
+  if (is.data.frame(Ynew)) Ynew <- as.matrix(Ynew)
+  if (!is.numeric(Ynew) || !is.matrix(Ynew) || ncol(Ynew) != L) {
+    hm_abort("{.arg Ynew} must be a numeric matrix of curves with {L} columns (the fit's grid).",
+             "bad_input", argument = "Ynew", call = call)
+  }
+  bad <- which(!is.finite(Ynew), arr.ind = TRUE)
+  if (nrow(bad) > 0L) {
+    hm_abort("{.arg Ynew} has a non-finite value at curve {bad[1, 1]}, point {bad[1, 2]}.",
+             "bad_input", argument = "Ynew", recording = bad[1, 1], call = call)
+  }
+  unname(Ynew)
+}
+
+#' @export
+print.fpca_fit <- function(x, ...) {
+  k <- ncol(x$components)
+  cat(sprintf("<fpca_fit> %d curve%s x %d points, %d component%s (%s engine)\n",
+              x$n, if (x$n == 1) "" else "s", length(x$mean), k, if (k == 1) "" else "s",
+              x$engine))
+  ve <- x$var_explained
+  cat(sprintf("  variance explained: %s (total %s)\n",
+              paste(sprintf("%.2f%%", 100 * ve), collapse = ", "),
+              sprintf("%.2f%%", 100 * sum(ve))))
+  for (note in x$notes) cat("  note: ", note, "\n", sep = "")
+  invisible(x)
+}

@@ -1,0 +1,685 @@
+# Gaussian mixture models fitted by EM (thesis sections 4.1.4 and 5.1.4): a
+# bivariate two-component mixture per DoF on the FPC scores, a univariate one
+# on the warp scores.
+#
+# Two engines:
+# * "reference": mixtools::mvnormalmixEM (d >= 2) / mixtools::normalmixEM
+#   (d = 1), the package of the thesis; random starting values (seeded by
+#   `seed`) and seconds per fit;
+# * "fast": our EM, vectorised over observations. One matrix product gives
+#   the sufficient statistics of every component (M-step) and one gives all
+#   log-densities (E-step), because a Gaussian log-density is linear in the
+#   monomials 1, x_a, x_a x_b. Several starts (principal-axis splits, k-means
+#   from spread-out and from random centres) run side by side as columns of
+#   one matrix, each to convergence, and the best is kept, so the fast engine
+#   reaches at least the log-likelihood of a single random-start run.
+#
+# Both engines stop when an iteration raises the log-likelihood by less than
+# `tol` (absolute, as mixtools does). Whatever the engine, a fit that failed
+# (error, no convergence within max_iter, a degenerate component, a weight
+# below 1/n, a non-finite log-likelihood) is replaced by a single Gaussian with
+# the sample mean and covariance, as the thesis did, and the reason recorded.
+
+# A component whose covariance determinant is below this fraction of the
+# determinant of the data's covariance has collapsed onto a point or a line.
+gmm_det_floor <- 1e-8
+
+#' Fit a Gaussian mixture model
+#'
+#' Fits a `k`-component Gaussian mixture with unrestricted covariances to the
+#' rows of `X` by the EM algorithm, as the thesis does on the FPC scores of
+#' each DoF (bivariate, 2 components) and on the warp scores (univariate).
+#'
+#' `engine = "fast"` (default) runs a vectorised EM from several starts side
+#' by side (splits along the principal axes, k-means from spread-out centres
+#' and from four random centres drawn under `seed`) and keeps the converged
+#' run with the highest log-likelihood; `iterations` are that run's. It is
+#' deterministic and leaves the global random number generator as it was.
+#' `engine = "reference"` calls [mixtools::mvnormalmixEM()] (d >= 2) or
+#' [mixtools::normalmixEM()] (d = 1) with `epsilon = tol` and
+#' `maxit = max_iter`; their random starting values are drawn under `seed`.
+#'
+#' **Failure and fallback.** When EM fails -- an error (mixtools gives up after
+#' repeated singularities), no convergence within `max_iter` iterations, a
+#' decreasing log-likelihood, a component with weight below `1/n`, a
+#' covariance whose determinant is below `1e-8` times that of the data, a
+#' non-finite log-likelihood -- or when the data cannot support `k` full
+#' covariances (fewer than `k * (d + 1)` points, or a singular sample
+#' covariance: identical or collinear points), the mixture is replaced by a
+#' single Gaussian with the sample mean and sample covariance (thesis section
+#' 5.1.4), with `fallback = TRUE` and the `reason` recorded.
+#'
+#' Components are ordered by decreasing weight, ties by the first mean
+#' coordinate.
+#'
+#' @param X An `n x d` numeric matrix (a vector is one column).
+#' @param k Number of components.
+#' @param engine `"fast"` (default) or `"reference"` (mixtools).
+#' @param max_iter Maximum number of EM iterations; a fit still improving by
+#'   more than `tol` after that many falls back to a single Gaussian.
+#'   (mixtools' own defaults are 10000 for `mvnormalmixEM()` and 1000 for
+#'   `normalmixEM()`; on strongly overlapping score clouds EM can need more
+#'   than 500.)
+#' @param tol Convergence tolerance on the increase of the log-likelihood
+#'   between two iterations.
+#' @param seed Seed for the reference engine's random starting values
+#'   (`NULL`: use the current RNG stream). The fast engine is deterministic;
+#'   its random starts use `seed` (default 1) without disturbing the global
+#'   RNG.
+#' @return An object of class `gmm_fit`: a list with `weights` (length k),
+#'   `means` (`k x d`), `covs` (`d x d x k`), `loglik` (of `X` under the fit),
+#'   `iterations`, `converged`, `fallback`, `reason` (`NA` unless
+#'   `fallback`), `engine`, `n` and `colnames`.
+#' @seealso [gmm_sample()], [gmm_density()], [gmm_loglik()].
+#' @export
+#' @examples
+#' X <- rbind(matrix(rnorm(100), 50), matrix(rnorm(100, mean = 4), 50))
+#' fit <- gmm_fit(X, k = 2)
+#' fit
+#' gmm_sample(fit, 3)
+gmm_fit <- function(X, k = 2, engine = c("fast", "reference"), max_iter = 500, tol = 1e-8,
+                    seed = NULL) {
+  call <- rlang::caller_env()
+  engine <- rlang::arg_match(engine)
+  X <- gmm_data(X, "X", call = call)
+  k <- gmm_count(k, "k", call = call)
+  max_iter <- gmm_count(max_iter, "max_iter", call = call)
+  if (!is.numeric(tol) || length(tol) != 1L || !is.finite(tol) || tol <= 0) {
+    hm_abort("{.arg tol} must be a positive number, not {.val {tol}}.", "bad_input",
+             argument = "tol", call = call)
+  }
+  n <- nrow(X)
+  d <- ncol(X)
+  if (k == 1L && n >= 2L) {
+    # One component has a closed-form maximum-likelihood fit: no EM to fail.
+    S <- stats::cov(X) * (n - 1) / n
+    return(gmm_new(1, matrix(colMeans(X), 1L), array(S, c(d, d, 1L)), X, iterations = 0L,
+                   converged = TRUE, fallback = FALSE, reason = NA_character_, engine = engine))
+  }
+  reason <- gmm_precheck(X, k)
+  if (!is.null(reason)) return(gmm_fallback(X, reason, engine, iterations = 0L))
+  cand <- tryCatch(
+    switch(engine,
+      fast = gmm_em_fast(X, k, max_iter, tol, seed),
+      reference = gmm_em_reference(X, k, max_iter, tol, seed)),
+    error = function(e) list(error = conditionMessage(e), iterations = NA_integer_))
+  reason <- gmm_failure(cand, X, max_iter)
+  if (!is.null(reason)) return(gmm_fallback(X, reason, engine, iterations = cand$iterations))
+  ord <- order(-round(cand$weights, 12), cand$means[, 1])
+  gmm_new(cand$weights[ord], cand$means[ord, , drop = FALSE], cand$covs[, , ord, drop = FALSE],
+          X, iterations = as.integer(cand$iterations), converged = TRUE, fallback = FALSE,
+          reason = NA_character_, engine = engine)
+}
+
+gmm_data <- function(X, arg, call) {
+  if (is.data.frame(X)) X <- as.matrix(X)
+  if (is.numeric(X) && is.null(dim(X))) X <- matrix(X, ncol = 1L)
+  if (!is.numeric(X) || !is.matrix(X) || nrow(X) < 1L || ncol(X) < 1L) {
+    hm_abort("{.arg {arg}} must be a non-empty numeric matrix (one observation per row).",
+             "bad_input", argument = arg, call = call)
+  }
+  bad <- which(!is.finite(X), arr.ind = TRUE)
+  if (nrow(bad) > 0L) {
+    hm_abort("{.arg {arg}} has a non-finite value at row {bad[1, 1]}, column {bad[1, 2]}.",
+             "bad_input", argument = arg, call = call)
+  }
+  storage.mode(X) <- "double"
+  X
+}
+
+gmm_count <- function(x, arg, call) {
+  if (!is.numeric(x) || length(x) != 1L || is.na(x) || x < 1 || x != round(x)) {
+    hm_abort("{.arg {arg}} must be a positive whole number, not {.val {x}}.", "bad_input",
+             argument = arg, call = call)
+  }
+  as.integer(x)
+}
+
+# Reasons the data cannot carry k full-covariance components, before any EM.
+gmm_precheck <- function(X, k) {
+  n <- nrow(X)
+  d <- ncol(X)
+  if (n < k * (d + 1L)) {
+    return(sprintf("too few points (%d) for %d components with full covariances in %d dimension%s",
+                   n, k, d, if (d == 1) "" else "s"))
+  }
+  ev <- eigen(stats::cov(X), symmetric = TRUE, only.values = TRUE)$values
+  if (ev[1] <= 0 || ev[d] <= 1e-10 * ev[1]) {
+    return(if (ev[1] <= 0) "all points identical (zero sample covariance)"
+           else "singular sample covariance (points collinear)")
+  }
+  NULL
+}
+
+# Why a candidate fit is unusable, or NULL.
+gmm_failure <- function(cand, X, max_iter) {
+  if (!is.null(cand$error)) return(paste("EM failed:", cand$error))
+  if (isTRUE(cand$diverged)) return("EM diverged (the log-likelihood decreased)")
+  if (!isTRUE(cand$converged)) return(sprintf("EM did not converge within %d iterations", max_iter))
+  n <- nrow(X)
+  if (any(!is.finite(c(cand$weights, cand$means, cand$covs)))) return("non-finite EM estimates")
+  if (any(cand$weights * n < 1)) return("a component's weight fell below 1/n")
+  det0 <- det(stats::cov(X) * (n - 1) / n)
+  for (j in seq_along(cand$weights)) {
+    dj <- det(as.matrix(cand$covs[, , j]))
+    if (!is.finite(dj) || dj < gmm_det_floor * det0) {
+      return(sprintf("singular covariance in component %d (determinant %.3g of the data's)", j,
+                     dj / det0))
+    }
+  }
+  ll <- gmm_loglik_params(cand$weights, cand$means, cand$covs, X)
+  if (!is.finite(ll)) return("non-finite log-likelihood")
+  NULL
+}
+
+gmm_new <- function(weights, means, covs, X, iterations, converged, fallback, reason, engine) {
+  d <- ncol(X)
+  k <- length(weights)
+  cn <- colnames(X)
+  means <- matrix(means, k, d, dimnames = list(NULL, cn))
+  covs <- array(covs, c(d, d, k), dimnames = list(cn, cn, NULL))
+  structure(list(weights = as.numeric(weights), means = means, covs = covs,
+                 loglik = gmm_loglik_params(weights, means, covs, X),
+                 iterations = as.integer(iterations), converged = converged, fallback = fallback,
+                 reason = reason, engine = engine, n = nrow(X), colnames = cn),
+            class = "gmm_fit")
+}
+
+# The thesis' fallback: one Gaussian with the sample mean and covariance.
+gmm_fallback <- function(X, reason, engine, iterations) {
+  d <- ncol(X)
+  S <- if (nrow(X) >= 2L) stats::cov(X) else matrix(0, d, d)
+  gmm_new(1, matrix(colMeans(X), 1L), array(S, c(d, d, 1L)), X,
+          iterations = if (length(iterations) == 1L) iterations else NA_integer_,
+          converged = FALSE, fallback = TRUE, reason = reason, engine = engine)
+}
+
+# ---- reference engine: mixtools ------------------------------------------
+
+gmm_em_reference <- function(X, k, max_iter, tol, seed) {
+  d <- ncol(X)
+  run <- function() {
+    if (d == 1L) {
+      mixtools::normalmixEM(X[, 1], k = k, epsilon = tol, maxit = max_iter)
+    } else {
+      mixtools::mvnormalmixEM(X, k = k, epsilon = tol, maxit = max_iter)
+    }
+  }
+  # mixtools prints its iteration count and restarts with cat(); keep quiet.
+  utils::capture.output(res <- with_seed(seed, run()))
+  ll_path <- res$all.loglik
+  iterations <- length(ll_path) - 1L
+  last_step <- if (iterations >= 1L) ll_path[iterations + 1L] - ll_path[iterations] else 0
+  if (d == 1L) {
+    means <- matrix(res$mu, k, 1L)
+    covs <- array(res$sigma^2, c(1L, 1L, k))
+  } else {
+    means <- do.call(rbind, lapply(res$mu, as.numeric))
+    covs <- array(unlist(res$sigma), c(d, d, k))
+  }
+  list(weights = as.numeric(res$lambda), means = means, covs = covs,
+       iterations = iterations,
+       converged = iterations < max_iter || last_step <= tol,
+       diverged = last_step < -sqrt(.Machine$double.eps) * (1 + abs(res$loglik)))
+}
+
+# ---- fast engine -----------------------------------------------------------
+
+gmm_em_fast <- function(X, k, max_iter, tol, seed) {
+  n <- nrow(X)
+  d <- ncol(X)
+  # Standardise so the expanded quadratic forms stay well conditioned; the
+  # log-likelihood only shifts by a constant, so `tol` keeps its meaning.
+  centre <- colMeans(X)
+  scale <- sqrt(colSums((X - rep(centre, each = n))^2) / n)
+  Y <- (X - rep(centre, each = n)) / rep(scale, each = n)
+  design <- gmm_design(Y)
+  logdet0 <- determinant(crossprod(Y) / n)$modulus[1]
+  starts <- gmm_starts(Y, k, seed)
+  if (length(starts) == 0L) {
+    return(list(error = sprintf("no starting partition has %d points in every component", d + 1L),
+                iterations = 0L))
+  }
+  runs <- gmm_em_batch(design, starts, k, max_iter, tol, logdet0)
+  done <- vapply(runs, function(r) is.null(r$failed) && r$converged, logical(1))
+  if (!any(done)) {
+    alive <- vapply(runs, function(r) is.null(r$failed), logical(1))
+    if (!any(alive)) {
+      first <- runs[[which(vapply(runs, function(r) r$failed != "merged", logical(1)))[1]]]
+      return(list(error = paste("every start failed; the first with", first$failed),
+                  iterations = first$iterations))
+    }
+    return(list(converged = FALSE, iterations = runs[[which(alive)[1]]]$iterations))
+  }
+  runs <- runs[done]
+  best <- runs[[which.max(vapply(runs, function(r) r$loglik, numeric(1)))]]
+  means <- t(best$mu) * rep(scale, each = k) + rep(centre, each = k)
+  covs <- array(0, c(d, d, k))
+  for (j in seq_len(k)) covs[, , j] <- best$sigma[, , j] * outer(scale, scale)
+  list(weights = best$weights, means = means, covs = covs, iterations = best$iterations,
+       converged = TRUE, diverged = FALSE)
+}
+
+# The monomials a Gaussian log-density is linear in: 1, y_a, y_a * y_b (a <= b).
+gmm_design <- function(Y) {
+  d <- ncol(Y)
+  pairs <- which(upper.tri(diag(d), diag = TRUE), arr.ind = TRUE)
+  pairs <- pairs[order(pairs[, 1], pairs[, 2]), , drop = FALSE]
+  P <- cbind(1, Y, Y[, pairs[, 1], drop = FALSE] * Y[, pairs[, 2], drop = FALSE])
+  list(P = P, d = d, pairs = pairs, n = nrow(Y))
+}
+
+gmm_unmap <- function(labels, k) {
+  z <- matrix(0, length(labels), k)
+  z[cbind(seq_along(labels), labels)] <- 1
+  z
+}
+
+# EM from several starting partitions at once. The starts are columns of
+# one responsibility matrix, so every iteration costs one matrix product for
+# all starts' M-steps and one for their E-steps. Column layout: for k = 2
+# component-major (component j of start a is column (j - 1) * A + a, and only
+# the first component's responsibilities are stored, the second being 1 - z);
+# otherwise start-major (column (a - 1) * k + j). A start leaves the batch
+# when it converges (an iteration raised its log-likelihood by less than
+# `tol`), fails (degenerate component, non-finite log-likelihood) or merges
+# with another. Returns one result per start: the last parameters,
+# log-likelihood (of the standardised data), iterations and convergence, or
+# `failed` with a reason.
+gmm_em_batch <- function(design, starts, k, max_iter, tol, logdet0) {
+  P <- design$P
+  n <- design$n
+  psum <- colSums(P)
+  plogis <- stats::plogis
+  n_starts <- length(starts)
+  results <- vector("list", n_starts)
+  active <- seq_len(n_starts)
+  ll <- rep(-Inf, n_starts)
+  Z <- do.call(cbind, lapply(starts, function(lab) gmm_unmap(lab, k)))
+  if (k == 2L) Z <- Z[, seq(1L, 2L * n_starts, by = 2L), drop = FALSE]
+  cols_of <- if (k == 2L) function(a, A) c(a, A + a) else function(a, A) (a - 1L) * k + seq_len(k)
+  it <- 0L
+  while (length(active) > 0L && it < max_iter) {
+    it <- it + 1L
+    A <- length(active)
+    if (k == 2L) {
+      s1 <- crossprod(P, Z)
+      m <- gmm_mstep(cbind(s1, psum - s1, deparse.level = 0), design, logdet0)
+      failed <- m$bad[seq_len(A)] | m$bad[A + seq_len(A)]
+      # With the constants folded into the intercept row, P %*% C1 is the log
+      # of w1 f1 at every point. The first component's responsibility is a
+      # logistic of the difference of the two, and sum(log w1 f1) is a dot
+      # product with the column sums of P: one matrix product per iteration.
+      C <- m$C
+      C[1L, ] <- C[1L, ] + m$const
+      C1 <- C[, seq_len(A), drop = FALSE]
+      C2 <- C[, A + seq_len(A), drop = FALSE]
+      neg <- P %*% (C2 - C1)
+      E <- exp(neg)
+      if (all(E < Inf)) {
+        # log(w1 f1 + w2 f2) = log(w1 f1) + log1p(w2 f2 / (w1 f1))
+        ll_new <- drop(crossprod(psum, C1)) + .colSums(log1p(E), n, A)
+        Z <- 1 / (1 + E)
+      } else {
+        # the same, safe from overflow (plogis is slower)
+        ll_new <- drop(crossprod(psum, C2)) - .colSums(plogis(neg, log.p = TRUE), n, A)
+        Z <- plogis(neg, lower.tail = FALSE)
+      }
+    } else {
+      m <- gmm_mstep(crossprod(P, Z), design, logdet0)
+      failed <- .colSums(matrix(m$bad, k), k, A) > 0
+      L <- P %*% m$C + rep(m$const, each = n)
+      ll_new <- numeric(A)
+      for (a in seq_len(A)) {
+        cols <- cols_of(a, A)
+        La <- L[, cols, drop = FALSE]
+        top <- La[cbind(seq_len(n), max.col(La, "first"))]
+        lse <- top + log(rowSums(exp(La - top)))
+        ll_new[a] <- sum(lse)
+        Z[, cols] <- exp(La - lse)
+      }
+    }
+    failed <- failed | !is.finite(ll_new)
+    converged <- !failed & (ll_new - ll[active] < tol)
+    ll[active] <- ll_new
+    stop_now <- failed | converged | it == max_iter
+    # Starts whose parameters have come together follow the same path to the
+    # same optimum: keep the first of them only.
+    if (A > 1L && it %% 10L == 0L) {
+      merged <- gmm_merged_starts(m$params, k, A, cols_of) & !stop_now
+      for (a in which(merged)) results[[active[a]]] <- list(failed = "merged", iterations = it)
+      stop_now <- stop_now | merged
+    }
+    for (a in which(stop_now)) {
+      if (!is.null(results[[active[a]]])) next
+      cols <- cols_of(a, A)
+      results[[active[a]]] <- if (failed[a]) {
+        list(failed = gmm_batch_reason(m$bad[cols], ll_new[a]), iterations = it)
+      } else {
+        list(loglik = ll_new[a], iterations = it, converged = converged[a],
+             weights = m$params$weights[cols], mu = m$params$mu[, cols, drop = FALSE],
+             sigma = m$params$sigma[, , cols, drop = FALSE])
+      }
+    }
+    if (any(stop_now)) {
+      keep <- !stop_now
+      active <- active[keep]
+      Z <- Z[, if (k == 2L) keep else rep(keep, each = k), drop = FALSE]
+    }
+  }
+  results
+}
+
+# Which starts sit within 1e-2 (standardised units) of an earlier start's
+# weights, means and covariances, components matched by their order along the
+# first coordinate.
+gmm_merged_starts <- function(params, k, A, cols_of) {
+  sig <- do.call(rbind, lapply(seq_len(A), function(a) {
+    cols <- cols_of(a, A)
+    o <- cols[order(params$mu[1, cols])]
+    c(params$weights[o], params$mu[, o], params$sigma[, , o])
+  }))
+  merged <- logical(A)
+  for (b in seq_len(A)[-1]) {
+    for (a in seq_len(b - 1L)) {
+      if (!merged[a] && max(abs(sig[a, ] - sig[b, ])) < 1e-2) {
+        merged[b] <- TRUE
+        break
+      }
+    }
+  }
+  merged
+}
+
+gmm_batch_reason <- function(bad, ll) {
+  if (any(bad)) sprintf("degenerate component %d (weight below 1/n or singular covariance)",
+                        which(bad)[1])
+  else "non-finite log-likelihood"
+}
+
+# M-step from the sufficient statistics (crossprod of the monomials with the
+# responsibilities), one column per component: the coefficients C (monomials
+# x components) and constants of each component's log-density, i.e.
+# log w_j + log N(y; mu_j, S_j) = const_j + sum_m C[m, j] * monomial_m(y),
+# and `bad`, the components with a weight below 1/n or a covariance below the
+# determinant floor (their coefficients are not usable). Vectorised over
+# components for d = 1 and d = 2 (the thesis' cases), a loop otherwise.
+gmm_mstep <- function(stats, design, logdet0) {
+  d <- design$d
+  n <- design$n
+  nk <- stats[1, ]
+  floor <- logdet0 + log(gmm_det_floor)
+  if (d == 1L) {
+    m <- stats[2, ] / nk
+    v <- stats[3, ] / nk - m^2
+    logdet <- log(pmax(v, 0))
+    C <- rbind(-0.5 * m^2 / v, m / v, -0.5 / v)
+    params <- list(weights = nk / n, mu = matrix(m, 1L), sigma = array(v, c(1L, 1L, length(nk))))
+  } else if (d == 2L) {
+    m1 <- stats[2, ] / nk
+    m2 <- stats[3, ] / nk
+    s11 <- stats[4, ] / nk - m1^2
+    s12 <- stats[5, ] / nk - m1 * m2
+    s22 <- stats[6, ] / nk - m2^2
+    det <- s11 * s22 - s12^2
+    logdet <- log(pmax(det, 0))
+    logdet[!(s11 > 0)] <- -Inf
+    a11 <- s22 / det
+    a12 <- -s12 / det
+    a22 <- s11 / det
+    am1 <- a11 * m1 + a12 * m2
+    am2 <- a12 * m1 + a22 * m2
+    C <- rbind(-0.5 * (m1 * am1 + m2 * am2), am1, am2, -0.5 * a11, -a12, -0.5 * a22)
+    params <- list(weights = nk / n, mu = rbind(m1, m2, deparse.level = 0),
+                   sigma = array(rbind(s11, s12, s12, s22), c(2L, 2L, length(nk))))
+  } else {
+    return(gmm_mstep_general(stats, design, logdet0))
+  }
+  bad <- !(nk >= 1) | !(logdet >= floor)
+  list(C = C, const = log(nk / n) - 0.5 * d * log(2 * pi) - 0.5 * logdet, params = params,
+       bad = bad)
+}
+
+gmm_mstep_general <- function(stats, design, logdet0) {
+  d <- design$d
+  n <- design$n
+  k <- ncol(stats)
+  pairs <- design$pairs
+  sq_idx <- pairs[, 1] + (pairs[, 2] - 1L) * d
+  twice <- ifelse(pairs[, 1] == pairs[, 2], 1, 2)
+  lower <- lower.tri(diag(d))
+  nk <- stats[1, ]
+  mu <- stats[1 + seq_len(d), , drop = FALSE] / rep(nk, each = d)
+  C <- matrix(0, nrow(stats), k)
+  logdet <- rep(-Inf, k)
+  sigma <- array(0, c(d, d, k))
+  for (j in seq_len(k)) {
+    M2 <- matrix(0, d, d)
+    M2[sq_idx] <- stats[1L + d + seq_len(nrow(pairs)), j] / nk[j]
+    M2[lower] <- t(M2)[lower]
+    S <- M2 - tcrossprod(mu[, j])
+    sigma[, , j] <- S
+    R <- if (nk[j] >= 1) tryCatch(chol(S), error = function(e) NULL) else NULL
+    if (is.null(R)) next
+    logdet[j] <- 2 * sum(log(diag(R)))
+    A <- chol2inv(R)
+    Am <- drop(A %*% mu[, j])
+    # -0.5 * (y'Ay - 2 m'Ay + m'Am) in the monomial basis
+    C[, j] <- -0.5 * c(sum(mu[, j] * Am), -2 * Am, twice * A[sq_idx])
+  }
+  bad <- !(nk >= 1) | !(logdet >= logdet0 + log(gmm_det_floor))
+  list(C = C, const = log(nk / n) - 0.5 * d * log(2 * pi) - 0.5 * logdet,
+       params = list(weights = nk / n, mu = mu, sigma = sigma), bad = bad)
+}
+
+# Starting partitions: quantile groups along the first and second principal
+# axes, k-means seeded along the first axis, and k-means from random centres
+# (drawn under `seed`, without disturbing the global RNG). Partitions with a
+# group too small for a covariance are dropped.
+gmm_starts <- function(Y, k, seed) {
+  n <- nrow(Y)
+  d <- ncol(Y)
+  axes <- eigen(crossprod(Y) / n, symmetric = TRUE)$vectors
+  proj <- Y %*% axes
+  by_quantile <- function(x) {
+    r <- rank(x, ties.method = "first")
+    pmin(k, 1L + floor((r - 1) * k / n))
+  }
+  starts <- list(by_quantile(proj[, 1]))
+  if (d >= 2L) starts <- c(starts, list(by_quantile(proj[, 2])))
+  spread <- vapply(seq_len(k), function(g) which.min(abs(rank(proj[, 1]) - (g - 0.5) * n / k)),
+                   integer(1))
+  starts <- c(starts, list(gmm_kmeans(Y, Y[spread, , drop = FALSE])))
+  if (k == 2L) starts <- c(starts, list(gmm_best_split(proj[, 1])))
+  random <- with_seed(if (is.null(seed)) 1L else seed,
+                      lapply(1:4, function(i) sample.int(n, k)))
+  starts <- c(starts, lapply(random, function(idx) gmm_kmeans(Y, Y[idx, , drop = FALSE])))
+  big_enough <- vapply(starts, function(lab) {
+    length(unique(lab)) == k && min(tabulate(lab, k)) >= d + 1L
+  }, logical(1))
+  # the same partition under permuted labels is one start
+  canonical <- lapply(starts[big_enough], function(lab) match(lab, unique(lab)))
+  unique(canonical)
+}
+
+# A few Lloyd iterations from given centres.
+gmm_kmeans <- function(Y, centres, iters = 10L) {
+  lab <- integer(nrow(Y))
+  for (i in seq_len(iters)) {
+    dist <- -2 * Y %*% t(centres) + rep(rowSums(centres^2), each = nrow(Y))
+    new <- max.col(-dist, ties.method = "first")
+    if (identical(new, lab)) break
+    lab <- new
+    for (g in unique(lab)) centres[g, ] <- colMeans(Y[lab == g, , drop = FALSE])
+  }
+  lab
+}
+
+# The two-group split of a projection with the least within-group sum of
+# squares (a one-dimensional 2-means, solved exactly).
+gmm_best_split <- function(x) {
+  n <- length(x)
+  o <- order(x)
+  s <- x[o]
+  cs <- cumsum(s)
+  cs2 <- cumsum(s^2)
+  m <- seq_len(n - 1L)
+  within <- (cs2[m] - cs[m]^2 / m) + ((cs2[n] - cs2[m]) - (cs[n] - cs[m])^2 / (n - m))
+  cut <- which.min(within)
+  lab <- integer(n)
+  lab[o] <- ifelse(seq_len(n) <= cut, 1L, 2L)
+  lab
+}
+
+# ---- densities, log-likelihood, sampling ------------------------------------
+
+# Log-density of each row of X under N(mu, S). A singular S (a fallback on
+# collinear or identical points, or a point mass) is handled as the density on
+# its support: points off the support get -Inf.
+gmm_log_dnorm <- function(X, mu, S) {
+  d <- ncol(X)
+  Xc <- X - rep(mu, each = nrow(X))
+  e <- eigen(S, symmetric = TRUE)
+  lam <- e$values
+  pos <- lam > max(lam, 0) * d * 1e-12 & lam > 0
+  Z <- Xc %*% e$vectors
+  q <- rowSums(Z[, pos, drop = FALSE]^2 / rep(lam[pos], each = nrow(X)))
+  out <- -0.5 * q - 0.5 * sum(log(lam[pos])) - 0.5 * sum(pos) * log(2 * pi)
+  if (any(!pos)) {
+    size <- max(1, sqrt(max(lam, 0)), abs(mu))
+    off <- rowSums(Z[, !pos, drop = FALSE]^2) > (1e-8 * size)^2
+    out[off] <- -Inf
+  }
+  out
+}
+
+gmm_log_components <- function(weights, means, covs, X) {
+  k <- length(weights)
+  L <- matrix(0, nrow(X), k)
+  for (j in seq_len(k)) {
+    L[, j] <- log(weights[j]) + gmm_log_dnorm(X, means[j, ], as.matrix(covs[, , j]))
+  }
+  L
+}
+
+gmm_log_density <- function(weights, means, covs, X) {
+  L <- gmm_log_components(weights, means, covs, X)
+  top <- apply(L, 1L, max)
+  out <- top + log(rowSums(exp(L - top)))
+  out[top == -Inf] <- -Inf
+  out
+}
+
+gmm_loglik_params <- function(weights, means, covs, X) {
+  sum(gmm_log_density(weights, matrix(means, length(weights)), covs, X))
+}
+
+check_gmm_fit <- function(fit, call) {
+  if (!inherits(fit, "gmm_fit")) {
+    hm_abort("{.arg fit} must be a {.cls gmm_fit} object (from {.fn gmm_fit}).", "bad_input",
+             argument = "fit", call = call)
+  }
+  invisible(fit)
+}
+
+gmm_points <- function(fit, X, call) {
+  d <- ncol(fit$means)
+  if (is.numeric(X) && is.null(dim(X))) X <- matrix(X, ncol = d, byrow = TRUE)
+  X <- gmm_data(X, "X", call = call)
+  if (ncol(X) != d) {
+    hm_abort("{.arg X} must have {d} column{?s}, like the data the mixture was fitted to.",
+             "bad_input", argument = "X", call = call)
+  }
+  X
+}
+
+#' Density and log-likelihood of a Gaussian mixture
+#'
+#' `gmm_density()` evaluates the mixture density at each row of `X`;
+#' `gmm_loglik()` sums the log-densities (computed on the log scale, so it
+#' stays finite where the density underflows). A component with a singular
+#' covariance (a fallback fitted to collinear or identical points) has its
+#' density taken on its support, and zero off it.
+#'
+#' @param fit A [gmm_fit()] object.
+#' @param X An `m x d` matrix of points (a vector of length `d` is one point;
+#'   for `d = 1` a vector is a set of points).
+#' @return `gmm_density()`: a numeric vector of length `m`; `gmm_loglik()`:
+#'   a number.
+#' @export
+#' @examples
+#' X <- rbind(matrix(rnorm(100), 50), matrix(rnorm(100, mean = 4), 50))
+#' fit <- gmm_fit(X)
+#' gmm_density(fit, rbind(c(0, 0), c(4, 4), c(2, 2)))
+#' gmm_loglik(fit, X)
+gmm_density <- function(fit, X) {
+  call <- rlang::caller_env()
+  check_gmm_fit(fit, call)
+  X <- gmm_points(fit, X, call)
+  exp(gmm_log_density(fit$weights, fit$means, fit$covs, X))
+}
+
+#' @rdname gmm_density
+#' @export
+gmm_loglik <- function(fit, X) {
+  call <- rlang::caller_env()
+  check_gmm_fit(fit, call)
+  X <- gmm_points(fit, X, call)
+  gmm_loglik_params(fit$weights, fit$means, fit$covs, X)
+}
+
+#' Draw from a Gaussian mixture
+#'
+#' Picks a component for each draw with the mixture weights, then draws from
+#' that component's Gaussian (through a symmetric square root of its
+#' covariance, so singular fallback covariances and point masses work too).
+#' Uses the random number generator: set a seed first for reproducible draws.
+#'
+#' @param fit A [gmm_fit()] object.
+#' @param n Number of draws.
+#' @return An `n x d` matrix.
+#' @export
+#' @examples
+#' X <- rbind(matrix(rnorm(100), 50), matrix(rnorm(100, mean = 4), 50))
+#' fit <- gmm_fit(X)
+#' set.seed(1)
+#' gmm_sample(fit, 5)
+gmm_sample <- function(fit, n) {
+  call <- rlang::caller_env()
+  check_gmm_fit(fit, call)
+  if (!is.numeric(n) || length(n) != 1L || is.na(n) || n < 0 || n != round(n)) {
+    hm_abort("{.arg n} must be a non-negative whole number, not {.val {n}}.", "bad_input",
+             argument = "n", call = call)
+  }
+  k <- length(fit$weights)
+  d <- ncol(fit$means)
+  comp <- if (k == 1L) rep(1L, n) else sample.int(k, n, replace = TRUE, prob = fit$weights)
+  Z <- matrix(stats::rnorm(n * d), n, d)
+  out <- matrix(0, n, d, dimnames = list(NULL, colnames(fit$means)))
+  for (j in seq_len(k)) {
+    rows <- which(comp == j)
+    if (length(rows) == 0L) next
+    e <- eigen(as.matrix(fit$covs[, , j]), symmetric = TRUE)
+    root <- e$vectors %*% (sqrt(pmax(e$values, 0)) * t(e$vectors))
+    out[rows, ] <- Z[rows, , drop = FALSE] %*% root + rep(fit$means[j, ], each = length(rows))
+  }
+  out
+}
+
+#' @export
+print.gmm_fit <- function(x, ...) {
+  k <- length(x$weights)
+  d <- ncol(x$means)
+  cat(sprintf("<gmm_fit> %d component%s in %d dimension%s, n = %s (%s engine)\n", k,
+              if (k == 1) "" else "s", d, if (d == 1) "" else "s",
+              if (is.null(x$n)) "?" else x$n, x$engine))
+  cat(sprintf("  log-likelihood %.4f after %s EM iteration%s%s\n", x$loglik,
+              if (is.na(x$iterations)) "?" else x$iterations,
+              if (identical(x$iterations, 1L)) "" else "s",
+              if (isTRUE(x$converged)) " (converged)" else ""))
+  if (isTRUE(x$fallback)) cat("  fallback: single Gaussian -- ", x$reason, "\n", sep = "")
+  tab <- data.frame(weight = x$weights, x$means, check.names = FALSE)
+  names(tab)[-1] <- paste0("mean_", if (is.null(colnames(x$means))) seq_len(d) else colnames(x$means))
+  print(tab, digits = 4, row.names = FALSE)
+  invisible(x)
+}

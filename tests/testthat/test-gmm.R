@@ -1,0 +1,202 @@
+# Planted two-component mixtures: n1 = round(n * w) points from N(0, S1),
+# the rest from N(m2, S2).
+planted_mixture <- function(seed, n, w, m2, S1 = diag(length(m2)), S2 = diag(length(m2))) {
+  withr::with_seed(seed, {
+    n1 <- round(n * w)
+    draw <- function(m, S, k) {
+      matrix(rnorm(k * length(m)), k) %*% chol(S) + rep(m, each = k)
+    }
+    rbind(draw(rep(0, length(m2)), S1, n1), draw(m2, S2, n - n1))
+  })
+}
+
+test_that("a planted bivariate mixture is recovered", {
+  X <- planted_mixture(1, 400, 0.65, c(5, 3), S2 = matrix(c(1, 0.4, 0.4, 0.8), 2))
+  fit <- gmm_fit(X)
+  expect_s3_class(fit, "gmm_fit")
+  expect_false(fit$fallback)
+  expect_true(fit$converged)
+  expect_true(is.na(fit$reason))
+  # ordered by weight: the planted heavier component first
+  expect_equal(fit$weights, c(0.65, 0.35), tolerance = 0.05)
+  expect_equal(unname(fit$means[1, ]), c(0, 0), tolerance = 0.2)
+  expect_equal(unname(fit$means[2, ]), c(5, 3), tolerance = 0.05)
+  expect_equal(unname(fit$covs[, , 2]), matrix(c(1, 0.4, 0.4, 0.8), 2), tolerance = 0.3)
+  expect_equal(dim(fit$covs), c(2, 2, 2))
+  expect_equal(fit$loglik, gmm_loglik(fit, X))
+  # refitting permuted rows gives the same mixture in the same order
+  perm <- withr::with_seed(2, sample(nrow(X)))
+  refit <- gmm_fit(X[perm, ])
+  expect_equal(refit$weights, fit$weights, tolerance = 1e-6)
+  expect_equal(refit$means, fit$means, tolerance = 1e-6)
+})
+
+test_that("a planted univariate mixture is recovered, vectors accepted", {
+  x <- withr::with_seed(3, c(rnorm(150, 10, 1), rnorm(100, 16, 2)))
+  fit <- gmm_fit(x)
+  expect_false(fit$fallback)
+  expect_equal(fit$weights, c(0.6, 0.4), tolerance = 0.05)
+  expect_equal(as.numeric(fit$means), c(10, 16), tolerance = 0.05)
+  expect_equal(sqrt(as.numeric(fit$covs)), c(1, 2), tolerance = 0.2)
+  # the density integrates to one
+  expect_equal(integrate(function(v) gmm_density(fit, v), -Inf, Inf)$value, 1, tolerance = 1e-6)
+})
+
+test_that("the fast engine reaches at least the mixtools log-likelihood", {
+  skip_if_not_installed("mixtools")
+  sets <- list(
+    planted_mixture(11, 60, 0.6, c(4, 2), S2 = matrix(c(1, 0.5, 0.5, 1), 2)),
+    planted_mixture(12, 60, 0.5, c(-3, 3), S1 = matrix(c(2, -0.8, -0.8, 1), 2),
+                    S2 = diag(c(0.5, 2))),
+    planted_mixture(21, 80, 0.6, 3, S2 = matrix(0.25)),
+    planted_mixture(22, 80, 0.6, 2),
+    planted_mixture(23, 80, 0.6, 4, S2 = matrix(4)))
+  for (i in seq_along(sets)) {
+    fast <- gmm_fit(sets[[i]])
+    ref <- gmm_fit(sets[[i]], engine = "reference", seed = i)
+    expect_false(ref$fallback)
+    expect_false(fast$fallback)
+    expect_gte(fast$loglik, ref$loglik - 1e-6)
+    # and the log-likelihoods are computed the same way for both
+    expect_equal(ref$loglik, gmm_loglik(ref, sets[[i]]))
+  }
+})
+
+test_that("the fast engine is deterministic and leaves the RNG as it was", {
+  X <- planted_mixture(3, 150, 0.5, c(2, 2))
+  set.seed(1)
+  before <- .Random.seed
+  a <- gmm_fit(X)
+  expect_identical(.Random.seed, before)
+  expect_identical(gmm_fit(X), a)
+})
+
+test_that("the reference engine is reproducible under a seed and keeps the RNG", {
+  skip_if_not_installed("mixtools")
+  X <- planted_mixture(11, 60, 0.6, c(4, 2))
+  set.seed(5)
+  before <- .Random.seed
+  a <- gmm_fit(X, engine = "reference", seed = 3)
+  expect_identical(.Random.seed, before)
+  b <- gmm_fit(X, engine = "reference", seed = 3)
+  expect_identical(a$means, b$means)
+  expect_identical(a$engine, "reference")
+})
+
+test_that("degenerate inputs fall back to one Gaussian with the reason recorded", {
+  cases <- list(
+    identical = list(X = matrix(2, 20, 2), reason = "identical"),
+    collinear = list(X = cbind(1:30, 3 * (1:30) + 1), reason = "collinear"),
+    three = list(X = matrix(c(1, 2, 4, 0, 1, 5), 3), reason = "too few points"),
+    univariate_identical = list(X = rep(1, 10), reason = "identical"))
+  for (case in cases) {
+    for (engine in c("fast", "reference")) {
+      fit <- gmm_fit(case$X, engine = engine)
+      X <- as.matrix(case$X)
+      expect_true(fit$fallback)
+      expect_false(fit$converged)
+      expect_match(fit$reason, case$reason)
+      expect_equal(fit$weights, 1)
+      expect_equal(unname(fit$means[1, ]), colMeans(X))
+      expect_equal(unname(as.matrix(fit$covs[, , 1])), unname(cov(X)))
+      draws <- withr::with_seed(1, gmm_sample(fit, 50))
+      expect_true(all(is.finite(draws)))
+    }
+  }
+  # draws from the collinear fallback stay on the line
+  fit <- gmm_fit(cases$collinear$X)
+  draws <- withr::with_seed(1, gmm_sample(fit, 100))
+  expect_equal(draws[, 2], 3 * draws[, 1] + 1, tolerance = 1e-8)
+  expect_true(is.finite(fit$loglik))
+  # EM that has not converged within max_iter is a recorded fallback too
+  X <- planted_mixture(4, 200, 0.5, c(1, 1))
+  fit <- gmm_fit(X, max_iter = 2)
+  expect_true(fit$fallback)
+  expect_match(fit$reason, "did not converge within 2 iterations")
+  expect_equal(fit$iterations, 2L)
+  # one requested component is a closed-form fit, not a failure
+  one <- gmm_fit(X, k = 1)
+  expect_false(one$fallback)
+  expect_equal(unname(one$means[1, ]), colMeans(X))
+})
+
+test_that("a component collapsing onto repeated points is never returned", {
+  X <- rbind(withr::with_seed(6, matrix(rnorm(120), 60)), matrix(c(8, 8), 8, 2, byrow = TRUE))
+  for (engine in c("fast", "reference")) {
+    fit <- gmm_fit(X, engine = engine, seed = 1)
+    dets <- apply(fit$covs, 3, det)
+    expect_true(fit$fallback || all(dets > 1e-8 * det(cov(X))))
+    if (fit$fallback) expect_match(fit$reason, "EM failed")
+  }
+  # here the fast engine's every start collapses: a recorded fallback
+  fit <- gmm_fit(X)
+  expect_true(fit$fallback)
+  expect_match(fit$reason, "every start failed; the first with degenerate component")
+  expect_gt(fit$iterations, 0)
+})
+
+test_that("gmm_sample draws follow the fitted mixture", {
+  X <- planted_mixture(7, 500, 0.8, c(6, -4), S2 = matrix(c(1, -0.3, -0.3, 0.5), 2))
+  fit <- gmm_fit(X)
+  draws <- withr::with_seed(8, gmm_sample(fit, 4000))
+  expect_equal(dim(draws), c(4000, 2))
+  # KS test of a projection against the mixture's exact distribution of it
+  a <- c(0.6, -0.8)
+  mix_cdf <- function(fit, a) {
+    m <- drop(fit$means %*% a)
+    s <- sqrt(apply(fit$covs, 3, function(S) drop(t(a) %*% S %*% a)))
+    function(q) rowSums(sapply(seq_along(fit$weights),
+                               function(j) fit$weights[j] * pnorm(q, m[j], s[j])))
+  }
+  cdf <- mix_cdf(fit, a)
+  expect_gt(suppressWarnings(ks.test(drop(draws %*% a), cdf))$p.value, 0.001)
+  # the same test rejects a sampler that ignores the weights
+  wrong <- fit
+  wrong$weights <- c(0.5, 0.5)
+  bad_draws <- withr::with_seed(8, gmm_sample(wrong, 4000))
+  expect_lt(suppressWarnings(ks.test(drop(bad_draws %*% a), cdf))$p.value, 0.001)
+  # same seed, same draws; the draws use the global RNG
+  expect_identical(withr::with_seed(8, gmm_sample(fit, 10)), withr::with_seed(8, gmm_sample(fit, 10)))
+  expect_false(identical(gmm_sample(fit, 10), gmm_sample(fit, 10)))
+  expect_equal(dim(gmm_sample(fit, 0)), c(0, 2))
+})
+
+test_that("density is a proper mixture density and loglik its log-sum", {
+  X <- planted_mixture(9, 200, 0.5, c(3, 3))
+  fit <- gmm_fit(X)
+  g <- seq(-6, 9, by = 0.05)
+  grid <- as.matrix(expand.grid(g, g))
+  expect_equal(sum(gmm_density(fit, grid)) * 0.05^2, 1, tolerance = 1e-3)
+  expect_equal(gmm_loglik(fit, X), sum(log(gmm_density(fit, X))), tolerance = 1e-10)
+  dnorm2 <- function(x, m, S) {
+    z <- sweep(x, 2, m)
+    exp(-0.5 * rowSums((z %*% solve(S)) * z)) / (2 * pi * sqrt(det(S)))
+  }
+  manual <- fit$weights[1] * dnorm2(X[1:5, ], fit$means[1, ], fit$covs[, , 1]) +
+    fit$weights[2] * dnorm2(X[1:5, ], fit$means[2, ], fit$covs[, , 2])
+  expect_equal(gmm_density(fit, X[1:5, ]), manual, tolerance = 1e-10)
+  expect_length(gmm_density(fit, c(0, 0)), 1)
+  # far from the data the density underflows but the log-likelihood stays finite
+  expect_true(is.finite(gmm_loglik(fit, rbind(c(60, 60)))))
+})
+
+test_that("bad inputs raise classed errors", {
+  X <- planted_mixture(1, 50, 0.5, c(3, 3))
+  X[4, 2] <- NaN
+  expect_error(gmm_fit(X), class = "handmotion_error_bad_input")
+  expect_error(gmm_fit(X), "row 4, column 2")
+  expect_error(gmm_fit(matrix(1:10, 5), k = 0), class = "handmotion_error_bad_input")
+  expect_error(gmm_fit(matrix(1:10, 5), tol = -1), class = "handmotion_error_bad_input")
+  expect_error(gmm_fit("a"), class = "handmotion_error_bad_input")
+  fit <- gmm_fit(planted_mixture(1, 50, 0.5, c(3, 3)))
+  expect_error(gmm_density(fit, matrix(0, 2, 3)), class = "handmotion_error_bad_input")
+  expect_error(gmm_sample(fit, -1), class = "handmotion_error_bad_input")
+  expect_error(gmm_sample(list(), 2), class = "handmotion_error_bad_input")
+})
+
+test_that("print reports the fit and any fallback", {
+  expect_snapshot({
+    print(gmm_fit(planted_mixture(1, 100, 0.6, c(5, 5))))
+    print(gmm_fit(matrix(1, 5, 2)))
+  })
+})
