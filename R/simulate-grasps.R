@@ -39,9 +39,11 @@
 #' spread, they are caught by a fence such as
 #' `n > max(Q3 + 3 * IQR, 1.5 * median)`. A few recordings per type and object
 #' (`stall_per_object`, at most a tenth of them) also stall mid-closing for a
-#' while, within ordinary length (like the stationary warping paths of the
-#' thesis' Figure 5.1).
-#' Both are flagged in the metadata.
+#' while, within ordinary length (a hesitation mid-motion). Alignment absorbs
+#' such a stall by mapping many original frames onto one template frame; it is
+#' not the flat, "held still" warping path of the thesis' Figure 5.1, which a
+#' recording lacking part of the motion produces, so the aligner keeps most of
+#' them. Both are flagged in the metadata.
 #'
 #' @section Seeds:
 #' The result depends only on the arguments, never on the global random
