@@ -163,7 +163,7 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   motion <- pmax(fend - f0, 1e-6)
   pf <- pmin(pmax(p$peak_time[1] + p$peak_time[2] * e_peak, 0.2), 0.8)
   fpk <- f0 + pf * motion
-  jit <- p$onset_jitter * motion
+  jit <- p$onset_jitter * p$jitter_scale[[g]] * motion
   on_f <- pmin(pmax(f0 + jit * e_on, 1), fpk - 0.1 * motion)
   pk_f <- pmin(pmax(fpk + jit * e_pk, on_f + 0.1 * motion), fend - 0.1 * motion)
   stall_start <- fpk + u_stall_pos * 0.8 * (fend - fpk)
@@ -171,14 +171,24 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   # ---- postures (recordings x 12 driven DoFs) --------------------------------
   L <- p$loadings
   s_idx <- design$subject
-  offset <- subj$z %*% t(L) + p$subject_dof_sd * subj$u            # S x 12: the subject's hand
+  factors <- subj$z %*% t(L)                                        # S x 12: the subject's hand
+  offset <- factors + p$subject_dof_sd * subj$u
+  # the type's posture, its distance from the mean posture of all types scaled
+  # by posture_spread (calibration: how distinct final postures are), and
+  # the subject's factors scaled per type (calibration: Table 5.7's shape)
+  centre <- colMeans(p$postures)
+  base <- centre + p$posture_spread[[g]] * (p$postures[g, ] - centre)
+  type_offset <- offset + (p$factor_scale[[g]] - 1) * factors
   logsize <- log(design$size)
-  final <- rep_row(p$postures[g, ], N) + offset[s_idx, , drop = FALSE] +
+  # final_variability scales every within-type variation of the final posture
+  final <- rep_row(base, N) + p$final_variability * (type_offset[s_idx, , drop = FALSE] +
     p$subject_type_sd * e_subtype[s_idx, , drop = FALSE] +
-    outer(logsize, p$object_response[g, ]) + p$trial_posture_sd * e_post
+    outer(logsize, p$object_response[g, ]) + p$trial_posture_sd * e_post)
   rest <- rep_row(p$rest, N) + p$subject_rest_share * offset[s_idx, , drop = FALSE] + p$rest_sd * e_rest
   amp <- p$aperture_scale[g] * design$size^p$object_aperture * exp(p$aperture_sd * e_ap)
-  peak <- rest + outer(amp, p$aperture)
+  # pre-shaping: on the way, the open hand already leans towards the type's
+  # final posture (a share `preshape` of its distance from the mean posture)
+  peak <- rest + outer(amp, p$aperture) + rep_row(p$preshape * (base - centre), N)
 
   # ---- trajectories -----------------------------------------------------------
   Ft <- sum(n)

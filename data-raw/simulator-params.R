@@ -22,7 +22,23 @@ target_frames <- data.frame(id = tab$grasp_id, name = tab$grasp_name,
 
 simulator_defaults <- sim_default_params(target_frames)
 
-# --- calibration adjustments go here (modify `simulator_defaults`) ---
+# --- calibration: the values data-raw/calibrate-simulator.R found -----------
+# (simulator parameters only; see the Calibration section of ?simulator_params)
+cal_file <- file.path("data-raw", "simulator-calibration.csv")
+if (file.exists(cal_file)) {
+  cal <- utils::read.csv(cal_file, stringsAsFactors = FALSE)
+  for (el in unique(cal$parameter)) {
+    rows <- cal[cal$parameter == el, ]
+    if (!el %in% names(simulator_defaults)) stop("unknown simulator parameter in ", cal_file, ": ", el)
+    if (all(is.na(rows$grasp_id))) {
+      simulator_defaults[[el]][] <- rows$value
+    } else {
+      stopifnot(length(simulator_defaults[[el]]) == 33L, all(rows$grasp_id %in% 1:33))
+      simulator_defaults[[el]][rows$grasp_id] <- rows$value
+    }
+  }
+  cat("applied", nrow(cal), "calibrated values from", cal_file, "\n")
+}
 
 usethis_free_save <- function(..., file) save(..., file = file, compress = "xz", version = 2)
 usethis_free_save(simulator_defaults, file = file.path("R", "sysdata.rda"))

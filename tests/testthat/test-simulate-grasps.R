@@ -11,6 +11,11 @@ quiet_params <- function(...) {
                         noise_sd = 0, drift_sd = 0, dip_sd = 0, aperture_sd = 0,
                         loadings = simulator_params()$loadings * 0,
                         object_response = simulator_params()$object_response * 0)
+  # the calibration knobs back to 1: these tests are about the model as built
+  # from the taxonomy (test-calibration.R covers the knobs)
+  p$posture_spread[] <- 1
+  p$factor_scale[] <- 1
+  p$final_variability <- 1
   over <- list(...)
   p[names(over)] <- over
   p

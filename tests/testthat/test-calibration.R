@@ -1,0 +1,135 @@
+# The simulator's calibration (data-raw/calibrate-simulator.R) against the
+# thesis' chapter-5 figures. The full check runs the whole default pipeline
+# and takes minutes, so it runs only with HANDMOTION_SLOW_TESTS=true; the
+# always-on checks use types whose figures do not depend on the other types
+# (per-type fits and last-frame PCAs on the full 30-subject design).
+
+quiet_knob_params <- function(...) {
+  simulator_params(subject_dof_sd = 0, subject_type_sd = 0, trial_posture_sd = 0, rest_sd = 0,
+                   noise_sd = 0, drift_sd = 0, dip_sd = 0, aperture_sd = 0,
+                   object_response = simulator_params()$object_response * 0, ...)
+}
+per_type <- function(value) stats::setNames(rep(value, 33), feix_taxonomy$name)
+last_frames_of <- function(g) t(vapply(recordings(g), function(r) r[nrow(r), ], numeric(16)))
+
+test_that("posture_spread pulls the final postures towards their mean", {
+  p1 <- quiet_knob_params(loadings = simulator_params()$loadings * 0, posture_spread = per_type(1))
+  p0 <- p1
+  p0$posture_spread[] <- 0
+  ph <- p1
+  ph$posture_spread[] <- 0.5
+  sim <- function(p) last_frames_of(simulate_grasps(subjects = 1, grasps = c(3, 14, 22), objects = 1,
+                                                    trials = 1, overlong = FALSE, params = p))
+  lf1 <- sim(p1); lf0 <- sim(p0); lfh <- sim(ph)
+  # spread 0: every type ends in the same posture (the mean of all 33)
+  expect_lt(max(abs(sweep(lf0, 2, lf0[1, ]))), 1e-9)
+  centre <- colMeans(p1$postures)
+  expect_equal(unname(lf0[1, names(centre)]), unname(centre))
+  # spread 1/2: half-way between the mean and the taxonomy posture
+  expect_equal(lfh[, names(centre)], (lf1[, names(centre)] + lf0[, names(centre)]) / 2)
+})
+
+test_that("factor_scale multiplies the subject factors of one type only", {
+  L <- simulator_params()$loadings
+  p <- quiet_knob_params(loadings = L, factor_scale = per_type(1), posture_spread = per_type(1),
+                         final_variability = 1)
+  p$factor_scale[3] <- 2
+  g <- simulate_grasps(subjects = 20, grasps = c(3, 14), objects = 1, trials = 1, overlong = FALSE,
+                       params = p, seed = 3)
+  lf <- last_frames_of(g)[, rownames(L)]
+  is3 <- g$meta$grasp == "Medium Wrap"
+  dev3 <- sweep(lf[is3, ], 2, p$postures[3, ])
+  dev14 <- sweep(lf[!is3, ], 2, p$postures[14, ])
+  # the same subjects' factors, twice as large in type 3
+  expect_equal(unname(dev3), unname(2 * dev14), tolerance = 1e-8)
+})
+
+test_that("preshape moves the peak aperture towards the type's final posture, not the end", {
+  sim <- function(share) {
+    p <- quiet_knob_params(loadings = simulator_params()$loadings * 0, posture_spread = per_type(1),
+                           preshape = share, onset_jitter = 0, stall_per_object = c(0, 0),
+                           peak_time = c(mean = 0.45, sd = 0))
+    recordings(simulate_grasps(subjects = 1, grasps = 24, objects = 1, trials = 1, overlong = FALSE,
+                               params = p))[[1]]
+  }
+  r0 <- sim(0); r1 <- sim(0.5)
+  p <- simulator_params()
+  lean <- 0.5 * (p$postures[24, ] - colMeans(p$postures))
+  n <- nrow(r0)
+  expect_equal(r1[n, ], r0[n, ])                      # same final posture
+  expect_equal(r1[1, ], r0[1, ])                      # same rest
+  # in mid-motion the difference points along the type's lean
+  mid <- r1[, names(lean)] - r0[, names(lean)]
+  k <- which.max(rowSums(mid^2))
+  expect_gt(stats::cor(mid[k, ], lean), 0.99)
+  expect_error(simulator_params(preshape = 2), class = "handmotion_error_bad_params")
+})
+
+test_that("jitter_scale sets the unexplained timing variation of a type", {
+  fit_var <- function(scale) {
+    p <- simulator_params(jitter_scale = per_type(scale))
+    g <- simulate_grasps(subjects = 6, grasps = 3, objects = 2, trials = 2, params = p, seed = 2)
+    mean(summary(fit_grasp_models(g, seed = 1))$mean_var)
+  }
+  # no jitter: the FPCs explain more; much jitter: less
+  expect_gt(fit_var(0), fit_var(3) + 1)
+})
+
+test_that("calibration_report() recomputes every target and lays the thesis beside", {
+  g <- simulate_grasps(subjects = 3, grasps = c(9, 22), objects = 2, trials = 2, seed = 1)
+  rep <- calibration_report(g)
+  expect_s3_class(rep, "calibration_report")
+  expect_equal(rep$types$grasp_id, c(9L, 22L))
+  expect_equal(nrow(rep$targets), 6L)
+  expect_type(rep$targets$ok, "logical")
+  th <- thesis_results
+  expect_equal(rep$types$thesis_pc5, th$table_5_7$pc5[c(9, 22)])
+  expect_equal(rep$types$thesis_mean_var, th$table_5_2$mean[c(9, 22)])
+  # ours are computed from the fits, not copied
+  expect_equal(rep$types$target_frames, as.integer(simulator_params()$target_frames$frames[c(9, 22)]))
+  expect_true(all(rep$types$recall_last_frame >= 0 & rep$types$recall_last_frame <= 1))
+  expect_equal(rep$targets$ours[5], mean(c(rep$types$recall_last_frame)), tolerance = 0.2)
+  expect_output(print(rep), "targets within tolerance")
+  expect_error(calibration_report(g, models = "no"), class = "handmotion_error_bad_input")
+  expect_error(calibration_report(g, last_frame = 1), class = "handmotion_error_bad_input")
+})
+
+test_that("the default data meet the per-type targets (subset of types, full design)", {
+  # Per-type figures need only that type's recordings: simulate_grasps(grasps =)
+  # is exactly that part of the default data, each model and each last-frame
+  # PCA is fitted on its own type.
+  types <- c(9, 22, 24)
+  g <- simulate_grasps(grasps = types)
+  ms <- fit_grasp_models(g, seed = 1)
+  s <- summary(ms)
+  cv <- cumulative_variance(fit_last_frame_pca(g, k = 5))
+  th <- thesis_results
+  tol <- calibration_tolerances()
+  expect_equal(s$target_length, th$table_5_1$target_frames[types])
+  expect_true(all(abs(s$mean_var - th$table_5_2$mean[types]) <= tol[["mean_var"]]),
+              info = paste(round(s$mean_var, 2), collapse = " "))
+  expect_true(all(abs(cv$pc5 - th$table_5_7$pc5[types]) <= tol[["pc5"]]),
+              info = paste(round(cv$pc5, 3), collapse = " "))
+})
+
+test_that("the stored calibration is what data-raw/simulator-calibration.csv says", {
+  f <- test_path("..", "..", "data-raw", "simulator-calibration.csv")
+  skip_if_not(file.exists(f), "data-raw/ not available (installed package)")
+  cal <- utils::read.csv(f, stringsAsFactors = FALSE)
+  p <- simulator_params()
+  for (i in seq_len(nrow(cal))) {
+    v <- if (is.na(cal$grasp_id[i])) p[[cal$parameter[i]]] else p[[cal$parameter[i]]][[cal$grasp_id[i]]]
+    expect_equal(unname(v), cal$value[i], info = paste(cal$parameter[i], cal$grasp_id[i]))
+  }
+})
+
+test_that("the whole default pipeline is the thesis' twin (slow)", {
+  skip_if_not(identical(Sys.getenv("HANDMOTION_SLOW_TESTS"), "true"),
+              "set HANDMOTION_SLOW_TESTS=true to run the full calibration check")
+  rep <- calibration_report(held_out = TRUE, folds = 5)
+  expect_true(all(rep$targets$ok), info = paste(utils::capture.output(print(rep)), collapse = "\n"))
+  expect_equal(rep$types$target_frames, rep$types$thesis_target_frames)
+  h <- rep$held_out
+  expect_false(anyNA(h$held_out))
+  expect_true(all(h$held_out < h$in_sample))
+})
