@@ -256,7 +256,9 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     v <- g$meta[[by]]
     if (is.factor(v)) intersect(levels(v), as.character(v)) else unique(as.character(v))
   })))
-  p <- do.call(rbind, poses)
+  # sets may carry different metadata (recorded vs generated): keep the shared columns
+  common <- Reduce(intersect, lapply(poses, names))
+  p <- do.call(rbind, lapply(poses, function(d) d[common]))
   p$group <- factor(p$group, levels = unique(c(lev, unique(p$group))))
   p$set <- factor(p$set, levels = names(sets))
   # several recordings of one group and set are overlaid in the same panel

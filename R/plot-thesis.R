@@ -1,0 +1,168 @@
+# Figures of the thesis' chapter 5 that belong to no model class: the frame
+# counts of one grasp type before anything is removed (the left half of
+# Figure 5.1, with the over-long recordings the model drops marked) and the
+# temporal comparisons of Tables 5.4 and 5.5 (a recorded and a generated grasp
+# drawn as hands at the same fractions of their durations). The drawing
+# itself reuses the hand-pose helpers of R/plot-hand.R.
+
+#' Frame counts of grasp recordings, with the over-long ones marked
+#'
+#' A histogram of the number of frames of every recording, one panel per
+#' grasp type, coloured by whether the over-long rule of [find_overlong()]
+#' removes the recording before alignment; the rule's threshold is a dashed
+#' line. This is the left half of Jeppsson (2017) Figure 5.1 before the
+#' over-long removal (see [autoplot.grasp_alignment()] for the recordings that
+#' were aligned and their warping paths).
+#'
+#' @param x A [grasps()] object.
+#' @param grasp Grasp types to show (names or ids 1-33); all labelled types by
+#'   default.
+#' @param rule The over-long rule, from [overlong_rule()].
+#' @param binwidth Width of the histogram bins, in frames.
+#' @return A ggplot object; its data has columns `id`, `grasp`, `n_frames`
+#'   and `status` (`"kept"` or `"over-long"`).
+#' @seealso [find_overlong()], [fit_grasp_model()]
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 6, grasps = c(3, 15), objects = 2, trials = 2, seed = 1)
+#' plot_frame_counts(g)
+plot_frame_counts <- function(x, grasp = NULL, rule = overlong_rule(), binwidth = 1) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  types <- thesis_plot_types(x, grasp, call)
+  parts <- lapply(types, function(type) {
+    m <- x$meta[!is.na(x$meta$grasp) & as.character(x$meta$grasp) == type, , drop = FALSE]
+    long <- find_overlong(m$n_frames, rule = rule)
+    data.frame(id = m$id, grasp = type, n_frames = m$n_frames,
+               status = ifelse(long, "over-long", "kept"),
+               threshold = overlong_threshold(m$n_frames, rule = rule), stringsAsFactors = FALSE)
+  })
+  d <- do.call(rbind, parts)
+  d$grasp <- factor(d$grasp, levels = types)
+  d$status <- factor(d$status, levels = c("kept", "over-long"))
+  fences <- unique(d[c("grasp", "threshold")])
+  ggplot2::ggplot(d, ggplot2::aes(x = .data$n_frames, fill = .data$status)) +
+    ggplot2::geom_histogram(binwidth = binwidth, colour = "white") +
+    ggplot2::geom_vline(data = fences, ggplot2::aes(xintercept = .data$threshold),
+                        linetype = "dashed", colour = "red") +
+    ggplot2::scale_fill_manual(values = c(kept = "grey35", `over-long` = "red"), drop = FALSE,
+                               name = NULL) +
+    ggplot2::facet_wrap(ggplot2::vars(.data$grasp), scales = "free_y") +
+    ggplot2::labs(x = "frames before warping", y = "recordings") +
+    ggplot2::theme_minimal()
+}
+
+#' Frame strips: a grasp drawn as hands over time (Tables 5.4 and 5.5)
+#'
+#' Draws one recording of each set as a row of hands at equally spaced
+#' fractions of its duration (0%, 20%, ..., 100% for `n_frames = 6`), the
+#' way the thesis' Tables 5.4 and 5.5 compare a recorded grasp with a
+#' generated one. Since a generated grasp and a recording rarely have the same
+#' number of frames, the columns are fractions of each grasp's own duration.
+#'
+#' @param x A [grasps()] object, or a named list of them (e.g.
+#'   `list(recorded = g, generated = generate(models))`), one row each.
+#' @param recording Which recording of each set to draw: an index or an id
+#'   (recycled over the sets).
+#' @param n_frames Number of frames drawn per recording (at least 2).
+#' @param skeleton A [hand_skeleton()].
+#' @param view See [autoplot.hand_pose()].
+#' @param ... Passed to [forward_kinematics()].
+#' @return A ggplot object; its data has columns `set`, `id`, `frame` and
+#'   `time` (the fraction of the recording's duration, as a label).
+#' @seealso [plot_pose_grid()] for the last frames of many types (Appendix A).
+#' @export
+#' @examples
+#' rec <- matrix(0, 20, 16, dimnames = list(NULL, hust_dofs$name))
+#' rec[, c("MCP3", "PIP3", "MCP4", "PIP4")] <- seq(0, 80, length.out = 20)
+#' g <- grasps(list(rec), meta = data.frame(grasp = "Index Finger Extension"))
+#' plot_frame_strip(list(recorded = g, again = g), n_frames = 4)
+plot_frame_strip <- function(x, recording = 1L, n_frames = 6L, skeleton = hand_skeleton(),
+                             view = "oblique", ...) {
+  call <- rlang::caller_env()
+  sets <- if (inherits(x, "grasps")) list(x) else x
+  if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasps"))) {
+    hm_abort("{.arg x} must be a {.cls grasps} object or a list of them, not {.obj_type_friendly {x}}.",
+             "bad_input", argument = "x", call = call)
+  }
+  if (!is.numeric(n_frames) || length(n_frames) != 1L || is.na(n_frames) || n_frames < 2 ||
+      n_frames != round(n_frames)) {
+    hm_abort("{.arg n_frames} must be one whole number of at least 2, not {.val {format(n_frames)}}.",
+             "bad_input", argument = "n_frames", call = call)
+  }
+  if (is.null(names(sets))) names(sets) <- if (length(sets) == 1L) "" else paste("set", seq_along(sets))
+  recording <- rep_len(as.list(recording), length(sets))
+  fractions <- seq(0, 1, length.out = n_frames)
+  time_labels <- sprintf("%.0f%%", 100 * fractions)
+  poses <- lapply(seq_along(sets), function(k) {
+    g <- sets[[k]]
+    i <- strip_recording_index(g, recording[[k]], names(sets)[k], call)
+    n <- g$meta$n_frames[i]
+    frames <- 1L + as.integer(round((n - 1) * fractions))
+    keep <- !duplicated(frames)  # a recording shorter than n_frames
+    p <- hand_pose(g[i], frame = frames[keep], skeleton = skeleton, ...)
+    p <- as.data.frame(unclass(p), stringsAsFactors = FALSE)
+    p$set <- names(sets)[k]
+    # label by the nominal fraction, so the columns line up across sets
+    p$time <- time_labels[keep][match(p$frame, frames[keep])]
+    p
+  })
+  common <- Reduce(intersect, lapply(poses, names))
+  p <- do.call(rbind, lapply(poses, function(d) d[common]))
+  p$set <- factor(p$set, levels = names(sets))
+  p$time <- factor(p$time, levels = unique(time_labels))
+  p$id <- paste(p$set, p$id)
+  pr <- project_pose(p, view, call)
+  bones <- pose_bones(pr)
+  g <- ggplot2::ggplot() +
+    ggplot2::geom_segment(data = bones, ggplot2::aes(x = .data$sx, y = .data$sy, xend = .data$sxend,
+                                                    yend = .data$syend, colour = .data$finger),
+                          linewidth = 1, lineend = "round") +
+    ggplot2::geom_point(data = pr, ggplot2::aes(x = .data$sx, y = .data$sy, colour = .data$finger),
+                        size = 0.8) +
+    ggplot2::scale_colour_manual(values = finger_colours, guide = "none") +
+    ggplot2::coord_equal() +
+    ggplot2::theme_void() +
+    ggplot2::theme(strip.text = ggplot2::element_text(size = 8))
+  if (length(sets) > 1L) {
+    g + ggplot2::facet_grid(set ~ time, switch = "y")
+  } else {
+    g + ggplot2::facet_wrap(~time, nrow = 1)
+  }
+}
+
+# One recording of a set, by index or id; errors name the set.
+strip_recording_index <- function(g, which, set, call) {
+  if (is.character(which)) {
+    i <- match(which, g$meta$id)
+    if (is.na(i)) {
+      hm_abort("No recording {.val {which}} in set {.val {set}}.", "bad_input",
+               argument = "recording", call = call)
+    }
+    return(i)
+  }
+  if (!is.numeric(which) || length(which) != 1L || is.na(which) || which < 1 || which > length(g) ||
+      which != round(which)) {
+    hm_abort("{.arg recording} must be an index from 1 to {length(g)} or an id of set {.val {set}}, not {.val {format(which)}}.",
+             "bad_input", argument = "recording", call = call)
+  }
+  as.integer(which)
+}
+
+# Grasp types to draw: the requested ones (present in x) or every labelled one.
+thesis_plot_types <- function(x, grasp, call) {
+  present <- levels(droplevels(x$meta$grasp))
+  if (is.null(grasp)) {
+    if (!length(present)) {
+      hm_abort("{.arg x} has no labelled recordings.", "no_labels", argument = "x", call = call)
+    }
+    return(present)
+  }
+  types <- as.character(as_feix_grasp(grasp, call = call))
+  absent <- setdiff(types, present)
+  if (length(absent)) {
+    hm_abort("No recordings of grasp type{?s} {.val {absent}} in {.arg x}.", "too_few_recordings",
+             argument = "grasp", call = call)
+  }
+  types
+}

@@ -1,0 +1,150 @@
+# The package's main job: the thesis' chapter 5 redone on the simulated twin,
+# rendered as one self-contained HTML report with every table beside the
+# published value. The report body lives in inst/report/reproduce-thesis.Rmd
+# so that the vignette (vignettes/reproduce-thesis.Rmd) includes the very same
+# text as a child document; the settings below are shared by both routes.
+
+#' Reproduce the thesis' chapter 5 on the simulated data
+#'
+#' Renders the report `inst/report/reproduce-thesis.Rmd`: it simulates the
+#' HUST-like default data ([simulate_grasps()]), fits the 33 grasp models
+#' ([fit_grasp_models()]), generates grasps, classifies with both schemes, and
+#' shows every table (5.1-5.3, 5.6-5.8, with the thesis' published values
+#' beside ours, see [thesis_tables]) and figure (5.1-5.6, the temporal
+#' comparisons of Tables 5.4 and 5.5, Appendix A) with a short note on each
+#' difference. Beyond the thesis, both classifiers are also evaluated on
+#' held-out subjects ([evaluate_loso()]).
+#'
+#' Besides the HTML report, every table is written as a CSV file to
+#' `<output_dir>/tables/` and every figure as a PNG file to
+#' `<output_dir>/figures/`; the time of each step is shown in the report and
+#' written to `tables/timings.csv`.
+#'
+#' The FPCA classifier's held-out evaluation refits all models once per fold.
+#' A full leave-one-subject-out evaluation (30 refits of 33 models) takes too
+#' long for the main job, so by default the subjects are split at random into
+#' `loso_folds` groups (5 groups of 6 subjects on the full data: each fold
+#' leaves 6 subjects out); `loso_folds = NULL` asks for the full
+#' leave-one-subject-out evaluation.
+#'
+#' The vignette `vignette("reproduce-thesis", package = "handmotion")`
+#' includes the same report; there the design can be made smaller through
+#' environment variables (`HANDMOTION_REPORT_SUBJECTS`,
+#' `HANDMOTION_REPORT_GRASPS` (comma-separated ids), `HANDMOTION_REPORT_FOLDS`
+#' (`"loso"` for the full leave-one-subject-out) and `HANDMOTION_REPORT_SEED`).
+#'
+#' @param output_dir Directory for the report (`reproduce-thesis.html`) and
+#'   its `tables/` and `figures/`; created if needed.
+#' @param subjects Number of simulated subjects (30 as in HUST).
+#' @param seed Seed of the simulation, the fits and the folds.
+#' @param loso_folds Number of groups of subjects for the held-out evaluation,
+#'   or `NULL` for leave-one-subject-out.
+#' @param grasps Grasp types to include (Feix ids or names), all 33 by default.
+#'   At least two are needed for classification.
+#' @param quiet Render without knitr's progress output.
+#' @return The path of the HTML report, invisibly.
+#' @seealso [thesis_tables], [thesis_results]
+#' @export
+#' @examples
+#' \donttest{
+#' if (rmarkdown::pandoc_available()) {
+#'   out <- reproduce_thesis(tempfile("report"), subjects = 3, grasps = c(9, 17, 25),
+#'                           loso_folds = 3)
+#'   list.files(dirname(out), recursive = TRUE)
+#' }
+#' }
+reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, loso_folds = 5,
+                             grasps = 1:33, quiet = TRUE) {
+  call <- rlang::caller_env()
+  settings <- check_report_settings(list(subjects = subjects, seed = seed, loso_folds = loso_folds,
+                                         grasps = grasps), call)
+  if (!is.character(output_dir) || length(output_dir) != 1L || is.na(output_dir) || !nzchar(output_dir)) {
+    hm_abort("{.arg output_dir} must be one directory path.", "bad_input", argument = "output_dir",
+             call = call)
+  }
+  if (!requireNamespace("rmarkdown", quietly = TRUE) || !requireNamespace("knitr", quietly = TRUE)) {
+    hm_abort("{.fn reproduce_thesis} needs the {.pkg rmarkdown} and {.pkg knitr} packages.",
+             "missing_dependency", call = call)
+  }
+  if (!rmarkdown::pandoc_available("1.12.3")) {
+    hm_abort(c("{.fn reproduce_thesis} needs pandoc to render the report.",
+               i = "Install pandoc or set {.envvar RSTUDIO_PANDOC}."),
+             "missing_dependency", call = call)
+  }
+  template <- system.file("report", "reproduce-thesis.Rmd", package = "handmotion")
+  if (!nzchar(template)) {
+    hm_abort("The report template {.file report/reproduce-thesis.Rmd} is missing from the installed package.",
+             "missing_file", file = "report/reproduce-thesis.Rmd", call = call)
+  }
+  dir.create(output_dir, recursive = TRUE, showWarnings = FALSE)
+  output_dir <- normalizePath(output_dir, mustWork = TRUE)
+  # Knit in a scratch copy, so knitr's figure files and intermediates never
+  # land in the installed package or the user's directory.
+  work <- tempfile("handmotion-report-")
+  dir.create(work)
+  on.exit(unlink(work, recursive = TRUE), add = TRUE)
+  input <- file.path(work, "reproduce-thesis.Rmd")
+  file.copy(template, input)
+  params <- list(subjects = settings$subjects, seed = settings$seed,
+                 loso_folds = if (is.null(settings$loso_folds)) 0L else settings$loso_folds,
+                 grasps = settings$grasps, output_dir = output_dir)
+  html <- rmarkdown::render(input, output_file = "reproduce-thesis.html", output_dir = output_dir,
+                            intermediates_dir = work, knit_root_dir = work, params = params,
+                            envir = new.env(parent = globalenv()), quiet = quiet)
+  invisible(html)
+}
+
+# The report's settings: from render() params (reproduce_thesis()) or, when
+# knitted without params (the vignette), from environment variables, else the
+# full default design. `loso_folds` 0 / "loso" means leave-one-subject-out.
+report_settings <- function(params = NULL) {
+  env <- function(name) {
+    v <- Sys.getenv(name)
+    if (nzchar(v)) v else NULL
+  }
+  s <- list(subjects = 30L, seed = 1L, loso_folds = 5L, grasps = 1:33, output_dir = NULL)
+  if (is.null(params)) {
+    if (!is.null(v <- env("HANDMOTION_REPORT_SUBJECTS"))) s$subjects <- as.numeric(v)
+    if (!is.null(v <- env("HANDMOTION_REPORT_SEED"))) s$seed <- as.numeric(v)
+    if (!is.null(v <- env("HANDMOTION_REPORT_GRASPS"))) s$grasps <- as.numeric(strsplit(v, "[, ]+")[[1]])
+    if (!is.null(v <- env("HANDMOTION_REPORT_FOLDS"))) {
+      s$loso_folds <- if (tolower(v) %in% c("loso", "0", "null")) 0L else as.numeric(v)
+    }
+  } else {
+    params <- as.list(params)
+    for (nm in intersect(names(params), names(s))) {
+      if (!is.null(params[[nm]])) s[[nm]] <- params[[nm]]
+    }
+  }
+  if (identical(s$loso_folds, 0L) || identical(s$loso_folds, 0) || isTRUE(is.na(s$loso_folds))) {
+    s$loso_folds <- NULL
+  }
+  out_dir <- s$output_dir
+  s <- check_report_settings(s[c("subjects", "seed", "loso_folds", "grasps")], rlang::caller_env())
+  s$output_dir <- if (is.character(out_dir) && length(out_dir) == 1L && nzchar(out_dir)) out_dir else NULL
+  s
+}
+
+check_report_settings <- function(s, call) {
+  whole <- function(x) is.numeric(x) && length(x) == 1L && is.finite(x) && x == round(x)
+  if (!whole(s$subjects) || s$subjects < 2) {
+    hm_abort("{.arg subjects} must be a whole number of at least 2 (the held-out evaluation needs two), not {.val {format(s$subjects)}}.",
+             "bad_input", argument = "subjects", call = call)
+  }
+  if (!whole(s$seed)) {
+    hm_abort("{.arg seed} must be one whole number, not {.val {format(s$seed)}}.", "bad_input",
+             argument = "seed", call = call)
+  }
+  if (!is.null(s$loso_folds) && (!whole(s$loso_folds) || s$loso_folds < 2 || s$loso_folds > s$subjects)) {
+    hm_abort("{.arg loso_folds} must be {.code NULL} (leave-one-subject-out) or a whole number from 2 to {.arg subjects} ({s$subjects}), not {.val {format(s$loso_folds)}}.",
+             "bad_input", argument = "loso_folds", call = call)
+  }
+  ids <- as.integer(as_feix_grasp(s$grasps, call = call))
+  if (length(unique(ids)) < 2L) {
+    hm_abort("{.arg grasps} must name at least two grasp types: classification needs two.",
+             "bad_input", argument = "grasps", call = call)
+  }
+  list(subjects = as.integer(s$subjects), seed = as.integer(s$seed),
+       loso_folds = if (is.null(s$loso_folds)) NULL else as.integer(s$loso_folds),
+       grasps = sort(unique(ids)))
+}

@@ -1,0 +1,90 @@
+# The report's settings, argument checks, and one render of the whole report
+# on a tiny design (2 subjects, 2 grasp types), checking the HTML, the CSV
+# tables and the PNG figures it writes.
+
+test_that("report settings come from params, else environment variables, else the full design", {
+  withr::local_envvar(HANDMOTION_REPORT_SUBJECTS = NA, HANDMOTION_REPORT_GRASPS = NA,
+                      HANDMOTION_REPORT_FOLDS = NA, HANDMOTION_REPORT_SEED = NA)
+  full <- report_settings(NULL)
+  expect_equal(full$subjects, 30L)
+  expect_equal(full$grasps, 1:33)
+  expect_equal(full$loso_folds, 5L)
+  expect_null(full$output_dir)
+
+  withr::local_envvar(HANDMOTION_REPORT_SUBJECTS = "4", HANDMOTION_REPORT_GRASPS = "17, 25,9",
+                      HANDMOTION_REPORT_FOLDS = "loso", HANDMOTION_REPORT_SEED = "7")
+  small <- report_settings(NULL)
+  expect_equal(small$subjects, 4L)
+  expect_equal(small$grasps, c(9L, 17L, 25L))
+  expect_null(small$loso_folds)
+  expect_equal(small$seed, 7L)
+
+  # params win over the environment; 0 folds means leave-one-subject-out
+  p <- report_settings(list(subjects = 6, seed = 2, loso_folds = 3, grasps = c("Tripod", "Ring"),
+                            output_dir = "out"))
+  expect_equal(p[c("subjects", "seed", "loso_folds", "grasps", "output_dir")],
+               list(subjects = 6L, seed = 2L, loso_folds = 3L, grasps = c(14L, 31L), output_dir = "out"))
+  expect_null(report_settings(list(loso_folds = 0L))$loso_folds)
+})
+
+test_that("reproduce_thesis() rejects impossible designs before rendering anything", {
+  out <- withr::local_tempdir()
+  expect_error(reproduce_thesis(out, subjects = 1), class = "handmotion_error_bad_input")
+  expect_error(reproduce_thesis(out, subjects = 4, loso_folds = 5), class = "handmotion_error_bad_input")
+  expect_error(reproduce_thesis(out, grasps = 17), class = "handmotion_error_bad_input")
+  expect_error(reproduce_thesis(out, grasps = c(17, 99)), class = "handmotion_error")
+  expect_error(reproduce_thesis(c("a", "b"), subjects = 3), class = "handmotion_error_bad_input")
+  expect_length(list.files(out), 0L)
+})
+
+test_that("the report renders on a tiny design with its tables and figures", {
+  skip_on_cran()
+  skip_if_not(rmarkdown::pandoc_available("1.12.3"), "pandoc is not available")
+  out <- withr::local_tempdir()
+  html <- reproduce_thesis(out, subjects = 2, grasps = c(17, 25), loso_folds = 2, seed = 1)
+  expect_equal(normalizePath(html), normalizePath(file.path(out, "reproduce-thesis.html")))
+  expect_true(file.exists(html))
+  page <- gsub("\\s+", " ", paste(readLines(html, warn = FALSE), collapse = "\n"))
+  has <- function(text) grepl(text, page, fixed = TRUE)  # (expect_match would print the page)
+  for (heading in c("Table 5.1", "Table 5.2", "Table 5.3", "Table 5.6", "Table 5.7", "Table 5.8",
+                    "Figure 5.3", "Appendix A", "Timings")) {
+    expect_true(has(heading), label = heading)
+  }
+  # self-contained: the figures are embedded, not linked
+  expect_gt(lengths(regmatches(page, gregexpr("data:image/png;base64", page, fixed = TRUE))), 10)
+  expect_false(has("Error in "))
+  # Figure 5.1's Medium Wrap is not in this design: the report says what it drew instead
+  expect_true(has("the thesis used Medium Wrap, which is not in this design"))
+
+  tables <- c("table_5_1", "table_5_2", "table_5_3", "table_5_3_claims", "table_5_6", "table_5_7",
+              "table_5_8", "accuracy", "timings", "figure_5_3_sign_flips")
+  expect_setequal(sub("\\.csv$", "", list.files(file.path(out, "tables"))), tables)
+  figures <- c("figure_5_1", "figure_5_1_frame_counts", "figure_5_2", "figure_5_3", "figure_5_4",
+               "figure_5_5", "figure_5_6", "table_5_3", "table_5_4", "table_5_5", "table_5_6",
+               "table_5_8", "appendix_a_1")
+  expect_setequal(sub("\\.png$", "", list.files(file.path(out, "figures"))), figures)
+  png_magic <- as.raw(c(0x89, 0x50, 0x4e, 0x47))
+  for (f in list.files(file.path(out, "figures"), full.names = TRUE)) {
+    expect_identical(readBin(f, "raw", 4L), png_magic)
+  }
+
+  t51 <- utils::read.csv(file.path(out, "tables", "table_5_1.csv"))
+  expect_equal(t51$grasp_id, c(17L, 25L))
+  expect_true(all(c("target_frames", "thesis_target_frames") %in% names(t51)))
+  acc <- utils::read.csv(file.path(out, "tables", "accuracy.csv"))
+  expect_equal(nrow(acc), 2L)
+  expect_true(all(acc$in_sample >= 0 & acc$in_sample <= 1 & acc$held_out >= 0 & acc$held_out <= 1))
+  expect_equal(unique(acc$scheme), "leave-one-subject-out")
+  tim <- utils::read.csv(file.path(out, "tables", "timings.csv"))
+  expect_true(all(c("fit the grasp models", "held-out evaluation, FPCA", "whole report") %in% tim$step))
+  expect_true(all(tim$seconds >= 0))
+})
+
+test_that("the vignette is a thin wrapper around the report template", {
+  vig <- test_path("..", "..", "vignettes", "reproduce-thesis.Rmd")
+  skip_if_not(file.exists(vig), "vignette sources are not available")
+  text <- readLines(vig)
+  expect_true(any(grepl('system.file("report", "reproduce-thesis.Rmd", package = "handmotion")', text,
+                        fixed = TRUE)))
+  expect_true(nzchar(system.file("report", "reproduce-thesis.Rmd", package = "handmotion")))
+})

@@ -1,0 +1,132 @@
+# The table functions on a small fitted design: their shape and columns, the
+# thesis columns equal to thesis_results, and our columns equal to the values
+# recomputed directly from the fitted objects (so they cannot depend on the
+# published numbers).
+
+small_design <- local({
+  cache <- NULL
+  function() {
+    if (is.null(cache)) {
+      g <- simulate_grasps(subjects = 4, grasps = c(3, 9, 17), objects = 2, trials = 2, seed = 1)
+      ms <- fit_grasp_models(g, seed = 1)
+      cl <- classify(ms, g)
+      lf <- fit_last_frame_pca(g, k = 3)
+      cl_lf <- classify(lf, g)
+      ev <- evaluate_loso(g, method = "last_frame", fit_args = list(k = 3), folds = 2, in_sample = FALSE)
+      cache <<- list(g = g, ms = ms, cl = cl, lf = lf, cl_lf = cl_lf, ev = ev)
+    }
+    cache
+  }
+})
+
+thesis_rows <- function(tab, ids) tab[match(ids, tab$grasp_id), , drop = FALSE]
+
+test_that("table_5_1 lays our warping and fallbacks beside the thesis'", {
+  d <- small_design()
+  t51 <- table_5_1(d$ms)
+  expect_s3_class(t51, "data.frame")
+  expect_named(t51, c("grasp_id", "grasp", "n_used", "n_overlong", "n_degenerate", "target_frames",
+                      "warping", "em_fallback_dofs", "thesis_target_frames", "thesis_warping",
+                      "thesis_em_failed_dofs"))
+  expect_equal(t51$grasp_id, c(3L, 9L, 17L))
+  s <- summary(d$ms)
+  expect_equal(t51$target_frames, s$target_length)
+  expect_equal(t51$warping, s$warping)
+  expect_equal(t51$em_fallback_dofs, s$em_fallback)
+  expect_equal(t51$n_used, s$n_used)
+  th <- thesis_rows(thesis_results$table_5_1, t51$grasp_id)
+  expect_equal(t51$thesis_target_frames, th$target_frames)
+  expect_equal(t51$thesis_warping, th$warping)
+  expect_equal(t51$thesis_em_failed_dofs, th$em_failed_dofs)
+})
+
+test_that("table_5_2 summarises variance explained over DoFs, ours beside the thesis'", {
+  d <- small_design()
+  t52 <- table_5_2(d$ms)
+  expect_named(t52, c("grasp_id", "grasp", "min", "thesis_min", "median", "thesis_median", "mean",
+                      "thesis_mean", "diff_mean", "max", "thesis_max"))
+  expect_equal(nrow(t52), 3L)
+  # recomputed from the models themselves: percent of variance of two FPCs per DoF
+  ve <- lapply(unclass(d$ms), function(m) 100 * rowSums(m$var_explained))
+  expect_equal(t52$min, unname(vapply(ve, min, numeric(1))))
+  expect_equal(t52$median, unname(vapply(ve, stats::median, numeric(1))))
+  expect_equal(t52$mean, unname(vapply(ve, mean, numeric(1))))
+  expect_equal(t52$max, unname(vapply(ve, max, numeric(1))))
+  expect_true(all(t52$min <= t52$median & t52$median <= t52$max & t52$max <= 100))
+  th <- thesis_rows(thesis_results$table_5_2, t52$grasp_id)
+  expect_equal(t52$thesis_mean, th$mean)
+  expect_equal(t52$thesis_min, th$min)
+  expect_equal(t52$diff_mean, t52$mean - t52$thesis_mean)
+})
+
+test_that("table_5_3 is the distance table with ids as columns, and its claims count its minima", {
+  d <- small_design()
+  t53 <- table_5_3(d$cl)
+  expect_named(t53, c("model_id", "model", "3", "9", "17"))
+  expect_equal(t53$model_id, c(3L, 9L, 17L))
+  dt <- distance_table(d$cl)
+  expect_equal(unname(as.matrix(t53[c("3", "9", "17")])), unname(unclass(dt)))
+  # a model passed with its data gives the same table
+  expect_equal(table_5_3(d$ms, d$g), t53)
+
+  claims <- table_5_3_claims(d$cl)
+  expect_named(claims, c("claim", "description", "ours", "thesis"))
+  expect_equal(claims$claim, thesis_results$table_5_3_claims$claim)
+  expect_equal(claims$thesis, thesis_results$table_5_3_claims$thesis)
+  mins <- distance_minima(dt)
+  expect_equal(claims$ours, as.integer(unlist(mins[claims$claim])))
+  # recomputed by hand: models whose row minimum is their own type
+  own_row <- sum(colnames(dt)[apply(dt, 1, which.min)] == rownames(dt))
+  expect_equal(claims$ours[claims$claim == "model_min_own_type"], own_row)
+})
+
+test_that("tables 5.6 and 5.8 hold the confusion diagonal, with the held-out recall when given", {
+  d <- small_design()
+  t56 <- table_5_6(d$cl)
+  expect_named(t56, c("grasp_id", "grasp", "correct", "total", "recall", "thesis_correct",
+                      "thesis_total", "thesis_recall"))
+  p <- d$cl$predictions
+  truth <- as.character(p$truth)
+  ok <- truth == as.character(p$predicted)
+  expect_equal(t56$correct, as.integer(tapply(ok, factor(truth, levels = t56$grasp), sum)))
+  expect_equal(t56$total, as.integer(table(factor(truth, levels = t56$grasp))))
+  expect_equal(t56$recall, t56$correct / t56$total)
+  th <- thesis_rows(thesis_results$table_5_6_diagonal, t56$grasp_id)
+  expect_equal(t56$thesis_correct, th$correct)
+  expect_equal(t56$thesis_recall, th$correct / th$total)
+
+  t58 <- table_5_8(d$cl_lf, held_out = d$ev$confusion)
+  expect_named(t58, c("grasp_id", "grasp", "correct", "total", "recall", "recall_loso",
+                      "thesis_correct", "thesis_total", "thesis_recall"))
+  held <- d$ev$predictions
+  held_ok <- as.character(held$truth) == as.character(held$predicted)
+  held_ok[is.na(held_ok)] <- FALSE
+  expect_equal(t58$recall_loso,
+               as.numeric(tapply(held_ok, factor(as.character(held$truth), levels = t58$grasp), mean)))
+  th8 <- thesis_rows(thesis_results$table_5_8_diagonal, t58$grasp_id)
+  expect_equal(t58$thesis_total, th8$total)
+})
+
+test_that("table_5_7 interleaves our cumulative variance with the thesis'", {
+  d <- small_design()
+  t57 <- table_5_7(d$lf, pcs = 1:3)
+  expect_named(t57, c("grasp_id", "grasp", "pc1", "thesis_pc1", "pc2", "thesis_pc2", "pc3", "thesis_pc3"))
+  cv <- cumulative_variance(d$lf)
+  expect_equal(t57$pc3, cv$pc3[match(t57$grasp_id, cv$grasp_id)])
+  expect_equal(t57$thesis_pc2, thesis_rows(thesis_results$table_5_7, t57$grasp_id)$pc2)
+  expect_true(all(diff(unlist(t57[1, c("pc1", "pc2", "pc3")])) >= 0))
+})
+
+test_that("table functions reject the wrong objects with a classed error", {
+  expect_error(table_5_1(list()), class = "handmotion_error_bad_input")
+  expect_error(table_5_2("models"), class = "handmotion_error_bad_input")
+  expect_error(table_5_7(list()), class = "handmotion_error_bad_input")
+})
+
+test_that("printed tables are stable", {
+  d <- small_design()
+  t51 <- table_5_1(d$ms)
+  expect_snapshot(print(t51[c("grasp", "target_frames", "thesis_target_frames", "warping", "thesis_warping")],
+                        row.names = FALSE))
+  expect_snapshot(print(table_5_3_claims(d$cl)[c("claim", "thesis")], row.names = FALSE))
+})
