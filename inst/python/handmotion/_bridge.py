@@ -144,6 +144,12 @@ def df_to_r(df):
     return frame
 
 
+def r_array(obj, dtype=None):
+    """A numpy COPY of an R vector. np.asarray() would share R's memory through the
+    buffer protocol, and that memory is reused once R collects the vector."""
+    return np.array(obj, dtype=dtype, copy=True)
+
+
 def r_to_py(obj):
     """Convert an R result to plain Python: data.frame -> DataFrame, atomic -> numpy/scalar."""
     ro = r()
@@ -162,8 +168,8 @@ def r_to_py(obj):
                         ro.vectors.StrVector)):
         dims = ro.r["dim"](obj)
         if not isinstance(dims, NULLType):
-            return np.asarray(obj).reshape(tuple(int(d) for d in dims), order="F")
-        vals = np.asarray(obj)
+            return r_array(obj).reshape(tuple(int(d) for d in dims), order="F")
+        vals = r_array(obj)
         return vals[0] if vals.size == 1 else vals
     return obj
 
@@ -181,20 +187,20 @@ def df_to_py(frame):
         if "factor" in cls:
             col = ro.r["as.character"](col)
         if isinstance(col, ro.vectors.StrVector):
-            na = np.asarray(ro.r["is.na"](col), dtype=bool)
+            na = r_array(ro.r["is.na"](col), dtype=bool)
             cols[name] = pd.Series([None if m else str(v) for v, m in zip(col, na)], dtype=object)
         elif isinstance(col, ro.vectors.BoolVector):
-            na = np.asarray(ro.r["is.na"](col), dtype=bool)
-            vals = np.asarray(col)
+            na = r_array(ro.r["is.na"](col), dtype=bool)
+            vals = r_array(col)
             cols[name] = pd.Series([None if m else bool(v) for v, m in zip(vals, na)], dtype=object) \
                 if na.any() else pd.Series(vals.astype(bool))
         elif isinstance(col, ro.vectors.IntVector):
-            na = np.asarray(ro.r["is.na"](col), dtype=bool)
-            arr = np.asarray(col)
+            na = r_array(ro.r["is.na"](col), dtype=bool)
+            arr = r_array(col)
             cols[name] = pd.Series(pd.array([None if m else int(v) for v, m in zip(arr, na)], dtype="Int64")) \
                 if na.any() else pd.Series(arr.astype(np.int64))
         elif isinstance(col, ro.vectors.FloatVector):
-            cols[name] = pd.Series(np.asarray(col, dtype=float))
+            cols[name] = pd.Series(r_array(col, dtype=float))
         elif isinstance(col, NULLType):
             cols[name] = pd.Series([], dtype=object)
         else:

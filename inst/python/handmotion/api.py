@@ -9,7 +9,7 @@ through, so Python and R give identical numbers for the same seed.
 
 import numpy as np
 
-from ._bridge import call, r, r_to_py
+from ._bridge import call, r, r_array, r_to_py
 from .errors import BadInputError
 from .grasps import Grasps
 from .handles import GraspModels, HandoverModel, RHandle, Skeleton
@@ -131,8 +131,8 @@ def forward_kinematics(x, skeleton=None, mode="plain", deactivate=None, **kwargs
     res = call("forward_kinematics", g, **kw)
     ro = r()
     if "list" in list(ro.r["class"](res)):
-        return [np.asarray(a) for a in res]
-    return np.asarray(res)
+        return [r_array(a) for a in res]
+    return r_array(res)
 
 
 def joint_names(skeleton=None):
@@ -192,7 +192,9 @@ def classify(models, x, method="fpca", **kwargs):
     fitted on ``x`` itself, which is what the thesis did (in-sample).
 
     Returns a dict with ``predictions`` (DataFrame), ``confusion`` (DataFrame, rows =
-    predicted model, columns = true type) and ``accuracy`` (float).
+    predicted model, columns = true type), ``accuracy`` (float), ``metrics`` (DataFrame
+    of R's ``summary()``) and ``classification`` (a handle on the R result, for
+    :func:`table_5_3` and :func:`table_5_6`).
     """
     if method not in ("fpca", "last_frame"):
         raise BadInputError(f"method must be 'fpca' or 'last_frame', not {method!r}")
@@ -206,10 +208,36 @@ def classify(models, x, method="fpca", **kwargs):
     table = ro.r["as.data.frame.matrix"](ro.r["unclass"](conf.rx2("table")))
     summ = r_to_py(call(ro.r["summary"], conf))
     acc = summ.loc[summ["metric"] == "accuracy", "estimate"]
-    return {"predictions": r_to_py(ro.r["as.data.frame"](res)),
+    return {"classification": RHandle(res),
+            "predictions": r_to_py(ro.r["as.data.frame"](res)),
             "confusion": r_to_py(table).set_axis(list(ro.r["rownames"](table)), axis=0),
             "accuracy": float(acc.iloc[0]) if len(acc) else float("nan"),
             "metrics": summ}
+
+
+def fit_last_frame_pca(x, k=5, **kwargs):
+    """Per-type PCA of the recordings' last frames (the thesis' baseline); a handle for
+    :func:`classify` and :func:`table_5_7`."""
+    return RHandle(call("fit_last_frame_pca", _as_grasps(x), k=_check_count(k, "k"), **kwargs))
+
+
+def evaluate_loso(x, method="fpca", folds=None, seed=1, **kwargs):
+    """Leave-one-subject-out (or ``folds`` groups of subjects) evaluation of a classifier.
+
+    Returns a dict with ``accuracy`` (held-out and in-sample), ``confusion`` (held-out,
+    DataFrame) and ``evaluation`` (a handle on the R result).
+    """
+    if method not in ("fpca", "last_frame"):
+        raise BadInputError(f"method must be 'fpca' or 'last_frame', not {method!r}")
+    ro = r()
+    res = call("evaluate_loso", _as_grasps(x), method=method,
+               folds=None if folds is None else _check_count(folds, "folds"), seed=_check_seed(seed),
+               **kwargs)
+    acc = res.rx2("accuracy")
+    table = ro.r["as.data.frame.matrix"](ro.r["unclass"](res.rx2("confusion").rx2("table")))
+    return {"accuracy": {str(k): float(v) for k, v in zip(ro.r["names"](acc), acc)},
+            "confusion": r_to_py(table).set_axis(list(ro.r["rownames"](table)), axis=0),
+            "evaluation": RHandle(res)}
 
 
 def _table(name):

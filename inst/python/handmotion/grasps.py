@@ -205,11 +205,11 @@ class Grasps:
     @classmethod
     def from_r(cls, robj):
         """Convert an R ``grasps`` object."""
-        from ._bridge import df_to_py, helpers
+        from ._bridge import df_to_py, helpers, r_array
 
         flat = helpers()["grasps_out"](robj)
-        values = np.asarray(flat.rx2("values"), dtype=float)
-        nf = np.asarray(flat.rx2("n_frames"), dtype=int)
+        values = r_array(flat.rx2("values"), dtype=float)
+        nf = r_array(flat.rx2("n_frames"), dtype=int)
         dofs = [str(d) for d in flat.rx2("dofs")]
         p = len(dofs)
         bounds = np.concatenate([[0], np.cumsum(nf * p)])

@@ -87,3 +87,14 @@ def test_simulate_matches_r_for_a_seed(hm, ro, small):
     assert len(from_r) == len(small)
     for a, b in zip(small.recordings, from_r.recordings):
         np.testing.assert_array_equal(a, b)
+
+
+def test_converted_arrays_own_their_memory(hm, ro):
+    """Arrays from R must be copies: R reuses a collected vector's memory."""
+    g = hm.Grasps.from_r(ro.r("handmotion::simulate_grasps(subjects = 1, grasps = 1, objects = 1, "
+                              "trials = 2, seed = 3)"))
+    before = [r.copy() for r in g.recordings]
+    ro.r("invisible(lapply(1:50, function(i) rnorm(1e5))); invisible(gc())")
+    for a, b in zip(before, g.recordings):
+        np.testing.assert_array_equal(a, b)
+        assert b.base is None or b.base.flags.owndata

@@ -51,3 +51,39 @@ def test_classify(hm, models, small):
 def test_generate_needs_models(hm):
     with pytest.raises(hm.BadInputError):
         hm.generate("not a model", n=1)
+
+
+def test_tables_and_held_out(hm, models, small):
+    t1 = hm.table_5_1(models)
+    assert {"grasp", "target_frames", "thesis_target_frames"}.issubset(t1.columns)
+    assert len(t1) == 3
+    t2 = hm.table_5_2(models)
+    assert {"mean", "thesis_mean"}.issubset(t2.columns)
+    res = hm.classify(models, small, method="fpca")
+    t3 = hm.table_5_3(res["classification"])
+    assert t3.shape[0] == 3
+    t6 = hm.table_5_6(res["classification"])
+    assert {"correct", "thesis_correct", "recall"}.issubset(t6.columns)
+    lf = hm.fit_last_frame_pca(small, k=2)
+    t7 = hm.table_5_7(lf, pcs=[1, 2])
+    assert list(t7.columns)[:4] == ["grasp_id", "grasp", "pc1", "thesis_pc1"]
+    ev = hm.evaluate_loso(small, method="last_frame", fit_args={"k": 2})
+    assert 0 <= ev["accuracy"]["held_out"] <= 1
+    assert int(ev["confusion"].to_numpy().sum()) == len(small)
+
+
+def test_handover_round_trip(hm, small):
+    ref = small[small.meta["subject"] != "S03"]
+    query = small[small.meta["subject"] == "S03"][:1]
+    markers = hm.select_markers(ref, n=6)
+    assert len(markers) == 6
+    assert set(hm.select_markers(ref, n=3)).issubset(markers)
+    model = hm.fit_handover(ref, markers=6)
+    out = hm.reconstruct(model, query)
+    assert len(out) == 1
+    assert out.recordings[0].shape == query.recordings[0].shape
+    err = np.mean(np.abs(out.recordings[0] - query.recordings[0]))
+    # planted baseline: always answering the reference's mean pose
+    mean_pose = np.vstack(ref.recordings).mean(axis=0)
+    baseline = np.mean(np.abs(query.recordings[0] - mean_pose))
+    assert err < 0.5 * baseline
