@@ -9,7 +9,7 @@ cd "$(dirname "$0")/.."
 DEBIAN_PKGS=(
   r-base-dev pandoc
   # imports and suggests of handmotion
-  r-cran-cli r-cran-rlang r-cran-ggplot2 r-cran-mixtools r-cran-mclust r-cran-future
+  r-cran-cli r-cran-rlang r-cran-ggplot2 r-cran-mixtools r-cran-future
   r-cran-future.apply r-cran-progressr r-cran-generics r-cran-xml2 r-cran-knitr
   r-cran-rmarkdown r-cran-roxygen2 r-cran-testthat r-cran-bench r-cran-withr
   r-cran-pkgbuild r-cran-pkgload r-cran-rcmdcheck
