@@ -65,8 +65,11 @@ hand_animation_html <- function(pose, skeleton, keep, interval_ms, fps, size, ti
   rx <- range(pose$sx)
   ry <- range(pose$sy)
   s <- (size - 2 * pad) / max(diff(rx), diff(ry), 1e-9)
-  px <- function(v) pad + (v - rx[1]) * s
-  py <- function(v) size - pad - (v - ry[1]) * s          # SVG y grows downwards
+  # centre the hand along its shorter extent (it used to hug the left edge)
+  ox <- (size - 2 * pad - diff(rx) * s) / 2
+  oy <- (size - 2 * pad - diff(ry) * s) / 2
+  px <- function(v) pad + ox + (v - rx[1]) * s
+  py <- function(v) size - pad - oy - (v - ry[1]) * s          # SVG y grows downwards
   chains <- skeleton_finger_paths(skeleton)
   groups <- vapply(seq_along(keep), function(k) {
     p <- pose[pose$frame == keep[k], , drop = FALSE]
@@ -75,12 +78,19 @@ hand_animation_html <- function(pose, skeleton, keep, interval_ms, fps, size, ti
       pts <- paste(sprintf("%.1f,%.1f", px(p$sx[idx]), py(p$sy[idx])), collapse = " ")
       sprintf('<polyline points="%s" stroke="%s"/>', pts, finger_colours[[f]])
     }, character(1))
-    sprintf('<g class="f" data-frame="%d" style="display:none">%s</g>', keep[k], paste(lines, collapse = ""))
+    # the shaded palm, as in the static pictures (autoplot.hand_pose)
+    palm <- pose_palm(p)
+    palm_svg <- if (nrow(palm)) {
+      sprintf('<polygon class="palm" points="%s"/>',
+              paste(sprintf("%.1f,%.1f", px(palm$sx), py(palm$sy)), collapse = " "))
+    } else ""
+    sprintf('<g class="f" data-frame="%d" style="display:none">%s%s</g>', keep[k], palm_svg,
+            paste(lines, collapse = ""))
   }, character(1))
   esc <- function(t) gsub("<", "&lt;", gsub("&", "&amp;", t, fixed = TRUE), fixed = TRUE)
   c("<!DOCTYPE html>", "<html><head><meta charset=\"utf-8\">",
     paste0("<title>", esc(title), "</title>"),
-    "<style>body{font-family:sans-serif} polyline{fill:none;stroke-width:5;stroke-linecap:round;stroke-linejoin:round}</style>",
+    "<style>body{font-family:sans-serif} polyline{fill:none;stroke-width:5;stroke-linecap:round;stroke-linejoin:round} polygon.palm{fill:#e5e5e5;stroke:#b3b3b3;stroke-width:1}</style>",
     "</head><body>", paste0("<h3>", esc(title), "</h3>"),
     sprintf('<svg id="hand" xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" viewBox="0 0 %d %d">',
             size, size, size, size),

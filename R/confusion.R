@@ -324,7 +324,19 @@ autoplot.grasp_confusion <- function(object, type = "heatmap", normalise = FALSE
     ggplot2::geom_text(ggplot2::aes(label = .data$label), size = text_size) +
     ggplot2::scale_fill_gradient(low = "grey97", high = "steelblue",
                                  name = if (normalise) "share of\ntrue type" else "count") +
-    ggplot2::labs(x = "true type", y = "predicted type (model)") +
+    ggplot2::labs(x = "true type", y = "predicted type (model)",
+                  caption = confusion_key(object$levels, lab)) +
     ggplot2::theme_minimal() +
-    ggplot2::theme(panel.grid = ggplot2::element_blank())
+    ggplot2::theme(panel.grid = ggplot2::element_blank(),
+                   plot.caption = ggplot2::element_text(hjust = 0, size = 7, colour = "grey30"))
+}
+
+# Key to the short axis labels (Feix ids or abbreviations), wrapped into a
+# caption, so a 33-class heatmap stays readable; NULL when names are shown.
+confusion_key <- function(levels, lab) {
+  if (identical(as.character(levels), as.character(lab))) return(NULL)
+  key <- paste(lab, levels)
+  # pack whole entries into lines of at most ~150 characters
+  line <- cumsum(nchar(key) + 3L) %/% 150L
+  paste(vapply(split(key, line), paste, character(1), collapse = " \u00b7 "), collapse = "\n")
 }

@@ -75,9 +75,11 @@ grasps <- function(recordings, meta = NULL, dofs = NULL, rate = 50, unit = "deg"
 }
 
 # Low-level constructor: no validation, for internal use by code that already
-# guarantees the invariants (subsetting, generators).
-new_grasps <- function(recordings, meta, dofs, rate, unit) {
-  meta$n_frames <- vapply(recordings, nrow, integer(1))
+# guarantees the invariants (subsetting, generators). A generator that
+# already knows the frame counts passes `n_frames` (saves a per-recording R
+# call, which dominates large generated batches).
+new_grasps <- function(recordings, meta, dofs, rate, unit, n_frames = NULL) {
+  meta$n_frames <- if (is.null(n_frames)) vapply(recordings, nrow, integer(1)) else as.integer(n_frames)
   rownames(meta) <- NULL
   structure(list(recordings = recordings, meta = meta, dofs = dofs,
                  rate = rate, unit = unit), class = "grasps")
@@ -394,8 +396,11 @@ autoplot.grasps <- function(object, colour = "grasp", dofs = NULL, max_recording
                                    colour = .data$colour)) +
     ggplot2::geom_line(alpha = 0.6, linewidth = 0.4) +
     ggplot2::facet_wrap(~dof, scales = "free_y") +
+    # few time breaks: with 16 narrow panels the default ones ran together
+    ggplot2::scale_x_continuous(n.breaks = 3) +
     ggplot2::labs(x = "time (s)", y = ylab, colour = colour) +
-    ggplot2::theme_minimal()
+    ggplot2::theme_minimal() +
+    ggplot2::theme(legend.position = "bottom")
 }
 
 # Draw `k` of `n` indices with a fixed seed without disturbing the caller's RNG.

@@ -32,10 +32,18 @@ clamp_to_limits <- function(x, skeleton = hand_skeleton(), mapping = NULL, unit 
   if (is.null(mapping)) mapping <- default_joint_map_impl(input$dofs, call)
   mapping <- check_mapping(mapping, skeleton, call)
   mapping$col <- match(dof_key(mapping$dof), dof_key(input$dofs))
-  used <- mapping[!is.na(mapping$col) & !is.na(mapping$axis) & mapping$sign * mapping$scale != 0, , drop = FALSE]
+  # a turn about the parent's axis (the thumb's opposition) has no limits in the skeleton
+  used <- mapping[!is.na(mapping$col) & !is.na(mapping$axis) & mapping$sign * mapping$scale != 0 &
+                    mapping$frame == "joint", , drop = FALSE]
   lim <- as.matrix(skeleton$joints[match(used$joint, skeleton$joints$name), skeleton_limit_cols])
   lo <- lim[cbind(seq_len(nrow(used)), match(paste0("rot", used$axis, "_min"), skeleton_limit_cols))]
   hi <- lim[cbind(seq_len(nrow(used)), match(paste0("rot", used$axis, "_max"), skeleton_limit_cols))]
+  # "0 0" declares no range (e.g. th-mcp's z, which TI-AA/ABD1 drive): leave
+  # those DoFs as they are and list them as unclamped rather than zero them
+  declared <- !(lo == 0 & hi == 0)
+  used <- used[declared, , drop = FALSE]
+  lo <- lo[declared]
+  hi <- hi[declared]
   mult <- used$sign * used$scale * input$factor
   counts <- stats::setNames(integer(nrow(used)), input$dofs[used$col])
   clamp_one <- function(rec) {

@@ -7,6 +7,9 @@
 # A joint's rotation moves everything distal to it. The local rotation is
 # applied as Rz * Ry * Rx (abduction first, then flexion about the abducted
 # axis), right-handed, angles in degrees after unit conversion, sign and scale.
+# A mapping row may name its parent's rest frame instead (frame = "parent"):
+# GraspDB14 turns the thumb's base about the hand's long axis that way; such
+# turns come before the joint's own.
 #
 # Everything is vectorised over frames: a batch of rotations is an n x 9
 # matrix (column-major 3 x 3 per row), so a whole recording costs about
@@ -18,25 +21,59 @@
 #' recordings), `joint` (skeleton joint name), `axis` (`"x"` flexion, `"y"`,
 #' `"z"` ab-/adduction, or `NA` for a DoF that is not applied), `sign` and
 #' `scale` (the angle applied is `sign * scale * angle`, after conversion to
-#' degrees).
+#' degrees) and, optionally, `frame`: `"joint"` (default) when the axis is
+#' the joint's own rest axis, `"parent"` when it is the parent's (for the
+#' thumb's base, the hand's long axis through the thumb's carpometacarpal
+#' joint). Turns about parent axes are applied before the joint's own.
 #'
 #' * `graspdb14_joint_map()` is Table 5.1 of the GraspDB14 report: the 23
-#'   CyberGlove sensors on the default skeleton. Sensors the report marks as
-#'   discarded (`I-AA`, `P-Arch`) have `axis = NA`. The GraspDB14 files store
-#'   flexion as negative angles and the report's viewer applies every angle
-#'   negated, so `sign = -1` throughout.
-#' * `hust_joint_map()` drives the same skeleton from the 16 HUST DoFs:
-#'   `CMC1` (flexion, x) and `ABD1` (abduction, z) at the thumb's `th-tmc`,
-#'   every other DoF a flexion about x of its joint; `sign = 1` (HUST stores
-#'   flexion as positive degrees).
+#'   CyberGlove sensors on the default skeleton, with one correction (below).
+#'   Sensors the report marks as discarded (`I-AA`, `P-Arch`) have
+#'   `axis = NA`. The GraspDB14 files store flexion as negative angles and the
+#'   report's viewer applies every angle negated, so `sign = -1` throughout.
+#' * `hust_joint_map()` drives the same skeleton from the 16 HUST DoFs. It is
+#'   the GraspDB14 mapping carried over through the sensor correspondence of
+#'   [cyberglove_sensors] (`CMC1 = -T-TMCJ`, `ABD1 = TI-AA`, flexions
+#'   negated): `CMC1` turns the thumb across the palm like `T-TMCJ` (sign 1),
+#'   `ABD1` is `TI-AA` at `th-mcp` about z (sign -1), every other DoF a
+#'   flexion about x of its joint (sign 1). So a GraspDB14 recording and its
+#'   [graspdb14_to_hust()] conversion give the same hand (up to the finger
+#'   spread sensors HUST does not have).
 #' * `default_joint_map(dofs)` picks between them from the DoF names
 #'   (case, hyphens and underscores ignored; `T-TMJ` and `T-TMCJ` both name
 #'   the thumb rotation sensor) and keeps the rows for `dofs`, in their order.
 #'
+#' @section The thumb rotation (`T-TMCJ`, `CMC1`):
+#' Table 5.1 of the report maps `T-TMCJ` ("thumb rotating across palm") to
+#' the z axis of `th-tmc`. GraspDB14's own MATLAB code
+#' (`constructSensor2JointMap.m`, axis `'pron'`) turns it about the local y
+#' axis instead, and its skeleton reader gives `th-tmc` the root's local
+#' frame, so the turn is about the hand's long axis through the thumb's base.
+#' We follow the code (`axis = "y"`, `frame = "parent"`), on this evidence:
+#' * drawn from the real GraspDB14 power-sphere (ball) recording
+#'   `01_11_ex03-rad-004-grasp-su04` during the hold (frame 120, where
+#'   `T-TMCJ` reads about -106 degrees), the z axis swings the thumb within
+#'   the plane of the palm until it points back past the wrist; a turn about
+#'   the thumb's own long axis leaves it sticking out sideways, flat; the
+#'   hand's long axis brings it in front of the palm, opposite the curled
+#'   fingers, as around a ball;
+#' * the same holds for the simulated HUST-like grasps: with the old HUST map
+#'   (`CMC1` a flexion about x and `ABD1` an abduction about z, both at
+#'   `th-tmc`) the thumb tip of pad-opposition types (tip pinch, tripod, ...)
+#'   ended a median 12 cm from the nearest index or middle finger joint and
+#'   stuck out beside the wrist; with this mapping it reaches in front of the
+#'   palm towards the fingers (about 3 cm away);
+#' * anatomically, rotation "across the palm" at the trapeziometacarpal joint
+#'   is opposition, a turn about an axis along the index metacarpal, not a
+#'   spread within the palm plane (that is `TI-AA`).
+#' To get Table 5.1 literally, set `axis = "z"`, `frame = "joint"` in the
+#' `T-TMCJ` row.
+#'
 #' @param dofs DoF names, e.g. `x$dofs` of a [grasps()] object.
-#' @return A data frame (`dof`, `joint`, `axis`, `sign`, `scale`).
+#' @return A data frame (`dof`, `joint`, `axis`, `sign`, `scale`, `frame`).
 #' @references Stollenwerk, K., Hinkenjann, A. and Klein, R. GraspDB14
-#'   technical report, Table 5.1.
+#'   technical report, Table 5.1, and the GraspDB14 MATLAB tools
+#'   (`constructSensor2JointMap.m`, `readXMLSKEL.m`).
 #' @export
 #' @examples
 #' hust_joint_map()
@@ -50,9 +87,10 @@ graspdb14_joint_map <- function() {
     joint = c("th-tmc", "th-mcp", "th-ip", "th-mcp", "if-mcp", "if-pip", "if-dip", "if-mcp",
               "mf-mcp", "mf-pip", "mf-dip", "if-mcp", "rf-mcp", "rf-pip", "rf-dip", "rf-mcp",
               "lf-mcp", "lf-pip", "lf-dip", "lf-mcp", "lf-cmc", "root", "root"),
-    axis = c("z", "x", "x", "z", "x", "x", "x", NA, "x", "x", "x", "z", "x", "x", "x", "z",
+    axis = c("y", "x", "x", "z", "x", "x", "x", NA, "x", "x", "x", "z", "x", "x", "x", "z",
              "x", "x", "x", "z", NA, "x", "z"),
-    sign = -1, scale = 1, stringsAsFactors = FALSE)
+    sign = -1, scale = 1,
+    frame = c("parent", rep("joint", 22)), stringsAsFactors = FALSE)
 }
 
 #' @rdname graspdb14_joint_map
@@ -61,9 +99,10 @@ hust_joint_map <- function() {
   data.frame(
     dof = c("CMC1", "ABD1", "MCP1", "IP1", "MCP2", "PIP2", "DIP2", "MCP3", "PIP3", "DIP3",
             "MCP4", "PIP4", "DIP4", "MCP5", "PIP5", "DIP5"),
-    joint = c("th-tmc", "th-tmc", "th-mcp", "th-ip", "if-mcp", "if-pip", "if-dip", "mf-mcp",
+    joint = c("th-tmc", "th-mcp", "th-mcp", "th-ip", "if-mcp", "if-pip", "if-dip", "mf-mcp",
               "mf-pip", "mf-dip", "rf-mcp", "rf-pip", "rf-dip", "lf-mcp", "lf-pip", "lf-dip"),
-    axis = c("x", "z", rep("x", 14)), sign = 1, scale = 1, stringsAsFactors = FALSE)
+    axis = c("y", "z", rep("x", 14)), sign = c(1, -1, rep(1, 14)), scale = 1,
+    frame = c("parent", rep("joint", 15)), stringsAsFactors = FALSE)
 }
 
 #' @rdname graspdb14_joint_map
@@ -109,6 +148,16 @@ check_mapping <- function(mapping, skeleton, call) {
   bad <- !is.na(mapping$axis) & !mapping$axis %in% c("x", "y", "z")
   if (any(bad)) {
     hm_abort("Mapping axis must be {.val x}, {.val y}, {.val z} or NA; DoF {.val {mapping$dof[bad][1]}} has {.val {mapping$axis[bad][1]}}.",
+             "bad_mapping", argument = "mapping", call = call)
+  }
+  # `frame` (optional): whose rest frame the axis belongs to, the joint's own
+  # or its parent's (GraspDB14's thumb rotation turns about the hand's axis)
+  if (is.null(mapping$frame)) mapping$frame <- "joint"
+  mapping$frame <- as.character(mapping$frame)
+  mapping$frame[is.na(mapping$frame) | mapping$frame == ""] <- "joint"
+  bad <- !mapping$frame %in% c("joint", "parent")
+  if (any(bad)) {
+    hm_abort("Mapping frame must be {.val joint} or {.val parent}; DoF {.val {mapping$dof[bad][1]}} has {.val {mapping$frame[bad][1]}}.",
              "bad_mapping", argument = "mapping", call = call)
   }
   if (!is.numeric(mapping$sign) || !is.numeric(mapping$scale) ||
@@ -356,16 +405,31 @@ fk_angles <- function(plan, rec, factor) {
 fk_rotate <- function(plan, ang, j, Mp, n) {
   rows <- plan$by_joint[[j]]
   if (!length(rows)) return(Mp)
-  A <- plan$rest[[j]]
-  B <- if (is.null(Mp)) matrix(rep(as.vector(A), each = n), n, 9) else Mp %*% plan$AkI[[j]]
+  in_parent <- plan$used$frame[rows] == "parent"
+  if (any(in_parent)) {
+    # turns about the parent's rest axes come first (GraspDB14 applies the
+    # thumb rotation before any other angle); the root's parent frame is the
+    # root's own
+    p <- plan$parent[j]
+    Mp <- fk_turn(plan, if (is.na(p)) j else p, rows[in_parent], ang, Mp, n)
+    rows <- rows[!in_parent]
+    if (!length(rows)) return(Mp)
+  }
+  fk_turn(plan, j, rows, ang, Mp, n)
+}
+
+# Mp A Q A^T for the rotations `rows` about the axes of joint f's rest frame A.
+fk_turn <- function(plan, f, rows, ang, Mp, n) {
+  A <- plan$rest[[f]]
   axes <- plan$used$axis
+  B <- if (is.null(Mp)) matrix(rep(as.vector(A), each = n), n, 9) else Mp %*% plan$AkI[[f]]
   for (a in c("z", "y", "x")) {
     k <- rows[axes[rows] == a]
     if (!length(k)) next
     th <- if (length(k) == 1L) ang[, k] else rowSums(ang[, k, drop = FALSE])
     B <- rotate_columns(B, a, cos(th), sin(th))
   }
-  B %*% plan$tAkI[[j]]
+  B %*% plan$tAkI[[f]]
 }
 
 # B %*% R_axis(theta) for a batch (rows = column-major 3 x 3).
@@ -406,7 +470,7 @@ fk_run <- function(plan, rec, factor) {
     out[, j, ] <- P[[j]]
     M[j] <- list(fk_rotate(plan, ang, j, Mp, n))
   }
-  attr(out, "fk") <- list(mode = plan$mode, mapping = used[c("dof", "joint", "axis", "sign", "scale")],
+  attr(out, "fk") <- list(mode = plan$mode, mapping = used[c("dof", "joint", "axis", "sign", "scale", "frame")],
                           deactivated = plan$deactivated, ignored = plan$ignored)
   out
 }

@@ -49,14 +49,18 @@ autoplot.grasp_alignment <- function(object, type = c("both", "histogram", "path
       ggplot2::labs(x = "frames before warping", y = "recordings"),
     paths = p + path_layer +
       ggplot2::labs(x = "warped frame", y = "original frame"),
+    # the two panels have different axes: each strip names its own, rather
+    # than one "left: ...; right: ..." axis title for both
     both = p + hist_layer + path_layer +
-      ggplot2::facet_wrap(ggplot2::vars(.data$panel), scales = "free") +
-      ggplot2::labs(x = "left: frames before warping; right: warped frame",
-                    y = "left: recordings; right: original frame")
+      ggplot2::facet_wrap(ggplot2::vars(.data$panel), scales = "free",
+                          labeller = ggplot2::as_labeller(alignment_panel_titles)) +
+      ggplot2::labs(x = NULL, y = NULL)
   )
 }
 
 alignment_panel_levels <- c("frame counts before warping", "warping paths")
+alignment_panel_titles <- c(`frame counts before warping` = "Frame counts: recordings (y) by frames before warping (x)",
+                            `warping paths` = "Warping paths: original frame (y) by warped frame (x)")
 
 alignment_length_data <- function(object) {
   deg <- object$degenerate

@@ -110,9 +110,13 @@ hand_views <- list(
   tip = rbind(c(1, 0, 0), c(0, 0, 1), c(0, -1, 0))
 )
 
+oblique_view <- c(-135, 20)
+
 #' @noRd
 view_matrix <- function(view, call = rlang::caller_env()) {
-  if (is.character(view) && length(view) == 1L && view == "oblique") view <- c(-60, 20)
+  # from the palm, turned towards the thumb: the view of grasp photographs,
+  # showing the palm, the thumb's opposition and the fingers' curl at once
+  if (is.character(view) && length(view) == 1L && view == "oblique") view <- oblique_view
   if (is.character(view)) {
     if (length(view) != 1L || !view %in% names(hand_views)) {
       hm_abort("{.arg view} must be one of {.val {c(names(hand_views), 'oblique')}} or c(azimuth, elevation) in degrees.",
@@ -153,27 +157,93 @@ pose_bones <- function(p) {
   b[order(b$depth), , drop = FALSE]
 }
 
+# Panel labels: the grasp type names a recording better than its id; the id
+# is added only where one type has several recordings.
 pose_panels <- function(p) {
   multi_id <- length(unique(p$id)) > 1L
-  multi_fr <- length(unique(p$frame)) > 1L
-  lab <- if (multi_id && multi_fr) paste0(p$id, ", frame ", p$frame) else if (multi_fr)
-    paste("frame", p$frame) else p$id
+  # frame numbers only where one recording is drawn at several frames
+  multi_fr <- any(tapply(p$frame, p$id, function(f) length(unique(f))) > 1L)
+  name <- p$id
+  if (!is.null(p$grasp) && !anyNA(p$grasp)) {
+    name <- as.character(p$grasp)
+    per_type <- tapply(p$id, name, function(i) length(unique(i)))
+    dup <- name %in% names(per_type)[per_type > 1L]
+    name[dup] <- paste0(name[dup], " (", p$id[dup], ")")
+  }
+  lab <- if (multi_id && multi_fr) paste0(name, ", frame ", p$frame) else if (multi_fr)
+    paste("frame", p$frame) else name
   factor(lab, levels = unique(lab))
 }
 
 finger_colours <- c(root = "grey40", th = "#D55E00", `if` = "#0072B2", mf = "#009E73",
                     rf = "#CC79A7", lf = "#E69F00")
+finger_labels <- c(th = "thumb", `if` = "index", mf = "middle", rf = "ring", lf = "little")
+
+# Joints outlining the palm (wrist, thumb base, knuckles), in drawing order.
+palm_outline <- c("root", "th-tmc", "if-mcp", "mf-mcp", "rf-mcp", "lf-mcp")
+
+# The palm of every drawn hand as a polygon: a skeleton alone reads as a bunch
+# of sticks; a shaded palm shows at once where the hand is and which way the
+# fingers curl. Keeps every column of `pr`, so facets work on it.
+pose_palm <- function(pr) {
+  keep <- pr$joint %in% palm_outline
+  if (sum(palm_outline %in% pr$joint) < 4L) return(pr[0, , drop = FALSE])
+  out <- pr[keep, , drop = FALSE]
+  out$hand <- paste(out$id, out$frame, sep = "\r")
+  out[order(out$hand, match(out$joint, palm_outline)), , drop = FALSE]
+}
+
+# Layers shared by every hand drawing (autoplot.hand_pose, plot_pose_grid,
+# plot_frame_strip, plot_marker_sets): palm, bones in depth order, joints,
+# one colour per finger with a legend naming the fingers.
+pose_layers <- function(pr, linewidth = 1.4, size = 1.6, legend = TRUE, strip_size = 8) {
+  bones <- pose_bones(pr)
+  palm <- pose_palm(pr)
+  fingers <- intersect(names(finger_labels), unique(pr$finger))
+  list(
+    if (nrow(palm)) {
+      ggplot2::geom_polygon(data = palm, ggplot2::aes(x = .data$sx, y = .data$sy, group = .data$hand),
+                            fill = "grey90", colour = "grey70", linewidth = 0.3)
+    },
+    ggplot2::geom_segment(data = bones, ggplot2::aes(x = .data$sx, y = .data$sy, xend = .data$sxend,
+                                                    yend = .data$syend, colour = .data$finger),
+                          linewidth = linewidth, lineend = "round"),
+    ggplot2::geom_point(data = pr, ggplot2::aes(x = .data$sx, y = .data$sy, colour = .data$finger),
+                        size = size, show.legend = FALSE),
+    ggplot2::scale_colour_manual(values = finger_colours, breaks = fingers,
+                                 labels = finger_labels[fingers], name = NULL,
+                                 guide = if (legend) "legend" else "none"),
+    ggplot2::coord_equal(),
+    ggplot2::theme_void(),
+    ggplot2::theme(strip.text = ggplot2::element_text(size = strip_size, margin = ggplot2::margin(2, 2, 2, 2)),
+                   legend.position = "bottom", plot.title = ggplot2::element_text(size = 11),
+                   plot.subtitle = ggplot2::element_text(size = 9, colour = "grey30"),
+                   panel.spacing = ggplot2::unit(6, "pt"))
+  )
+}
+
+view_label <- function(view) {
+  if (is.numeric(view)) return(sprintf("view: azimuth %g, elevation %g degrees", view[1], view[2]))
+  switch(view, back = "seen from the back of the hand", palm = "seen from the palm",
+         radial = "seen from the thumb side (palm to the left)",
+         ulnar = "seen from the little-finger side (palm to the right)",
+         tip = "seen from the fingertips (palm down)",
+         oblique = "seen from the palm, turned towards the thumb side", paste("view:", view))
+}
 
 #' Draw a hand pose
 #'
-#' Projects the joints onto the screen for `view` and draws bones and
-#' joints, one colour per finger; several recordings or frames give one
-#' panel each.
+#' Projects the joints onto the screen for `view` and draws the palm (shaded,
+#' wrist to knuckles), bones and joints, one colour per finger (legend at the
+#' bottom); several recordings or frames give one panel each, labelled by
+#' grasp type when the pose carries one.
 #'
 #' @param object A [hand_pose()].
 #' @param view `"back"`, `"palm"`, `"radial"` (thumb side), `"ulnar"`,
-#'   `"tip"` (from the fingertips), `"oblique"`, or `c(azimuth, elevation)`
-#'   in degrees (turning the back view).
+#'   `"tip"` (from the fingertips), `"oblique"` (the default: from the palm,
+#'   turned towards the thumb side, like a photograph of a grasp; the same as
+#'   `c(-135, 20)`), or `c(azimuth, elevation)` in degrees (turning the back
+#'   view about the screen's vertical, then tilting it).
 #' @param labels Label the joints with their names?
 #' @param ... Unused.
 #' @return A ggplot object.
@@ -184,22 +254,16 @@ finger_colours <- c(root = "grey40", th = "#D55E00", `if` = "#0072B2", mf = "#00
 autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, ...) {
   p <- project_pose(as.data.frame(unclass(object), stringsAsFactors = FALSE), view, rlang::caller_env())
   p$panel <- pose_panels(p)
-  bones <- pose_bones(p)
-  g <- ggplot2::ggplot() +
-    ggplot2::geom_segment(data = bones, ggplot2::aes(x = .data$sx, y = .data$sy, xend = .data$sxend,
-                                                    yend = .data$syend, colour = .data$finger),
-                          linewidth = 1.4, lineend = "round") +
-    ggplot2::geom_point(data = p, ggplot2::aes(x = .data$sx, y = .data$sy, colour = .data$finger),
-                        size = 1.6) +
-    ggplot2::scale_colour_manual(values = finger_colours, guide = "none") +
-    ggplot2::coord_equal() +
-    ggplot2::theme_void() +
-    ggplot2::theme(strip.text = ggplot2::element_text(size = 8))
+  g <- ggplot2::ggplot() + pose_layers(p) + ggplot2::labs(subtitle = view_label(view))
   if (labels) {
     g <- g + ggplot2::geom_text(data = p, ggplot2::aes(x = .data$sx, y = .data$sy, label = .data$joint),
                                 size = 2.3, vjust = -0.8)
   }
-  if (nlevels(p$panel) > 1L) g <- g + ggplot2::facet_wrap(~panel)
+  if (nlevels(p$panel) > 1L) {
+    g <- g + ggplot2::facet_wrap(~panel, labeller = ggplot2::label_wrap_gen(22))
+  } else if (!levels(p$panel) %in% c("rest", "x")) {
+    g <- g + ggplot2::labs(title = levels(p$panel))
+  }
   g
 }
 
@@ -218,7 +282,9 @@ autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, ...) {
 #' @param skeleton A [hand_skeleton()].
 #' @param view See [autoplot.hand_pose()].
 #' @param ... Passed to [forward_kinematics()].
-#' @return A ggplot object; its data has columns `set` and `group`.
+#' @return A ggplot object, one panel per group; with several sets their
+#'   hands stand side by side in each panel, in the order of `x`, named
+#'   underneath. Its layers' data have columns `set` and `group`.
 #' @export
 #' @examples
 #' flat <- matrix(0, 5, 16)
@@ -264,21 +330,29 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
   # several recordings of one group and set are overlaid in the same panel
   p$id <- paste(p$set, p$id)
   pr <- project_pose(p, view, call)
-  bones <- pose_bones(pr)
-  g <- ggplot2::ggplot() +
-    ggplot2::geom_segment(data = bones, ggplot2::aes(x = .data$sx, y = .data$sy, xend = .data$sxend,
-                                                    yend = .data$syend, colour = .data$finger),
-                          linewidth = 1, lineend = "round") +
-    ggplot2::geom_point(data = pr, ggplot2::aes(x = .data$sx, y = .data$sy, colour = .data$finger),
-                        size = 0.8) +
-    ggplot2::scale_colour_manual(values = finger_colours, guide = "none") +
-    ggplot2::coord_equal() +
-    ggplot2::theme_void() +
-    ggplot2::theme(strip.text = ggplot2::element_text(size = 7))
+  title <- sprintf("%s frame of each %s", if (identical(frame, "last")) "Last" else if (identical(frame, "first"))
+    "First" else paste("Frame", paste(frame, collapse = ", ")), if (by == "grasp") "grasp type" else by)
+  subtitle <- view_label(view)
+  labels <- NULL
   if (length(sets) > 1L) {
-    g + ggplot2::facet_grid(group ~ set, switch = "y", labeller = ggplot2::label_wrap_gen(16)) +
-      ggplot2::theme(strip.text.y.left = ggplot2::element_text(angle = 0, hjust = 1))
-  } else {
-    g + ggplot2::facet_wrap(~group, labeller = ggplot2::label_wrap_gen(16))
+    # the sets' hands side by side in one panel per group (recorded left of
+    # generated, as in the thesis' Appendix A), each named underneath: one
+    # strip per type instead of one per type and set, so 33 types fit a page
+    width <- diff(range(pr$sx)) * 1.1
+    pr$sx <- pr$sx + (as.integer(pr$set) - 1L) * width
+    labels <- unique(pr[c("group", "set")])
+    labels$sx <- (as.integer(labels$set) - 1L) * width + mean(range(pr$sx[pr$set == levels(pr$set)[1]]))
+    labels$sy <- min(pr$sy) - 0.08 * diff(range(pr$sy))
+    subtitle <- paste0(paste(levels(pr$set), collapse = " | "), "; ", subtitle)
   }
+  g <- ggplot2::ggplot() + pose_layers(pr, linewidth = 0.9, size = 0.6, strip_size = 7) +
+    ggplot2::labs(title = title, subtitle = subtitle) +
+    ggplot2::facet_wrap(~group, labeller = ggplot2::label_wrap_gen(18), drop = FALSE)
+  if (!is.null(labels)) {
+    g <- g + ggplot2::geom_text(data = labels, ggplot2::aes(x = .data$sx, y = .data$sy, label = .data$set),
+                                size = 2.2, colour = "grey35", vjust = 0.5) +
+      # room for the names under the hands
+      ggplot2::expand_limits(y = labels$sy[1] - 0.06 * diff(range(pr$sy)))
+  }
+  g
 }

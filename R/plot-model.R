@@ -101,10 +101,18 @@ plot_model_fpca <- function(object, dofs, max_recordings) {
   model$kind <- factor(model$kind, levels = unique(model$kind))
   ggplot2::ggplot(mapping = ggplot2::aes(x = .data$frame, y = .data$value, group = .data$group)) +
     ggplot2::geom_line(data = samples, colour = "grey70", linewidth = 0.3) +
-    ggplot2::geom_line(data = model, ggplot2::aes(linetype = .data$kind), colour = "red", linewidth = 0.6) +
+    # one colour per curve kind: two red dash patterns were hard to tell apart
+    ggplot2::geom_line(data = model, ggplot2::aes(linetype = .data$kind, colour = .data$kind), linewidth = 0.6) +
+    ggplot2::scale_colour_manual(values = stats::setNames(
+      c("red", rep_len(c("#E69F00", "#0072B2", "#009E73", "#CC79A7"), nlevels(model$kind) - 1L)),
+      levels(model$kind))) +
+    ggplot2::scale_linetype_manual(values = stats::setNames(
+      c("solid", rep_len(c("dashed", "dotdash", "dotted", "longdash"), nlevels(model$kind) - 1L)),
+      levels(model$kind))) +
     ggplot2::facet_wrap(~dof, scales = "free_y") +
-    ggplot2::labs(x = "warped frame", y = plot_angle_label(object$unit), linetype = NULL,
-                  title = sprintf("%s: FPCA of each DoF", object$grasp)) +
+    ggplot2::labs(x = "warped frame", y = plot_angle_label(object$unit), linetype = NULL, colour = NULL,
+                  title = sprintf("%s: FPCA of each DoF", object$grasp),
+                  subtitle = "grey: warped training recordings") +
     ggplot2::theme_minimal() + ggplot2::theme(legend.position = "bottom")
 }
 

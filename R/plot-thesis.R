@@ -113,19 +113,13 @@ plot_frame_strip <- function(x, recording = 1L, n_frames = 6L, skeleton = hand_s
   p$time <- factor(p$time, levels = unique(time_labels))
   p$id <- paste(p$set, p$id)
   pr <- project_pose(p, view, call)
-  bones <- pose_bones(pr)
-  g <- ggplot2::ggplot() +
-    ggplot2::geom_segment(data = bones, ggplot2::aes(x = .data$sx, y = .data$sy, xend = .data$sxend,
-                                                    yend = .data$syend, colour = .data$finger),
-                          linewidth = 1, lineend = "round") +
-    ggplot2::geom_point(data = pr, ggplot2::aes(x = .data$sx, y = .data$sy, colour = .data$finger),
-                        size = 0.8) +
-    ggplot2::scale_colour_manual(values = finger_colours, guide = "none") +
-    ggplot2::coord_equal() +
-    ggplot2::theme_void() +
-    ggplot2::theme(strip.text = ggplot2::element_text(size = 8))
+  grasp <- unique(stats::na.omit(as.character(p$grasp)))
+  g <- ggplot2::ggplot() + pose_layers(pr, linewidth = 1, size = 0.8) +
+    ggplot2::labs(title = if (length(grasp) == 1L) grasp else NULL,
+                  subtitle = paste0("columns: fraction of each recording's duration; ", view_label(view)))
   if (length(sets) > 1L) {
-    g + ggplot2::facet_grid(set ~ time, switch = "y")
+    g + ggplot2::facet_grid(set ~ time, switch = "y") +
+      ggplot2::theme(strip.text.y.left = ggplot2::element_text(angle = 0, hjust = 1))
   } else {
     g + ggplot2::facet_wrap(~time, nrow = 1)
   }

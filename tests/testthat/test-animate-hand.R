@@ -26,3 +26,20 @@ test_that("long recordings are thinned and grasps give a title", {
   expect_match(xml2::xml_text(xml2::xml_find_first(doc, "//h3")), "Lateral")
   expect_error(animate_hand(g, f, recording = 3), class = "handmotion_error_bad_input")
 })
+
+test_that("every frame draws the palm and the hand is centred in the drawing", {
+  rec <- matrix(0, 10, 16, dimnames = list(NULL, hust_dofs$name))
+  rec[, 5:16] <- seq(0, 80, length.out = 10)
+  f <- withr::local_tempfile(fileext = ".html")
+  animate_hand(rec, f, size = 400)
+  doc <- xml2::read_html(f)
+  frames <- xml2::xml_find_all(doc, "//svg/g")
+  expect_length(xml2::xml_find_all(doc, "//svg/g/polygon[@class='palm']"), 10L)
+  pts <- unlist(lapply(xml2::xml_find_all(doc, "//svg/g/polyline"), function(l) {
+    strsplit(strsplit(xml2::xml_attr(l, "points"), " ")[[1]], ",")
+  }), recursive = FALSE)
+  xy <- do.call(rbind, lapply(pts, as.numeric))
+  # the bounding box of all frames is centred on the 400 x 400 canvas
+  expect_equal(mean(range(xy[, 1])), 200, tolerance = 1)
+  expect_equal(mean(range(xy[, 2])), 200, tolerance = 1)
+})

@@ -145,3 +145,65 @@ test_that("mappings: defaults, custom, unknown DoFs and missing joints", {
   m$axis <- "w"
   expect_error(forward_kinematics(x, mapping = m), class = "handmotion_error_bad_mapping")
 })
+
+test_that("a turn about the parent's axis: GraspDB14's thumb rotation about the hand's long axis", {
+  s <- hand_skeleton()
+  rest <- skeleton_rest_positions(s)
+  x <- gdb()
+  x[, "T-TMCJ"] <- -90                # applied negated: +90 degrees about the root's y
+  p <- forward_kinematics(x, s)
+  # th-tmc keeps its place; the thumb's first bone turns about y through it:
+  # (dx, dy, 0) -> (0, dy, -dx), i.e. in front of the palm (-z)
+  d <- rest["th-mcp", ] - rest["th-tmc", ]
+  expect_equal(unname(p[1, "th-tmc", ]), unname(rest["th-tmc", ]))
+  expect_equal(unname(p[1, "th-mcp", ] - rest["th-tmc", ]), unname(c(0, d[2], -d[1])), tolerance = 1e-8)
+  expect_equal(attr(p, "fk")$mapping$frame[attr(p, "fk")$mapping$dof == "T-TMCJ"], "parent")
+  # the fingers do not move
+  expect_equal(unname(p[1, "if-tip", ]), unname(rest["if-tip", ]))
+  m <- graspdb14_joint_map()
+  m$frame[1] <- "grandparent"
+  expect_error(forward_kinematics(x, s, mapping = m), class = "handmotion_error_bad_mapping")
+  # a mapping without a frame column means the joint's own axes
+  m$frame <- NULL
+  m$axis[1] <- "z"
+  q <- forward_kinematics(x, s, mapping = m)
+  expect_equal(unname(q[1, "th-mcp", "z"]), 0, tolerance = 1e-10)
+})
+
+test_that("the real power-sphere hold puts the thumb in front of the palm, opposite the fingers", {
+  s <- read_skeleton(shared_file("data", "graspdb14", "default.xmlskel"))
+  g <- read_graspdb14(shared_file("data", "graspdb14", "01_11_ex03-rad-004-grasp-su04.txt"))
+  p <- forward_kinematics(g, s, frames = 120)[1, , ]   # annotated hold: frames 82-164
+  # thumb tip distal of its base (Table 5.1's z axis points it back past the wrist: y > 0)
+  expect_lt(p["th-tip", "y"], p["th-mcp", "y"] - 30)
+  expect_lt(p["th-tip", "z"], -30)                     # on the palm side
+  expect_lt(sqrt(sum((p["th-tip", ] - p["if-tip", ])^2)), 40)
+  m <- graspdb14_joint_map()
+  m[1, c("axis", "frame")] <- c("z", "joint")
+  literal <- forward_kinematics(g, s, frames = 120, mapping = m)[1, , ]
+  expect_gt(literal["th-tip", "y"], 0)
+})
+
+test_that("a GraspDB14 recording and its HUST conversion pose the same hand", {
+  s <- hand_skeleton()
+  g <- read_graspdb14(shared_file("data", "graspdb14", "01_11_ex03-rad-004-grasp-su04.txt"))
+  h <- graspdb14_to_hust(g)
+  # HUST has no finger-spread sensors
+  a <- forward_kinematics(g, s, deactivate = c("MI-AA", "RM-AA", "LR-AA"))
+  b <- forward_kinematics(h, s)
+  expect_equal(a, b, ignore_attr = TRUE, tolerance = 1e-8)
+})
+
+test_that("simulated pad-opposition grasps bring the thumb tip to the fingers", {
+  pad <- feix_taxonomy$id[feix_taxonomy$opposition == "pad"]
+  g <- simulate_grasps(subjects = 1, grasps = pad, objects = 1, trials = 1, seed = 2)
+  gap <- vapply(g$recordings, function(r) {
+    p <- forward_kinematics(r, frames = "last")[1, , ]
+    near <- c("if-tip", "if-dip", "if-pip", "mf-tip", "mf-dip")
+    min(sqrt(rowSums(sweep(p[near, ], 2, p["th-tip", ])^2)))
+  }, numeric(1))
+  # the old map (CMC1 a flexion, ABD1 an abduction at th-tmc) left a median gap of ~12 cm
+  expect_lt(stats::median(gap), 50)
+  tip_z <- vapply(g$recordings, function(r) forward_kinematics(r, frames = "last")[1, "th-tip", "z"], numeric(1))
+  expect_true(all(tip_z < 0))
+})

@@ -1,4 +1,9 @@
 hust <- function(n = 1, value = 0) matrix(value, n, 16, dimnames = list(NULL, hust_dofs$name))
+# built data of the first layer drawn with `geom` (e.g. "GeomSegment")
+geom_data <- function(p, geom, built = ggplot2::ggplot_build(p)) {
+  i <- which(vapply(p$layers, function(l) inherits(l$geom, geom), logical(1)))[1]
+  built$data[[i]]
+}
 
 test_that("hand_pose() collects joints from matrices, arrays, grasps and skeletons", {
   x <- hust(3)
@@ -22,10 +27,10 @@ test_that("hand_pose() collects joints from matrices, arrays, grasps and skeleto
 test_that("autoplot draws one bone per non-root joint and one panel per frame", {
   x <- hust(3)
   x[, "PIP3"] <- c(0, 45, 90)
-  b <- ggplot2::ggplot_build(ggplot2::autoplot(hand_pose(x, frame = 1:3), view = "radial"))
-  expect_equal(nrow(b$data[[1]]), 3L * 24L)
-  expect_equal(nrow(b$data[[2]]), 3L * 25L)
-  expect_equal(length(unique(b$data[[1]]$PANEL)), 3L)
+  p <- ggplot2::autoplot(hand_pose(x, frame = 1:3), view = "radial")
+  expect_equal(nrow(geom_data(p, "GeomSegment")), 3L * 24L)
+  expect_equal(nrow(geom_data(p, "GeomPoint")), 3L * 25L)
+  expect_equal(length(unique(geom_data(p, "GeomSegment")$PANEL)), 3L)
 })
 
 test_that("views project as documented", {
@@ -51,13 +56,22 @@ test_that("plot_pose_grid() draws one panel per group and set", {
   flat <- hust(5)
   bent <- hust(5, 60)
   g <- grasps(list(flat, bent, bent), meta = data.frame(grasp = c(1, 2, 2)))
-  b <- ggplot2::ggplot_build(plot_pose_grid(g))
-  expect_equal(length(unique(b$data[[1]]$PANEL)), 2L)
-  expect_equal(nrow(b$data[[1]]), 2L * 24L)      # one recording per type
+  p <- plot_pose_grid(g)
+  expect_equal(length(unique(geom_data(p, "GeomSegment")$PANEL)), 2L)
+  expect_equal(nrow(geom_data(p, "GeomSegment")), 2L * 24L)      # one recording per type
   gg <- plot_pose_grid(list(recorded = g, generated = g[2:3]), view = "radial")
   b <- ggplot2::ggplot_build(gg)
-  expect_equal(nrow(b$layout$layout), 4L)        # 2 types x 2 sets (one empty)
-  expect_setequal(as.character(unique(gg$layers[[1]]$data$set)), c("recorded", "generated"))
+  expect_equal(nrow(b$layout$layout), 2L)        # one panel per type, sets side by side
+  # in each panel the generated hand stands right of the recorded one, without overlap
+  pts <- geom_data(gg, "GeomPoint", b)
+  pts$set <- gg$layers[[3]]$data$set
+  type2 <- pts[pts$PANEL == 2, ]
+  expect_gt(min(type2$x[type2$set == "generated"]), max(type2$x[type2$set == "recorded"]))
+  # each hand is named underneath
+  txt <- geom_data(gg, "GeomText", b)
+  expect_equal(sort(as.character(txt$label)), c("generated", "recorded", "recorded"))
+  expect_true(all(txt$y < min(pts$y)))
+  expect_setequal(as.character(unique(gg$layers[[2]]$data$set)), c("recorded", "generated"))
   expect_error(plot_pose_grid(g, by = "colour"), class = "handmotion_error_bad_input")
   expect_error(plot_pose_grid(list(1)), class = "handmotion_error_bad_input")
 })
