@@ -1,9 +1,20 @@
 # Generation of new grasps from fitted models (Jeppsson 2017, eq. 2.5):
 # draw FPC scores alpha_i per DoF and a warp score beta from the mixtures,
 # build each DoF's curve on the template grid, and map it back to original
-# time through the sampled warping function. Everything is done for a whole
-# batch at once (matrix algebra over draws and DoFs, one findInterval() for
-# every warp inversion), so large batches are cheap.
+# time through the sampled warping function. A batch is drawn by one native
+# call per model (src/generate-kernel.c: scores, warps and the recording
+# matrices themselves) and assembled with vectorised metadata columns, so
+# there is no per-recording R work. The R reference of the same arithmetic
+# (option handmotion.generate_kernel = "r") is kept to test the kernel.
+#
+# What a large batch costs (bench/bench-generate.R): beyond the arithmetic,
+# R's garbage collector. Each recording is its own R vector; while a batch is
+# being built every full collection re-marks and re-sweeps all recordings
+# made so far (scattered over the batch's memory: a cache and TLB miss
+# each), and a batch triggers a number of collections that grows with the
+# logarithm of its size, as R's heap grows by about a fifth each time. So
+# the cost per grasp rises slowly with batch size whatever the kernel does;
+# the kernel keeps everything else small.
 
 #' @importFrom generics generate
 #' @export
@@ -19,6 +30,15 @@ generics::generate
 #' frame `j` (made monotone and started at frame 1); the new recording has
 #' `round(w(L))` frames and its value at original frame `t` is the curve at
 #' the template time where `w` reaches `t`.
+#'
+#' A batch is drawn in one native pass per model (scores, warps and the
+#' recording matrices), so large batches are cheap: on the 2-core reference
+#' machine some 150,000-200,000 grasps a second for batches of 1,000 to
+#' 100,000 (`bench/bench-generate.R`). For batches of several megabytes the
+#' R heap is pre-sized once, which spares R's collector repeated full passes;
+#' this changes no result. The random stream is used in a fixed order (all
+#' FPC scores, then all warp scores, model by model), so a seed always gives
+#' the same grasps.
 #'
 #' @param x A `grasp_model` ([fit_grasp_model()]) or `grasp_models`
 #'   ([fit_grasp_models()]).
@@ -44,7 +64,8 @@ generics::generate
 generate.grasp_model <- function(x, n = 1, seed = NULL, warp = TRUE, ...) {
   call <- rlang::caller_env()
   check_generate_n(n, call)
-  with_seed(seed, generate_batch(x, as.integer(n), warp = isTRUE(warp), id_offset = 0L))
+  generate_reserve(list(x), as.integer(n), isTRUE(warp))
+  with_seed(seed, generate_batch(x, as.integer(n), warp = isTRUE(warp)))
 }
 
 #' @rdname generate.grasp_model
@@ -53,14 +74,11 @@ generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = NULL, warp = TR
   call <- rlang::caller_env()
   check_generate_n(n, call)
   models <- select_models(x, grasp, call)
+  generate_reserve(models, as.integer(n), isTRUE(warp))
   with_seed(seed, {
-    parts <- vector("list", length(models))
-    offset <- 0L
-    for (i in seq_along(models)) {
-      parts[[i]] <- generate_batch(models[[i]], as.integer(n), warp = isTRUE(warp), id_offset = offset)
-      offset <- offset + as.integer(n)
-    }
-    combine_generated(parts)
+    # the models draw in turn from one RNG stream, then one assembly
+    parts <- lapply(models, draw_batch, n = as.integer(n), warp = isTRUE(warp))
+    assemble_generated(models, parts)
   })
 }
 
@@ -189,36 +207,27 @@ build_warps <- function(model, beta) {
   W
 }
 
-# Map the curves of a batch back to original time. For draw d with warp w_d,
-# original frame t takes the template time s where w_d(s) = t. All draws are
-# inverted by one findInterval() on the concatenated warps, each draw's warp
-# shifted by an offset larger than any frame count so the whole vector stays
-# sorted.
-unwarp_batch <- function(curves, W) {
+# Map the curves of a batch back to original time (R reference of the
+# kernel's step 3b). For draw d with warp w_d, original frame t takes the
+# template time s where w_d(s) = t: the template interval is the last
+# template frame j with w_d(j) <= t (warps are monotone, so a count),
+# clamped to 1..L-1; past w_d(L) the last frame's value; a flat interval
+# takes its left end.
+unwarp_batch <- function(curves, W, n_new) {
   n <- nrow(W)
   L <- ncol(W)
-  n_new <- pmax(2L, as.integer(round(W[, L])))
-  big <- max(n_new, W[, L]) + 2
-  offs <- (seq_len(n) - 1) * big
-  wvec <- as.vector(t(W + offs))                      # draw-major, sorted
   draw <- rep.int(seq_len(n), n_new)
   t_orig <- sequence(n_new)
-  q <- t_orig + offs[draw]
-  pos <- findInterval(q, wvec, rightmost.closed = FALSE)
-  base <- (draw - 1L) * L
-  j <- pos - base                                     # template interval, 0..L
-  j[j < 1L] <- 1L
+  j <- rowSums(W[draw, , drop = FALSE] <= t_orig)
   at_end <- j >= L
-  j[at_end] <- L - 1L
-  lo <- wvec[base + j]
-  hi <- wvec[base + j + 1L]
-  span <- hi - lo
-  f <- ifelse(span > 0, (q - lo) / span, 0)
-  f[at_end] <- 1
+  j <- pmin(pmax(j, 1L), L - 1L)
+  lo <- W[cbind(draw, j)]
+  span <- W[cbind(draw, j + 1L)] - lo
+  f <- ifelse(span > 0, (t_orig - lo) / span, 0)
   f <- pmin(pmax(f, 0), 1)
-  rows <- base + j
-  vals <- curves[rows, , drop = FALSE] * (1 - f) + curves[rows + 1L, , drop = FALSE] * f
-  list(values = vals, n_new = n_new)
+  f[at_end] <- 1
+  rows <- (draw - 1L) * L + j
+  curves[rows, , drop = FALSE] * (1 - f) + curves[rows + 1L, , drop = FALSE] * f
 }
 
 # Split a stacked (sum n_new) x p matrix into one matrix per draw.
@@ -228,64 +237,109 @@ split_rows <- function(vals, n_new) {
   lapply(seq_along(n_new), function(d) vals[starts[d]:ends[d], , drop = FALSE])
 }
 
-# One batch from one model. `kernel = "c"` builds every recording in one
-# native pass (src/generate-kernel.c); `kernel = "r"` is the vectorised R
-# reference with the same arithmetic, kept to test the kernel against.
-generate_batch <- function(model, n, warp = TRUE, id_offset = 0L, kernel = c("c", "r")) {
-  kernel <- match.arg(kernel)
+# Which implementation draws a batch: "c", the native kernel
+# (src/generate-kernel.c: scores, warps and recordings in one pass), or "r",
+# the vectorised R reference with the same arithmetic in the same order, kept
+# to test the kernel against. Internal option `handmotion.generate_kernel`.
+generate_kernel <- function() {
+  k <- getOption("handmotion.generate_kernel", "c")
+  if (!identical(k, "r")) "c" else "r"
+}
+
+# The raw draws of one batch from one model: list(recordings (unnamed
+# n_new x p matrices with colnames = DoFs), n_frames, beta (n x warp_ncomp),
+# alpha (n x p x ncomp)). Both kernels consume the RNG identically.
+draw_batch <- function(model, n, warp = TRUE, kernel = generate_kernel()) {
+  smp <- value_or(model$sampler, build_sampler(model))
+  if (kernel == "c") {
+    return(.Call(hm_generate_batch, as.integer(n), smp$dofs, smp$warp, model$basis$mean,
+                 model$basis$components, as.numeric(model$warp$mean),
+                 matrix(as.numeric(model$warp$components), model$target_length), isTRUE(warp),
+                 model$dofs))
+  }
   sc <- sample_scores(model, n)
   L <- model$target_length
+  curves <- build_curves(model, sc$alpha)
   if (warp) {
     W <- build_warps(model, sc$beta)
     n_new <- pmax(2L, as.integer(round(W[, L])))
+    recs <- split_rows(unwarp_batch(curves, W, n_new), n_new)
   } else {
-    W <- matrix(as.numeric(seq_len(L)), n, L, byrow = TRUE)
     n_new <- rep.int(as.integer(L), n)
+    recs <- split_rows(curves, n_new)
   }
-  if (kernel == "c") {
-    recs <- .Call(hm_generate_batch, model$basis$mean, model$basis$components, sc$alpha, W,
-                  n_new, model$dofs)
-  } else {
-    curves <- build_curves(model, sc$alpha)
-    recs <- if (warp) {
-      uw <- unwarp_batch(curves, W)
-      split_rows(uw$values, uw$n_new)
-    } else {
-      split_rows(curves, n_new)
-    }
-  }
-  ids <- paste0("gen", id_offset + seq_len(n))
+  list(recordings = recs, n_frames = n_new, beta = sc$beta, alpha = unname(sc$alpha))
+}
+
+# Pre-size R's heap for a large batch (hm_reserve_heap() in
+# src/generate-kernel.c): the batch's size in bytes is estimated from each
+# model's mean warp (its end is the mean frame count). Only for batches of
+# some megabytes (below that the heap's free room holds them), only without a
+# vector-heap limit (the reservation briefly counts against it), and a failed
+# reservation (address space refused) only forgoes the speed-up: the batch
+# itself is unaffected. Option handmotion.generate_reserve = FALSE turns it
+# off (bench/bench-generate.R measures both).
+generate_reserve <- function(models, n, warp) {
+  if (!isTRUE(getOption("handmotion.generate_reserve", TRUE))) return(invisible(FALSE))
+  per_grasp <- vapply(models, function(m) {
+    frames <- if (warp) max(2, m$warp$mean[m$target_length]) else m$target_length
+    (frames * length(m$dofs) * 8 + 200) * 1.1
+  }, numeric(1))
+  bytes <- n * sum(per_grasp)
+  if (!is.finite(bytes) || bytes < 4e6 || is.finite(mem.maxVSize())) return(invisible(FALSE))
+  ok <- tryCatch({
+    .Call(hm_reserve_heap, bytes)
+    TRUE
+  }, error = function(e) FALSE)
+  invisible(ok)
+}
+
+# One grasps object from the draws of one or more models (in order): ids
+# gen1..genN, the metadata built column by column (no per-recording R work,
+# no data.frame() or rbind()), and the grasps object by new_grasps() without
+# re-validating what the kernel guarantees.
+assemble_generated <- function(models, parts) {
+  first <- models[[1]]
+  counts <- vapply(parts, function(pt) length(pt$n_frames), integer(1))
+  N <- sum(counts)
+  ids <- paste0("gen", seq_len(N))
+  recs <- if (length(parts) == 1L) parts[[1]]$recordings else
+    unlist(lapply(parts, `[[`, "recordings"), recursive = FALSE)
   names(recs) <- ids
-  # a plain list made a data frame directly: data.frame() costs more than a
-  # whole single-grasp draw
+  n_frames <- unlist(lapply(parts, `[[`, "n_frames"), use.names = FALSE)
   lev <- feix_levels()
-  meta <- structure(list(id = ids, grasp = structure(rep.int(match(model$grasp, lev), n), levels = lev,
-                                                     class = "factor"),
-                         subject = rep.int(NA_character_, n), object = rep.int(NA_character_, n),
-                         trial = rep.int(NA_integer_, n), n_frames = n_new,
-                         source = rep.int("generated", n), warp_score = sc$beta[, 1]),
-                    class = "data.frame", row.names = c(NA_integer_, -n))
-  out <- new_grasps(recs, meta, model$dofs, model$rate, model$unit)
-  dimnames(sc$alpha)[[1]] <- ids
-  attr(out, "scores") <- sc$alpha
+  codes <- vapply(models, function(m) match(m$grasp, lev), integer(1))
+  meta <- structure(list(id = ids,
+                         grasp = structure(rep.int(codes, counts), levels = lev, class = "factor"),
+                         subject = rep.int(NA_character_, N), object = rep.int(NA_character_, N),
+                         trial = rep.int(NA_integer_, N), n_frames = n_frames,
+                         source = rep.int("generated", N),
+                         warp_score = unlist(lapply(parts, function(pt) pt$beta[, 1]), use.names = FALSE)),
+                    class = "data.frame", row.names = c(NA_integer_, -N))
+  out <- new_grasps(recs, meta, first$dofs, first$rate, first$unit, n_frames = n_frames)
+  attr(out, "scores") <- stack_scores(parts, N, ids, first)
   out
 }
 
-combine_generated <- function(parts) {
-  if (length(parts) == 1L) return(parts[[1]])
-  recs <- unlist(lapply(parts, `[[`, "recordings"), recursive = FALSE)
-  meta <- do.call(rbind, lapply(parts, `[[`, "meta"))
-  first <- parts[[1]]
-  out <- new_grasps(recs, meta, first$dofs, first$rate, first$unit)
-  sc <- lapply(parts, attr, "scores")
-  dims <- dim(sc[[1]])
-  all_sc <- array(0, c(sum(vapply(sc, function(s) dim(s)[1], 1L)), dims[2], dims[3]),
-                  dimnames = list(meta$id, dimnames(sc[[1]])[[2]], dimnames(sc[[1]])[[3]]))
-  at <- 0L
-  for (s in sc) {
-    all_sc[at + seq_len(dim(s)[1]), , ] <- s
-    at <- at + dim(s)[1]
+# The FPC scores of all parts as one N x p x ncomp array named by id, DoF, FPC.
+stack_scores <- function(parts, N, ids, model) {
+  dn <- list(ids, model$dofs, paste0("FPC", seq_len(model$settings$ncomp)))
+  if (length(parts) == 1L) {
+    sc <- parts[[1]]$alpha
+    dimnames(sc) <- dn
+    return(sc)
   }
-  attr(out, "scores") <- all_sc
-  out
+  sc <- array(0, c(N, length(dn[[2]]), length(dn[[3]])), dimnames = dn)
+  at <- 0L
+  for (pt in parts) {
+    m <- dim(pt$alpha)[1]
+    sc[at + seq_len(m), , ] <- pt$alpha
+    at <- at + m
+  }
+  sc
+}
+
+# One batch from one model as a grasps object.
+generate_batch <- function(model, n, warp = TRUE, kernel = generate_kernel()) {
+  assemble_generated(list(model), list(draw_batch(model, n, warp, kernel)))
 }
