@@ -169,8 +169,8 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
     return(align_linear_fallback(recs, L, engine,
                             reason = "fewer than 2 recordings to align"))
   }
-  norm <- if (features == "shape") lapply(recs, shape_normaliser) else NULL
-  feats <- if (is.null(norm)) recs else Map(normalise_recording, recs, norm)
+  norm <- if (features == "shape") shape_features(recs) else NULL
+  feats <- if (is.null(norm)) recs else norm$features
   fit <- tryCatch(dba_with_drops(feats, L, engine, max_iter, tol, max_stall, window),
                   error = function(e) e)
   if (inherits(fit, "error")) {
@@ -189,10 +189,11 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
   if (!is.null(norm)) {
     # back to data units: the normalisation is affine per recording and DoF,
     # so the mean of the normalised matched frames maps to the raw mean
-    for (i in seq_along(kept)) {
-      nm <- norm[[kept[i]]]
-      warped[i, , ] <- denormalise_recording(matrix(warped[i, , ], L), nm)
-    }
+    # (denormalise_recording() for all recordings at once: element [i, l, c]
+    # of the array is scaled by scale[i, c], in the array's own order)
+    per_frame <- rep(seq_len(ncol(norm$scale)), each = L)
+    warped <- warped * as.vector(norm$scale[kept, per_frame, drop = FALSE]) +
+      as.vector(norm$centre[kept, per_frame, drop = FALSE])
     template <- matrix(colMeans(warped, dims = 1L), L)
   } else {
     template <- feature_template
@@ -229,6 +230,16 @@ shape_normaliser <- function(x, k = 3L) {
   floor <- 0.1 * max(sdev)
   if (!is.finite(floor) || floor <= 0) floor <- 1
   list(centre = centre, scale = pmax(sdev, floor))
+}
+
+# The shape features of every recording in one compiled call
+# (src/dba-prep.c, the same arithmetic as shape_normaliser() and
+# normalise_recording(), which stay as the reference): `features` (named like
+# `recs`), and `centre` and `scale` (recordings x DoFs).
+shape_features <- function(recs, k = 3L) {
+  out <- .Call(hm_shape_features, unname(recs), as.integer(k))
+  names(out$features) <- names(recs)
+  out
 }
 
 # (rep() rather than sweep(): called once per recording, sweep's checks cost
@@ -315,7 +326,9 @@ dba_run <- function(recs, template, engine, max_iter, tol, window) {
     stop("alignment failure forced by option handmotion.align_force_failure")
   }
   batch <- if (engine == "fast") dtw_batch_fast else dtw_batch_reference
-  res <- batch(recs, template, window)
+  # Only the last alignment's warped recordings, warps and distances are
+  # kept; the steps before it need the matched-frame sums alone (`full`).
+  res <- batch(recs, template, window, full = max_iter == 0)
   iterations <- 0L
   converged <- FALSE
   changes <- numeric(0)
@@ -327,11 +340,9 @@ dba_run <- function(recs, template, engine, max_iter, tol, window) {
     template <- updated
     changes <- c(changes, change)
     iterations <- iterations + 1L
-    res <- batch(recs, template, window)
-    if (change < tol) {
-      converged <- TRUE
-      break
-    }
+    converged <- change < tol
+    res <- batch(recs, template, window, full = converged || iterations == max_iter)
+    if (converged) break
   }
   res$warps <- pin_warp_ends(res$warps, vapply(recs, nrow, integer(1)))
   res$template <- template
@@ -341,12 +352,13 @@ dba_run <- function(recs, template, engine, max_iter, tol, window) {
   res
 }
 
-dtw_batch_fast <- function(recs, template, window) {
-  .Call(hm_dtw_batch, unname(recs), template, window)
+dtw_batch_fast <- function(recs, template, window, full = TRUE) {
+  .Call(hm_dtw_batch, unname(recs), template, window, full)
 }
 
-# Same result as dtw_batch_fast, one dtw::dtw() call per recording.
-dtw_batch_reference <- function(recs, template, window) {
+# Same result as dtw_batch_fast, one dtw::dtw() call per recording (always
+# the full result).
+dtw_batch_reference <- function(recs, template, window, full = TRUE) {
   L <- nrow(template)
   p <- ncol(template)
   N <- length(recs)
@@ -382,8 +394,13 @@ pin_warp_ends <- function(warps, n) {
   warps
 }
 
-# Longest run of template frames held on one original frame, per recording.
+# Longest run of template frames held on one original frame, per recording
+# (compiled, src/dba-prep.c; stall_lengths_r() is the reference).
 stall_lengths <- function(warps) {
+  .Call(hm_stall_lengths, warps)
+}
+
+stall_lengths_r <- function(warps) {
   L <- ncol(warps)
   if (L < 2L) return(rep(1L, nrow(warps)))
   same <- warps[, -1L, drop = FALSE] == warps[, -L, drop = FALSE]
@@ -393,7 +410,20 @@ stall_lengths <- function(warps) {
   })
 }
 
+# The mean of the recordings linearly resampled to L frames. Compiled
+# (src/dba-prep.c) with the warping functions from linear_warp_function(),
+# one per distinct length; mean_linear_template_r() is the reference.
 mean_linear_template <- function(recs, L) {
+  n <- vapply(recs, nrow, integer(1))
+  lengths <- sort(unique(n))
+  warps <- lapply(lengths, linear_warp_function, L = L)
+  acc <- .Call(hm_linear_mean, unname(recs), warps, match(n, lengths))
+  cn <- colnames(recs[[1]])
+  if (!is.null(cn)) dimnames(acc) <- list(NULL, cn) # as the R version's sum keeps them
+  acc / length(recs)
+}
+
+mean_linear_template_r <- function(recs, L) {
   acc <- matrix(0, L, ncol(recs[[1]]))
   for (x in recs) acc <- acc + warp_linear(x, L)
   acc / length(recs)
@@ -506,8 +536,12 @@ align_check_recordings <- function(recordings, call) {
   if (is.null(ids) || anyNA(ids) || any(!nzchar(ids)) || anyDuplicated(ids)) {
     ids <- as.character(seq_along(recordings))
   }
-  recs <- vector("list", length(recordings))
-  for (k in seq_along(recordings)) {
+  recs <- recordings
+  # (double matrices, the usual case, need no conversion: only the others go
+  # through as_align_matrix(), which names the offending recording)
+  ready <- vapply(recordings, function(x) is.double(x) && is.matrix(x) && length(x) > 0L,
+                  logical(1))
+  for (k in which(!ready)) {
     recs[[k]] <- as_align_matrix(recordings[[k]], sprintf("recordings[[\"%s\"]]", ids[k]), call)
   }
   p <- vapply(recs, ncol, integer(1))

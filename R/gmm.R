@@ -6,7 +6,9 @@
 # * "reference": mixtools::mvnormalmixEM (d >= 2) / mixtools::normalmixEM
 #   (d = 1), the package of the thesis; random starting values (seeded by
 #   `seed`) and seconds per fit;
-# * "fast": our EM, vectorised over observations. One matrix product gives
+# * "fast": our EM (compiled for d = 1 and 2, src/gmm-em.c; the R version
+#   below for d > 2 and, with option handmotion.gmm_em = "R", for tests),
+#   vectorised over observations. One matrix product gives
 #   the sufficient statistics of every component (M-step) and one gives all
 #   log-densities (E-step), because a Gaussian log-density is linear in the
 #   monomials 1, x_a, x_a x_b. Several starts (principal-axis splits, k-means
@@ -33,8 +35,12 @@ gmm_det_floor <- 1e-8
 #' `engine = "fast"` (default) runs a vectorised EM from several starts side
 #' by side (splits along the principal axes, k-means from spread-out centres
 #' and from four random centres drawn under `seed`) and keeps the converged
-#' run with the highest log-likelihood; `iterations` are that run's. It is
-#' deterministic and leaves the global random number generator as it was.
+#' run with the highest log-likelihood (the first of the runs within `tol` of
+#' it, so that rounding does not decide between runs that met the same
+#' optimum); `iterations` are that run's. For `d` = 1 and 2 the EM runs in
+#' compiled code (src/gmm-em.c), which reproduces the R implementation still
+#' used for `d` > 2. It is deterministic and leaves the global random number
+#' generator as it was.
 #' `engine = "reference"` calls [mixtools::mvnormalmixEM()] (d >= 2) or
 #' [mixtools::normalmixEM()] (d = 1) with `epsilon = tol` and
 #' `maxit = max_iter`; their random starting values are drawn under `seed`.
@@ -106,9 +112,14 @@ gmm_fit <- function(X, k = 2, engine = c("fast", "reference"), max_iter = 500, t
   reason <- gmm_failure(cand, X, max_iter)
   if (!is.null(reason)) return(gmm_fallback(X, reason, engine, iterations = cand$iterations))
   ord <- order(-round(cand$weights, 12), cand$means[, 1])
-  gmm_new(cand$weights[ord], cand$means[ord, , drop = FALSE], cand$covs[, , ord, drop = FALSE],
-          X, iterations = as.integer(cand$iterations), converged = TRUE, fallback = FALSE,
-          reason = NA_character_, engine = engine)
+  fit <- gmm_new(cand$weights[ord], cand$means[ord, , drop = FALSE],
+                 cand$covs[, , ord, drop = FALSE], X, iterations = as.integer(cand$iterations),
+                 converged = TRUE, fallback = FALSE, reason = NA_character_, engine = engine)
+  # (the last failure test, on the log-likelihood gmm_new() computed anyway)
+  if (!is.finite(fit$loglik)) {
+    return(gmm_fallback(X, "non-finite log-likelihood", engine, iterations = cand$iterations))
+  }
+  fit
 }
 
 gmm_data <- function(X, arg, call) {
@@ -167,8 +178,6 @@ gmm_failure <- function(cand, X, max_iter) {
                      dj / det0))
     }
   }
-  ll <- gmm_loglik_params(cand$weights, cand$means, cand$covs, X)
-  if (!is.finite(ll)) return("non-finite log-likelihood")
   NULL
 }
 
@@ -252,7 +261,12 @@ gmm_em_fast <- function(X, k, max_iter, tol, seed) {
     return(list(converged = FALSE, iterations = runs[[which(alive)[1]]]$iterations))
   }
   runs <- runs[done]
-  best <- runs[[which.max(vapply(runs, function(r) r$loglik, numeric(1)))]]
+  # Starts whose log-likelihoods differ by less than the convergence
+  # tolerance have met the same optimum (as far as EM can tell): the first of
+  # them wins, so rounding (compiled against R EM, one BLAS against another)
+  # does not pick a different start.
+  lls <- vapply(runs, function(r) r$loglik, numeric(1))
+  best <- runs[[which(lls >= max(lls) - tol)[1]]]
   means <- t(best$mu) * rep(scale, each = k) + rep(centre, each = k)
   covs <- array(0, c(d, d, k))
   for (j in seq_len(k)) covs[, , j] <- best$sigma[, , j] * outer(scale, scale)
@@ -275,7 +289,40 @@ gmm_unmap <- function(labels, k) {
   z
 }
 
-# EM from several starting partitions at once. The starts are columns of
+# EM from several starting partitions at once: the compiled EM
+# (src/gmm-em.c) for d = 1 and d = 2, the R version below otherwise or when
+# option `handmotion.gmm_em = "R"` asks for it (tests compare the two).
+# Returns one result per start: the last parameters, log-likelihood (of the
+# standardised data), iterations and convergence, or `failed` with a reason.
+gmm_em_batch <- function(design, starts, k, max_iter, tol, logdet0) {
+  if (design$d <= 2L && !identical(getOption("handmotion.gmm_em"), "R")) {
+    gmm_em_batch_c(design, starts, k, max_iter, tol, logdet0)
+  } else {
+    gmm_em_batch_r(design, starts, k, max_iter, tol, logdet0)
+  }
+}
+
+gmm_em_batch_c <- function(design, starts, k, max_iter, tol, logdet0) {
+  d <- design$d
+  labels <- matrix(as.integer(unlist(starts, use.names = FALSE)), design$n)
+  # (option handmotion.gmm_simd caps the instruction set: 0 scalar, 1 SSE2,
+  # 2 AVX2 (default; where compiled in and the CPU has it); for tests)
+  r <- .Call(hm_gmm_em, design$P, labels, as.integer(k), as.integer(max_iter), as.double(tol),
+             as.double(logdet0), as.integer(getOption("handmotion.gmm_simd", 2L)))
+  mu <- array(r$mu, c(d, k, length(starts)))
+  sigma <- array(r$sigma, c(d, d, k, length(starts)))
+  lapply(seq_along(starts), function(a) {
+    switch(r$status[a] + 1L,
+      list(loglik = r$loglik[a], iterations = r$iterations[a], converged = r$converged[a],
+           weights = r$weights[, a], mu = matrix(mu[, , a], d, k),
+           sigma = array(sigma[, , , a], c(d, d, k))),
+      list(failed = gmm_batch_reason(seq_len(k) == r$bad[a], r$loglik[a]),
+           iterations = r$iterations[a]),
+      list(failed = "merged", iterations = r$iterations[a]))
+  })
+}
+
+# The R version of the batch EM. The starts are columns of
 # one responsibility matrix, so every iteration costs one matrix product for
 # all starts' M-steps and one for their E-steps. Column layout: for k = 2
 # component-major (component j of start a is column (j - 1) * A + a, and only
@@ -283,10 +330,8 @@ gmm_unmap <- function(labels, k) {
 # otherwise start-major (column (a - 1) * k + j). A start leaves the batch
 # when it converges (an iteration raised its log-likelihood by less than
 # `tol`), fails (degenerate component, non-finite log-likelihood) or merges
-# with another. Returns one result per start: the last parameters,
-# log-likelihood (of the standardised data), iterations and convergence, or
-# `failed` with a reason.
-gmm_em_batch <- function(design, starts, k, max_iter, tol, logdet0) {
+# with another.
+gmm_em_batch_r <- function(design, starts, k, max_iter, tol, logdet0) {
   P <- design$P
   n <- design$n
   psum <- colSums(P)
@@ -316,7 +361,8 @@ gmm_em_batch <- function(design, starts, k, max_iter, tol, logdet0) {
       C2 <- C[, A + seq_len(A), drop = FALSE]
       neg <- P %*% (C2 - C1)
       E <- exp(neg)
-      if (all(E < Inf)) {
+      # (a failed start's coefficients may be NaN: it leaves the batch anyway)
+      if (all(E[, !failed] < Inf)) {
         # log(w1 f1 + w2 f2) = log(w1 f1) + log1p(w2 f2 / (w1 f1))
         ll_new <- drop(crossprod(psum, C1)) + .colSums(log1p(E), n, A)
         Z <- 1 / (1 + E)
@@ -382,7 +428,7 @@ gmm_merged_starts <- function(params, k, A, cols_of) {
   merged <- logical(A)
   for (b in seq_len(A)[-1]) {
     for (a in seq_len(b - 1L)) {
-      if (!merged[a] && max(abs(sig[a, ] - sig[b, ])) < 1e-2) {
+      if (!merged[a] && isTRUE(max(abs(sig[a, ] - sig[b, ])) < 1e-2)) {
         merged[b] <- TRUE
         break
       }
@@ -482,24 +528,40 @@ gmm_starts <- function(Y, k, seed) {
   axes <- eigen(crossprod(Y) / n, symmetric = TRUE)$vectors
   proj <- Y %*% axes
   by_quantile <- function(x) {
-    r <- rank(x, ties.method = "first")
+    r <- integer(n)
+    r[order(x)] <- seq_len(n) # rank(x, ties.method = "first"), faster
     pmin(k, 1L + floor((r - 1) * k / n))
   }
   starts <- list(by_quantile(proj[, 1]))
   if (d >= 2L) starts <- c(starts, list(by_quantile(proj[, 2])))
-  spread <- vapply(seq_len(k), function(g) which.min(abs(rank(proj[, 1]) - (g - 0.5) * n / k)),
-                   integer(1))
-  starts <- c(starts, list(gmm_kmeans(Y, Y[spread, , drop = FALSE])))
-  if (k == 2L) starts <- c(starts, list(gmm_best_split(proj[, 1])))
+  r1 <- rank(proj[, 1])
+  spread <- vapply(seq_len(k), function(g) which.min(abs(r1 - (g - 0.5) * n / k)), integer(1))
   random <- with_seed(if (is.null(seed)) 1L else seed,
                       lapply(1:4, function(i) sample.int(n, k)))
-  starts <- c(starts, lapply(random, function(idx) gmm_kmeans(Y, Y[idx, , drop = FALSE])))
+  centres <- lapply(c(list(spread), random), function(idx) Y[idx, , drop = FALSE])
+  by_kmeans <- gmm_kmeans_all(Y, centres)
+  starts <- c(starts, by_kmeans[1])
+  if (k == 2L) starts <- c(starts, list(gmm_best_split(proj[, 1])))
+  starts <- c(starts, by_kmeans[-1])
   big_enough <- vapply(starts, function(lab) {
     length(unique(lab)) == k && min(tabulate(lab, k)) >= d + 1L
   }, logical(1))
   # the same partition under permuted labels is one start
   canonical <- lapply(starts[big_enough], function(lab) match(lab, unique(lab)))
   unique(canonical)
+}
+
+# k-means from each of a list of centre matrices: compiled (src/gmm-em.c)
+# unless option `handmotion.gmm_em = "R"`; both give the same labels.
+gmm_kmeans_all <- function(Y, centres, iters = 10L) {
+  if (identical(getOption("handmotion.gmm_em"), "R")) {
+    return(lapply(centres, function(cen) gmm_kmeans(Y, cen, iters)))
+  }
+  lab <- .Call(hm_gmm_kmeans, Y, lapply(centres, function(cen) {
+    storage.mode(cen) <- "double"
+    cen
+  }), as.integer(iters))
+  lapply(seq_along(centres), function(s) lab[, s])
 }
 
 # A few Lloyd iterations from given centres.
@@ -564,7 +626,8 @@ gmm_log_components <- function(weights, means, covs, X) {
 
 gmm_log_density <- function(weights, means, covs, X) {
   L <- gmm_log_components(weights, means, covs, X)
-  top <- apply(L, 1L, max)
+  top <- L[, 1L]
+  for (j in seq_len(ncol(L))[-1L]) top <- pmax(top, L[, j])
   out <- top + log(rowSums(exp(L - top)))
   out[top == -Inf] <- -Inf
   out

@@ -14,15 +14,21 @@
  *
  * Two entry points:
  *   hm_dtw_pair(x, y, window)        one path: list(index1, index2, distance)
- *   hm_dtw_batch(recs, tmpl, window) every recording against one template,
- *     returning what one DTW barycenter averaging (DBA) step needs: the sum and
- *     count of recording frames matched to each template frame, and each
- *     recording's warped frames and warping function.
+ *   hm_dtw_batch(recs, tmpl, window, full) every recording against one
+ *     template, returning what one DTW barycenter averaging (DBA) step needs:
+ *     the sum and count of recording frames matched to each template frame,
+ *     and, when `full` is TRUE, each recording's warped frames, warping
+ *     function and distance (only the last DBA step needs those; skipping
+ *     them spares a large allocation per step).
  * All scratch memory comes from R_alloc (reclaimed by R when .Call returns,
  * also on error), so an error raised midway leaks nothing. */
+#include <float.h>
 #include <math.h>
 #include <R.h>
 #include <Rinternals.h>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 #define DIR_NONE 0
 #define DIR_DIAG 1
@@ -50,42 +56,127 @@ static void work_alloc(dtw_work *w, int nmax, int m) {
 /* DTW on NaN/Inf has no meaningful path. */
 static int all_finite(const double *x, size_t len) {
   for (size_t q = 0; q < len; q++)
-    if (!R_FINITE(x[q])) return 0;
+    if (!(fabs(x[q]) <= DBL_MAX)) return 0; /* false for NaN and +-Inf */
   return 1;
 }
 
 /* Euclidean distances between every frame of x (n x p, column-major) and
- * template frame j of y (m x p, column-major), into dcol[0..n-1]. The sum over
- * DoFs runs in the same order (k = 0..p-1) for every cell, as proxy::dist
- * does, so values are bit-identical to the reference; looping over frames
- * innermost makes the cells independent, so the work pipelines (and
- * vectorises) instead of waiting on one long chain of additions. */
-static void local_column(const double *x, int n, const double *y, int m, int p,
-                         int j, double *dcol) {
-  for (int i = 0; i < n; i++) dcol[i] = 0.0;
-  for (int k = 0; k < p; k++) {
-    const double *xk = x + (size_t) k * n;
-    const double yk = y[(size_t) k * m + j];
-    for (int i = 0; i < n; i++) {
-      double d = xk[i] - yk;
-      dcol[i] += d * d;
+ * template frame yj (p values, contiguous), into dcol[0..n-1]. The sum over
+ * DoFs runs in the same order (k = 0..p-1, from 0) for every cell, as
+ * proxy::dist does, so values are bit-identical to the reference. Cells are
+ * done eight at a time with the partial sums in registers: the eight sums
+ * are independent, so the additions pipeline, and no partial sum goes
+ * through memory between DoFs. */
+static void local_column(const double *x, int n, const double *yj, int p, double *dcol) {
+  int i = 0;
+#ifdef __SSE2__
+  /* x86-64: two cells per SSE2 instruction (baseline on x86-64, no
+   * special compiler flags); packed and scalar IEEE arithmetic agree */
+  for (; i + 8 <= n; i += 8) {
+    __m128d a0 = _mm_setzero_pd(), a1 = _mm_setzero_pd(), a2 = _mm_setzero_pd(),
+            a3 = _mm_setzero_pd();
+    for (int k = 0; k < p; k++) {
+      const double *xk = x + (size_t) k * n + i;
+      const __m128d yk = _mm_set1_pd(yj[k]);
+      __m128d d0 = _mm_sub_pd(_mm_loadu_pd(xk), yk);
+      __m128d d1 = _mm_sub_pd(_mm_loadu_pd(xk + 2), yk);
+      __m128d d2 = _mm_sub_pd(_mm_loadu_pd(xk + 4), yk);
+      __m128d d3 = _mm_sub_pd(_mm_loadu_pd(xk + 6), yk);
+      a0 = _mm_add_pd(a0, _mm_mul_pd(d0, d0));
+      a1 = _mm_add_pd(a1, _mm_mul_pd(d1, d1));
+      a2 = _mm_add_pd(a2, _mm_mul_pd(d2, d2));
+      a3 = _mm_add_pd(a3, _mm_mul_pd(d3, d3));
     }
+    _mm_storeu_pd(dcol + i, _mm_sqrt_pd(a0));
+    _mm_storeu_pd(dcol + i + 2, _mm_sqrt_pd(a1));
+    _mm_storeu_pd(dcol + i + 4, _mm_sqrt_pd(a2));
+    _mm_storeu_pd(dcol + i + 6, _mm_sqrt_pd(a3));
   }
-  for (int i = 0; i < n; i++) dcol[i] = sqrt(dcol[i]);
+#else
+  /* (spelt out so that the compiler keeps the eight sums in registers) */
+  for (; i + 8 <= n; i += 8) {
+    double a0 = 0.0, a1 = 0.0, a2 = 0.0, a3 = 0.0, a4 = 0.0, a5 = 0.0, a6 = 0.0, a7 = 0.0;
+    for (int k = 0; k < p; k++) {
+      const double *xk = x + (size_t) k * n + i;
+      const double yk = yj[k];
+      double d0 = xk[0] - yk, d1 = xk[1] - yk, d2 = xk[2] - yk, d3 = xk[3] - yk;
+      double d4 = xk[4] - yk, d5 = xk[5] - yk, d6 = xk[6] - yk, d7 = xk[7] - yk;
+      a0 += d0 * d0;
+      a1 += d1 * d1;
+      a2 += d2 * d2;
+      a3 += d3 * d3;
+      a4 += d4 * d4;
+      a5 += d5 * d5;
+      a6 += d6 * d6;
+      a7 += d7 * d7;
+    }
+    dcol[i] = sqrt(a0);
+    dcol[i + 1] = sqrt(a1);
+    dcol[i + 2] = sqrt(a2);
+    dcol[i + 3] = sqrt(a3);
+    dcol[i + 4] = sqrt(a4);
+    dcol[i + 5] = sqrt(a5);
+    dcol[i + 6] = sqrt(a6);
+    dcol[i + 7] = sqrt(a7);
+  }
+#endif
+  for (; i < n; i++) {
+    double a = 0.0;
+    for (int k = 0; k < p; k++) {
+      double d = x[(size_t) k * n + i] - yj[k];
+      a += d * d;
+    }
+    dcol[i] = sqrt(a);
+  }
 }
 
 /* Fill the cumulative cost matrix and backtrack. x is n x p, y is m x p
  * (column-major). window < 0 means no window. Returns the path length (path
  * stored forwards in w->pi/w->pj, 0-based) or -1 when no admissible path
  * exists. */
-static int dtw_core(const double *x, int n, const double *y, int m, int p,
+static int dtw_core(const double *x, int n, const double *yt, int m, int p,
                     double window, dtw_work *w, double *distance) {
   double *cm = w->cm;
   unsigned char *dir = w->dir;
   double *dcol = w->dcol;
   const double ratio_num = (double) m;
+  if (window < 0) {
+    /* no window: every cell is reached, so no NaN bookkeeping; same
+     * candidates in the same order with the same strict comparisons */
+    local_column(x, n, yt, p, dcol);
+    cm[0] = dcol[0];
+    dir[0] = DIR_NONE;
+    for (int i = 1; i < n; i++) { /* first column: only steps up */
+      cm[i] = cm[i - 1] + dcol[i];
+      dir[i] = DIR_UP;
+    }
+    for (int j = 1; j < m; j++) {
+      local_column(x, n, yt + (size_t) j * p, p, dcol);
+      double *cj = cm + (size_t) j * n;
+      const double *cp = cj - n;
+      unsigned char *dj = dir + (size_t) j * n;
+      cj[0] = cp[0] + dcol[0]; /* first row: only steps left */
+      dj[0] = DIR_LEFT;
+      double below = cj[0];
+      for (int i = 1; i < n; i++) {
+        /* written as selects, not branches: which step wins is data
+         * dependent, and mispredicted branches cost more than the cell */
+        double d = dcol[i];
+        double diag = cp[i - 1] + 2.0 * d;
+        double left = cp[i] + d;
+        double up = below + d;
+        int take_left = left < diag;
+        double best = take_left ? left : diag;
+        int take_up = up < best;
+        best = take_up ? up : best;
+        cj[i] = best;
+        dj[i] = (unsigned char) (take_up ? DIR_UP : (take_left ? DIR_LEFT : DIR_DIAG));
+        below = best;
+      }
+    }
+  } else {
   for (int j = 0; j < m; j++) {
-    local_column(x, n, y, m, p, j, dcol);
+    local_column(x, n, yt + (size_t) j * p, p, dcol);
     for (int i = 0; i < n; i++) {
       size_t c = (size_t) j * n + i;
       if (i == 0 && j == 0) { /* seed, independent of the window (as dtw) */
@@ -95,11 +186,9 @@ static int dtw_core(const double *x, int n, const double *y, int m, int p,
       }
       cm[c] = NA_REAL;
       dir[c] = DIR_NONE;
-      if (window >= 0) {
-        /* same arithmetic as dtw::slantedBandWindow: (i * m) / n, 1-based */
-        double diagj = ((double) (i + 1) * ratio_num) / (double) n;
-        if (fabs((double) (j + 1) - diagj) > window) continue;
-      }
+      /* same arithmetic as dtw::slantedBandWindow: (i * m) / n, 1-based */
+      double diagj = ((double) (i + 1) * ratio_num) / (double) n;
+      if (fabs((double) (j + 1) - diagj) > window) continue;
       double d = dcol[i];
       double best = R_PosInf;
       unsigned char arg = DIR_NONE;
@@ -121,6 +210,7 @@ static int dtw_core(const double *x, int n, const double *y, int m, int p,
         dir[c] = arg;
       }
     }
+  }
   }
   double total = cm[(size_t) (m - 1) * n + (n - 1)];
   if (ISNAN(total)) return -1;
@@ -147,6 +237,15 @@ static int dtw_core(const double *x, int n, const double *y, int m, int p,
     t = w->pj[a]; w->pj[a] = w->pj[b]; w->pj[b] = t;
   }
   return len;
+}
+
+/* The template frame-major (p values per frame, contiguous), as
+ * local_column() reads it. */
+static const double *frame_major(const double *y, int m, int p) {
+  double *yt = (double *) R_alloc((size_t) m * p, sizeof(double));
+  for (int j = 0; j < m; j++)
+    for (int k = 0; k < p; k++) yt[(size_t) j * p + k] = y[(size_t) k * m + j];
+  return yt;
 }
 
 static double window_arg(SEXP window) {
@@ -180,7 +279,7 @@ SEXP hm_dtw_pair(SEXP x, SEXP y, SEXP window) {
     error("'template' contains non-finite values");
 
   double distance = NA_REAL;
-  int len = dtw_core(REAL(x), n, REAL(y), m, p, win, &w, &distance);
+  int len = dtw_core(REAL(x), n, frame_major(REAL(y), m, p), m, p, win, &w, &distance);
   if (len < 0) error("no warping path exists within the window");
 
   SEXP i1 = PROTECT(allocVector(INTSXP, len));
@@ -205,12 +304,14 @@ SEXP hm_dtw_pair(SEXP x, SEXP y, SEXP window) {
 
 /* recs: list of n_k x p double matrices; tmpl: L x p. Returns
  * list(sum = L x p, count = int L, warped = N x L x p, warps = N x L,
- *      distance = N). Errors name the (1-based) recording that failed. */
-SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window) {
+ *      distance = N), the last three NULL unless `full`. Errors name the
+ * (1-based) recording that failed. */
+SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window, SEXP full_) {
   if (!isNewList(recs)) error("'recordings' must be a list");
   check_matrix(tmpl, "template");
   int N = LENGTH(recs), L = nrows(tmpl), p = ncols(tmpl);
   double win = window_arg(window);
+  const int full = asLogical(full_) == TRUE;
   int nmax = 1;
   for (int k = 0; k < N; k++) {
     SEXP xk = VECTOR_ELT(recs, k);
@@ -225,6 +326,7 @@ SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window) {
   const double *y = REAL(tmpl);
   if (!all_finite(y, (size_t) L * p))
     error("the template contains non-finite values");
+  const double *yt = frame_major(y, L, p);
   int *cnt_k = (int *) R_alloc((size_t) L, sizeof(int));
   /* one recording's warped frames, contiguous (L x p), copied once into the
    * N x L x p result: avoids scattered read-modify-writes at stride N */
@@ -232,16 +334,17 @@ SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window) {
 
   SEXP sum = PROTECT(allocMatrix(REALSXP, L, p));
   SEXP count = PROTECT(allocVector(INTSXP, L));
-  SEXP warps = PROTECT(allocMatrix(REALSXP, N, L));
-  SEXP dist = PROTECT(allocVector(REALSXP, N));
-  SEXP dims = PROTECT(allocVector(INTSXP, 3));
-  INTEGER(dims)[0] = N; INTEGER(dims)[1] = L; INTEGER(dims)[2] = p;
-  SEXP warped = PROTECT(allocArray(REALSXP, dims));
-  double *ps = REAL(sum), *pw = REAL(warps), *pd = REAL(dist), *pa = REAL(warped);
+  SEXP warps = PROTECT(full ? allocMatrix(REALSXP, N, L) : R_NilValue);
+  SEXP dist = PROTECT(full ? allocVector(REALSXP, N) : R_NilValue);
+  SEXP warped = PROTECT(full ? alloc3DArray(REALSXP, N, L, p) : R_NilValue);
+  double *pw = full ? REAL(warps) : NULL, *pd = full ? REAL(dist) : NULL;
+  double *pa = full ? REAL(warped) : NULL;
+  if (full)
+    for (size_t q = 0; q < (size_t) N * L; q++) pw[q] = 0.0;
+  double *ps = REAL(sum);
   int *pc = INTEGER(count);
   for (size_t q = 0; q < (size_t) L * p; q++) ps[q] = 0.0;
   for (int j = 0; j < L; j++) pc[j] = 0;
-  for (size_t q = 0; q < (size_t) N * L; q++) pw[q] = 0.0;
 
   for (int k = 0; k < N; k++) {
     SEXP xk = VECTOR_ELT(recs, k);
@@ -250,8 +353,16 @@ SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window) {
     if (!all_finite(x, (size_t) n * p))
       error("recording %d contains non-finite values", k + 1);
     double d = NA_REAL;
-    int len = dtw_core(x, n, y, L, p, win, &w, &d);
+    int len = dtw_core(x, n, yt, L, p, win, &w, &d);
     if (len < 0) error("no warping path exists for recording %d within the window", k + 1);
+    if (!full) {
+      for (int s = 0; s < len; s++) {
+        int i = w.pi[s], j = w.pj[s];
+        pc[j]++;
+        for (int c = 0; c < p; c++) ps[j + (size_t) L * c] += x[i + (size_t) n * c];
+      }
+      continue;
+    }
     pd[k] = d;
     for (int j = 0; j < L; j++) cnt_k[j] = 0;
     for (size_t q = 0; q < (size_t) L * p; q++) wk[q] = 0.0;
@@ -287,6 +398,6 @@ SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window) {
   SET_STRING_ELT(nms, 3, mkChar("warps"));
   SET_STRING_ELT(nms, 4, mkChar("distance"));
   setAttrib(out, R_NamesSymbol, nms);
-  UNPROTECT(8);
+  UNPROTECT(7);
   return out;
 }

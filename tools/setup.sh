@@ -53,7 +53,7 @@ Rscript -e '
 
 # The package itself: rebuild its docs if roxygen sources changed, then install.
 if [ "${HANDMOTION_SKIP_INSTALL:-0}" != "1" ]; then
-  R CMD INSTALL --no-multiarch --with-keep.source . >/tmp/handmotion-install.log 2>&1 || {
+  R CMD INSTALL --preclean --no-multiarch . >/tmp/handmotion-install.log 2>&1 || {
     cat /tmp/handmotion-install.log; exit 1; }
   echo "setup: handmotion $(Rscript -e 'cat(as.character(packageVersion("handmotion")))') installed"
 fi

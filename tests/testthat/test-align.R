@@ -357,3 +357,50 @@ test_that("autoplot draws the frame-count histogram and one path per recording",
   # linear fallback: straight paths
   expect_true(all(tapply(d$y, d$group, function(y) diff(range(diff(y)))) < 1e-8))
 })
+
+# ---- compiled helpers of the DBA loop (src/dtw.c, src/dba-prep.c) ----------
+
+test_that("ties are broken like dtw::dtw on longer sequences too", {
+  # integer values, lengths across the 8-frame blocks of the distance kernel
+  withr::local_seed(11)
+  for (rep in 1:40) {
+    n <- sample(8:30, 1); m <- sample(8:30, 1); p <- sample(c(1, 3, 16), 1)
+    x <- matrix(sample(0:2, n * p, TRUE), n, p)
+    y <- matrix(sample(0:2, m * p, TRUE), m, p)
+    expect_identical(dtw_align_pair(x, y)[1:2], dtw_align_pair(x, y, engine = "reference")[1:2])
+  }
+})
+
+test_that("a DBA step without the per-recording results has the same sums", {
+  pl <- planted_alignment(N = 9, seed = 3)
+  recs <- unname(pl$recs)
+  tmpl <- mean_linear_template(recs, 40)
+  full <- dtw_batch_fast(recs, tmpl, NULL, full = TRUE)
+  lean <- dtw_batch_fast(recs, tmpl, NULL, full = FALSE)
+  expect_identical(lean$sum, full$sum)
+  expect_identical(lean$count, full$count)
+  expect_null(lean$warped)
+  ref <- dtw_batch_reference(recs, tmpl, NULL)
+  expect_equal(full$sum, ref$sum, tolerance = 1e-12)
+  expect_identical(full$count, as.integer(ref$count))
+})
+
+test_that("compiled shape features, linear mean and stalls equal the R versions", {
+  pl <- planted_alignment(N = 7, seed = 4)
+  recs <- c(pl$recs, list(one = matrix(c(1, 2, 3), 1), two = rbind(c(1, 2, 3), c(1, 5, 3))))
+  sf <- shape_features(recs)
+  for (k in seq_along(recs)) {
+    nm <- shape_normaliser(recs[[k]])
+    expect_identical(sf$centre[k, ], unname(nm$centre))
+    expect_identical(sf$scale[k, ], unname(nm$scale))
+    expect_identical(sf$features[[k]], unname(normalise_recording(recs[[k]], nm)))
+  }
+  expect_identical(names(sf$features), names(recs))
+  for (L in c(1L, 2L, 37L)) {
+    expect_identical(mean_linear_template(recs, L), mean_linear_template_r(recs, L))
+  }
+  warps <- withr::with_seed(5, t(apply(matrix(sample(1:6, 60, TRUE), 6), 1, sort)))
+  storage.mode(warps) <- "double"
+  expect_identical(stall_lengths(warps), stall_lengths_r(warps))
+  expect_identical(stall_lengths(warps[, 1, drop = FALSE]), rep(1L, 6))
+})

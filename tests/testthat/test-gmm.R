@@ -200,3 +200,107 @@ test_that("print reports the fit and any fallback", {
     print(gmm_fit(matrix(1, 5, 2)))
   })
 })
+
+# ---- the compiled EM (src/gmm-em.c) against the R implementation -----------
+
+# Every start's outcome from both batch implementations on the same design.
+em_both <- function(X, k, max_iter = 500L, tol = 1e-8) {
+  X <- as.matrix(X)
+  n <- nrow(X)
+  Y <- scale(X, scale = sqrt(colSums(scale(X, scale = FALSE)^2) / n))
+  Y <- matrix(Y, n)
+  design <- gmm_design(Y)
+  logdet0 <- determinant(crossprod(Y) / n)$modulus[1]
+  starts <- gmm_starts(Y, k, 1)
+  list(c = gmm_em_batch_c(design, starts, k, max_iter, tol, logdet0),
+       r = gmm_em_batch_r(design, starts, k, max_iter, tol, logdet0))
+}
+
+expect_same_runs <- function(runs) {
+  expect_equal(length(runs$c), length(runs$r))
+  for (a in seq_along(runs$r)) {
+    rc <- runs$c[[a]]
+    rr <- runs$r[[a]]
+    expect_identical(rc$failed, rr$failed)
+    # the stopping iteration may move by one when the last increase sits
+    # within rounding of tol
+    expect_lte(abs(rc$iterations - rr$iterations), 1)
+    if (is.null(rr$failed)) {
+      expect_equal(rc$loglik, rr$loglik, tolerance = 1e-8)
+      expect_equal(rc$weights, rr$weights, tolerance = 1e-6)
+      expect_equal(rc$mu, rr$mu, tolerance = 1e-6)
+      expect_equal(rc$sigma, rr$sigma, tolerance = 1e-6)
+    }
+  }
+}
+
+test_that("the compiled EM reproduces the R implementation start by start", {
+  # bivariate and univariate, separated and overlapping (slow) mixtures,
+  # k = 2 (the thesis) and k = 3 (the general path), a run cut off at
+  # max_iter, starts that collapse, exp() overflowing; each with the AVX2,
+  # SSE2 and scalar E-steps (where the build and the CPU have them)
+  for (simd in 2:0) {
+    withr::local_options(handmotion.gmm_simd = simd)
+    sets <- list(
+      list(X = planted_mixture(1, 401, 0.65, c(5, 3)), k = 2), # odd n: the SIMD tails
+      list(X = planted_mixture(6, 500, 0.6, c(1, 1)), k = 2),
+      list(X = planted_mixture(21, 83, 0.6, 3, S2 = matrix(0.25)), k = 2),
+      list(X = withr::with_seed(8, c(rnorm(150), rnorm(100, 1.2))), k = 2),
+      list(X = rbind(planted_mixture(2, 200, 0.5, c(6, 0)), planted_mixture(3, 100, 0.5, c(0, 3)) + 12),
+           k = 3),
+      list(X = withr::with_seed(9, c(rnorm(100), rnorm(100, 5), rnorm(100, 10))), k = 3))
+    for (s in sets) expect_same_runs(em_both(s$X, s$k))
+    # a run cut off at max_iter, and starts that collapse onto repeated points
+    expect_same_runs(em_both(planted_mixture(4, 200, 0.5, c(1, 1)), 2, max_iter = 7L))
+    X <- rbind(withr::with_seed(6, matrix(rnorm(120), 60)), matrix(c(8, 8), 8, 2, byrow = TRUE))
+    runs <- em_both(X, 2)
+    expect_same_runs(runs)
+    expect_true(any(vapply(runs$c, function(r) grepl("degenerate", r$failed %||% ""), logical(1))))
+    # two tight clusters far apart: exp() overflows in the E-step of running
+    # starts, and both implementations switch to the overflow-safe form
+    X <- withr::with_seed(7, rbind(matrix(rnorm(200, sd = 1.5), ncol = 2),
+                                   matrix(rnorm(200, mean = 100, sd = 1.5), ncol = 2)))
+    runs <- em_both(X, 2)
+    expect_same_runs(runs)
+    expect_true(all(vapply(runs$c, function(r) is.null(r$failed), logical(1))))
+  }
+})
+
+test_that("gmm_fit gives the same fits with the compiled and the R EM", {
+  sets <- list(planted_mixture(12, 60, 0.5, c(-3, 3), S1 = matrix(c(2, -0.8, -0.8, 1), 2)),
+               planted_mixture(23, 80, 0.6, 4, S2 = matrix(4)),
+               planted_mixture(5, 300, 0.6, c(1.2, 1.2)))
+  for (X in sets) {
+    fc <- gmm_fit(X, max_iter = 5000)
+    fr <- withr::with_options(list(handmotion.gmm_em = "R"), gmm_fit(X, max_iter = 5000))
+    expect_equal(fc$loglik, fr$loglik, tolerance = 1e-8)
+    expect_equal(fc$means, fr$means, tolerance = 1e-6)
+    expect_equal(fc$covs, fr$covs, tolerance = 1e-6)
+    expect_identical(fc$fallback, fr$fallback)
+  }
+})
+
+test_that("compiled k-means gives the R version's labels", {
+  Y <- scale(planted_mixture(3, 300, 0.4, c(2, -1)))
+  Y <- matrix(Y, nrow(Y))
+  centres <- withr::with_seed(2, lapply(1:6, function(i) Y[sample.int(nrow(Y), 2 + i %% 3), ,
+                                                         drop = FALSE]))
+  fast <- gmm_kmeans_all(Y, centres)
+  ref <- lapply(centres, function(cen) gmm_kmeans(Y, cen))
+  expect_identical(fast, ref)
+  y <- matrix(withr::with_seed(4, rnorm(50)))
+  expect_identical(gmm_kmeans_all(y, list(y[1:2, , drop = FALSE])), list(gmm_kmeans(y, y[1:2, , drop = FALSE])))
+})
+
+test_that("a slowly converging mixture needs more than 500 iterations, not a fallback", {
+  # two strongly overlapping components: EM crawls
+  X <- withr::with_seed(6, rbind(matrix(rnorm(300), ncol = 2),
+                                 matrix(rnorm(200, mean = 1), ncol = 2) %*% matrix(c(1, 0.5, 0, 1), 2)))
+  capped <- gmm_fit(X)
+  expect_true(capped$fallback)
+  expect_match(capped$reason, "did not converge within 500")
+  fit <- gmm_fit(X, max_iter = 5000)
+  expect_false(fit$fallback)
+  expect_gt(fit$iterations, 500)
+  expect_gt(fit$loglik, capped$loglik)
+})

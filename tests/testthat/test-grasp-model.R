@@ -192,3 +192,16 @@ test_that("a failed EM is replaced by a single Gaussian and recorded (Table 5.1)
   expect_equal(unname(drop(m$gmm$d1$means)), unname(colMeans(m$scores[, "d1", ])), tolerance = 1e-8)
   expect_identical(summary(m)$mixture, c("single Gaussian", "single Gaussian"))
 })
+
+test_that("the mixtures run EM up to the model's cap before falling back", {
+  g <- planted_grasps(n = 40, p = 2, seed = 3)
+  m <- fit_grasp_model(g, seed = 1)
+  expect_identical(m$settings$gmm_max_iter, 5000L)
+  # a score cloud that needs more than 500 EM iterations: fitted, not a fallback
+  X <- withr::with_seed(6, rbind(matrix(rnorm(300), ncol = 2),
+                                 matrix(rnorm(200, mean = 1), ncol = 2) %*% matrix(c(1, 0.5, 0, 1), 2)))
+  fit <- fit_mixture(list(scores = X, constant = FALSE), 2L, "fast")
+  expect_false(fit$fallback)
+  expect_gt(fit$iterations, 500)
+  expect_true(gmm_fit(X)$fallback) # gmm_fit()'s own default cap of 500 falls back
+})
