@@ -22,7 +22,7 @@ demo: setup
 test: setup test-r test-python
 
 test-r:
-	$(R) tools/run-tests.R
+	HANDMOTION_SLOW_TESTS=$${HANDMOTION_SLOW_TESTS:-true} $(R) tools/run-tests.R
 
 test-python:
 	cd inst/python && $(PY) -m pytest -q tests

@@ -140,21 +140,6 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame"), fit_args = list()
             class = "grasp_evaluation")
 }
 
-# Snapshot and restore of the global RNG: the kind (kept internally by R, not
-# only in `.Random.seed`, which may not exist yet) and the stream.
-save_rng <- function() {
-  list(kind = RNGkind(), seed = get0(".Random.seed", envir = globalenv(), inherits = FALSE))
-}
-
-restore_rng <- function(old) {
-  RNGkind(old$kind[1], old$kind[2], old$kind[3])
-  if (is.null(old$seed)) {
-    if (exists(".Random.seed", envir = globalenv(), inherits = FALSE)) rm(".Random.seed", envir = globalenv())
-  } else {
-    assign(".Random.seed", old$seed, envir = globalenv())
-  }
-}
-
 # Subjects grouped into folds: one per subject, or `folds` seeded random
 # groups of near-equal size.
 subject_folds <- function(subjects, folds, seed, call = rlang::caller_env()) {

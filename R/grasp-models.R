@@ -56,6 +56,9 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1) {
   args <- list(...)
   future_seed <- if (is.null(seed)) TRUE else as.integer(seed)
   p <- progressr::progressor(along = types)
+  # future's seeding switches the session to L'Ecuyer-CMRG; give the caller back their RNG
+  old_rng <- save_rng()
+  on.exit(restore_rng(old_rng), add = TRUE)
   fits <- future.apply::future_lapply(parts, fit_one_type, args = args, progress = p,
                                       future.seed = future_seed)
   failed <- vapply(fits, inherits, logical(1), what = "error")

@@ -407,18 +407,3 @@ autoplot.grasps <- function(object, colour = "grasp", dofs = NULL, max_recording
 sample_seeded <- function(n, k, seed) {
   with_seed(seed, sample.int(n, k))
 }
-
-# Evaluate `expr` with the RNG seeded, restoring the global RNG state after.
-with_seed <- function(seed, expr) {
-  if (is.null(seed)) return(expr)
-  old <- if (exists(".Random.seed", envir = globalenv(), inherits = FALSE))
-    get(".Random.seed", envir = globalenv()) else NULL
-  on.exit({
-    if (is.null(old)) {
-      if (exists(".Random.seed", envir = globalenv(), inherits = FALSE))
-        rm(".Random.seed", envir = globalenv())
-    } else assign(".Random.seed", old, envir = globalenv())
-  })
-  set.seed(seed)
-  expr
-}

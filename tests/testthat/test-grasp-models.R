@@ -97,3 +97,13 @@ test_that("simulated data: all types present fit, with their target lengths", {
   expect_true(all(s$target_length >= 10))
   expect_equal(s$n_used + s$n_overlong + s$n_degenerate, s$n_input)
 })
+
+test_that("fitting leaves the caller's RNG kind and stream untouched", {
+  g <- simulate_grasps(subjects = 3, grasps = 1:2, objects = 1, trials = 2, seed = 1)
+  set.seed(5)
+  kind <- RNGkind()
+  state <- .Random.seed
+  fit_grasp_models(g, seed = 1)
+  expect_identical(RNGkind(), kind)
+  expect_identical(.Random.seed, state)
+})

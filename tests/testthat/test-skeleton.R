@@ -125,7 +125,9 @@ test_that("missing units fall back to deg and mm with a warning", {
 
 test_that("print and autoplot of a skeleton", {
   expect_snapshot(print(hand_skeleton()))
-  b <- ggplot2::ggplot_build(ggplot2::autoplot(hand_skeleton(), labels = FALSE))
-  expect_equal(nrow(b$data[[1]]), 24L)   # bones
-  expect_equal(nrow(b$data[[2]]), 25L)   # joints
+  p <- ggplot2::autoplot(hand_skeleton(), labels = FALSE)
+  b <- ggplot2::ggplot_build(p)
+  geoms <- vapply(p$layers, function(l) class(l$geom)[1], character(1))
+  expect_equal(nrow(b$data[[which(geoms == "GeomSegment")[1]]]), 24L)   # bones
+  expect_equal(nrow(b$data[[which(geoms == "GeomPoint")[1]]]), 25L)     # joints
 })

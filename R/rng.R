@@ -1,0 +1,30 @@
+# The package never leaves a trace on the caller's random number generator:
+# seeded code runs inside with_seed(), and code that goes through future's
+# seeding (which switches the session to L'Ecuyer-CMRG) saves and restores the
+# RNG around it.
+
+# Snapshot and restore of the global RNG: the kind (kept internally by R, not
+# only in `.Random.seed`, which may not exist yet) and the stream.
+save_rng <- function() {
+  list(kind = RNGkind(), seed = get0(".Random.seed", envir = globalenv(), inherits = FALSE))
+}
+
+restore_rng <- function(old) {
+  # restoring the caller's own kinds; R warns about the old "Rounding" sampler on every set
+  suppressWarnings(RNGkind(old$kind[1], old$kind[2], old$kind[3]))
+  if (is.null(old$seed)) {
+    if (exists(".Random.seed", envir = globalenv(), inherits = FALSE)) rm(".Random.seed", envir = globalenv())
+  } else {
+    assign(".Random.seed", old$seed, envir = globalenv())
+  }
+}
+
+# Evaluate `expr` with the RNG seeded (in the caller's RNG kind), restoring the
+# global RNG state and kind afterwards. A NULL seed evaluates `expr` as is.
+with_seed <- function(seed, expr) {
+  if (is.null(seed)) return(expr)
+  old <- save_rng()
+  on.exit(restore_rng(old))
+  set.seed(seed)
+  expr
+}
