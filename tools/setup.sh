@@ -51,9 +51,21 @@ Rscript -e '
   } else message("setup: CRAN packages already present")
 '
 
-# The package itself: rebuild its docs if roxygen sources changed, then install.
+# The package itself, reinstalled only when its sources changed since the last
+# install (a hash of the package files is kept in the installed package), so a
+# second `make test` does not recompile the C code.
 if [ "${HANDMOTION_SKIP_INSTALL:-0}" != "1" ]; then
-  R CMD INSTALL --preclean --no-multiarch . >/tmp/handmotion-install.log 2>&1 || {
-    cat /tmp/handmotion-install.log; exit 1; }
-  echo "setup: handmotion $(Rscript -e 'cat(as.character(packageVersion("handmotion")))') installed"
+  hash=$(find DESCRIPTION NAMESPACE R src inst data vignettes -type f \
+           ! -name '*.o' ! -name '*.so' ! -path '*__pycache__*' ! -path '*.pytest_cache*' -print0 \
+         | sort -z | xargs -0 sha1sum | sha1sum | cut -d' ' -f1)
+  installed=$(Rscript -e 'd <- system.file(package = "handmotion"); f <- file.path(d, "source-hash"); if (nzchar(d) && file.exists(f)) cat(readLines(f))' 2>/dev/null || true)
+  if [ "$hash" = "$installed" ]; then
+    echo "setup: handmotion is installed and up to date"
+  else
+    R CMD INSTALL --preclean --no-multiarch . >/tmp/handmotion-install.log 2>&1 || {
+      cat /tmp/handmotion-install.log; exit 1; }
+    lib=$(Rscript -e 'cat(dirname(system.file(package = "handmotion")))')
+    echo "$hash" > "$lib/handmotion/source-hash"
+    echo "setup: handmotion $(Rscript -e 'cat(as.character(packageVersion("handmotion")))') installed"
+  fi
 fi
