@@ -116,7 +116,7 @@ plot_frame_strip <- function(x, recording = 1L, n_frames = 6L, skeleton = hand_s
   grasp <- unique(stats::na.omit(as.character(p$grasp)))
   g <- ggplot2::ggplot() + pose_layers(pr, linewidth = 1, size = 0.8) +
     ggplot2::labs(title = if (length(grasp) == 1L) grasp else NULL,
-                  subtitle = paste0("columns: fraction of each recording's duration; ", view_label(view)))
+                  subtitle = paste0("columns: fraction of each recording's duration\n", view_label(view)))
   if (length(sets) > 1L) {
     g + ggplot2::facet_grid(set ~ time, switch = "y") +
       ggplot2::theme(strip.text.y.left = ggplot2::element_text(angle = 0, hjust = 1))
