@@ -19,6 +19,7 @@
 #include <math.h>
 #include <R.h>
 #include <Rinternals.h>
+#include "named-list.h"
 
 static void check_recs(SEXP recs, int *p_out) {
   if (!isNewList(recs) || LENGTH(recs) < 1) error("'recs' must be a non-empty list");
@@ -91,16 +92,10 @@ SEXP hm_shape_features(SEXP recs, SEXP k_) {
     SET_VECTOR_ELT(feats, r, f);
     UNPROTECT(1);
   }
-  SEXP out = PROTECT(allocVector(VECSXP, 3));
-  SET_VECTOR_ELT(out, 0, feats);
-  SET_VECTOR_ELT(out, 1, centre);
-  SET_VECTOR_ELT(out, 2, scale);
-  SEXP nms = PROTECT(allocVector(STRSXP, 3));
-  SET_STRING_ELT(nms, 0, mkChar("features"));
-  SET_STRING_ELT(nms, 1, mkChar("centre"));
-  SET_STRING_ELT(nms, 2, mkChar("scale"));
-  setAttrib(out, R_NamesSymbol, nms);
-  UNPROTECT(5);
+  const char *names[] = {"features", "centre", "scale"};
+  const SEXP values[] = {feats, centre, scale};
+  SEXP out = hm_named_list(3, names, values);
+  UNPROTECT(3);
   return out;
 }
 

@@ -26,6 +26,7 @@
 #include <math.h>
 #include <R.h>
 #include <Rinternals.h>
+#include "named-list.h"
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
@@ -289,16 +290,11 @@ SEXP hm_dtw_pair(SEXP x, SEXP y, SEXP window) {
     pi1[k] = w.pi[k] + 1;
     pi2[k] = w.pj[k] + 1;
   }
-  SEXP out = PROTECT(allocVector(VECSXP, 3));
-  SET_VECTOR_ELT(out, 0, i1);
-  SET_VECTOR_ELT(out, 1, i2);
-  SET_VECTOR_ELT(out, 2, ScalarReal(distance));
-  SEXP nms = PROTECT(allocVector(STRSXP, 3));
-  SET_STRING_ELT(nms, 0, mkChar("index1"));
-  SET_STRING_ELT(nms, 1, mkChar("index2"));
-  SET_STRING_ELT(nms, 2, mkChar("distance"));
-  setAttrib(out, R_NamesSymbol, nms);
-  UNPROTECT(4);
+  SEXP d = PROTECT(ScalarReal(distance));
+  const char *names[] = {"index1", "index2", "distance"};
+  const SEXP values[] = {i1, i2, d};
+  SEXP out = hm_named_list(3, names, values);
+  UNPROTECT(3);
   return out;
 }
 
@@ -385,19 +381,9 @@ SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window, SEXP full_) {
         pa[k + (size_t) N * (j + (size_t) L * c)] = wk[j + (size_t) L * c] / (double) cnt_k[j];
   }
 
-  SEXP out = PROTECT(allocVector(VECSXP, 5));
-  SET_VECTOR_ELT(out, 0, sum);
-  SET_VECTOR_ELT(out, 1, count);
-  SET_VECTOR_ELT(out, 2, warped);
-  SET_VECTOR_ELT(out, 3, warps);
-  SET_VECTOR_ELT(out, 4, dist);
-  SEXP nms = PROTECT(allocVector(STRSXP, 5));
-  SET_STRING_ELT(nms, 0, mkChar("sum"));
-  SET_STRING_ELT(nms, 1, mkChar("count"));
-  SET_STRING_ELT(nms, 2, mkChar("warped"));
-  SET_STRING_ELT(nms, 3, mkChar("warps"));
-  SET_STRING_ELT(nms, 4, mkChar("distance"));
-  setAttrib(out, R_NamesSymbol, nms);
-  UNPROTECT(7);
+  const char *names[] = {"sum", "count", "warped", "warps", "distance"};
+  const SEXP values[] = {sum, count, warped, warps, dist};
+  SEXP out = hm_named_list(5, names, values);
+  UNPROTECT(5);
   return out;
 }

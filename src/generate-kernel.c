@@ -19,6 +19,7 @@
  * same order as the loops below). */
 #include <R.h>
 #include <Rinternals.h>
+#include "named-list.h"
 #include <Rmath.h>
 #include <math.h>
 #include <string.h>
@@ -200,18 +201,10 @@ SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP com
     UNPROTECT(1);
   }
 
-  SEXP res = PROTECT(allocVector(VECSXP, 4));
-  SEXP nms = PROTECT(allocVector(STRSXP, 4));
-  SET_VECTOR_ELT(res, 0, recs);
-  SET_VECTOR_ELT(res, 1, n_new);
-  SET_VECTOR_ELT(res, 2, beta);
-  SET_VECTOR_ELT(res, 3, alpha);
-  SET_STRING_ELT(nms, 0, mkChar("recordings"));
-  SET_STRING_ELT(nms, 1, mkChar("n_frames"));
-  SET_STRING_ELT(nms, 2, mkChar("beta"));
-  SET_STRING_ELT(nms, 3, mkChar("alpha"));
-  setAttrib(res, R_NamesSymbol, nms);
-  UNPROTECT(7);
+  const char *names[] = {"recordings", "n_frames", "beta", "alpha"};
+  const SEXP values[] = {recs, n_new, beta, alpha};
+  SEXP res = hm_named_list(4, names, values);
+  UNPROTECT(5);
   return res;
 }
 

@@ -42,6 +42,7 @@
 #include <math.h>
 #include <R.h>
 #include <Rinternals.h>
+#include "named-list.h"
 #if defined(__SSE2__) && !defined(HM_NO_SIMD)
 #include <emmintrin.h>
 #endif
@@ -708,21 +709,11 @@ SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP l
     }
   }
 
-  SEXP out = PROTECT(allocVector(VECSXP, 8));
-  SET_VECTOR_ELT(out, 0, status);
-  SET_VECTOR_ELT(out, 1, iters);
-  SET_VECTOR_ELT(out, 2, conv);
-  SET_VECTOR_ELT(out, 3, loglik);
-  SET_VECTOR_ELT(out, 4, badc);
-  SET_VECTOR_ELT(out, 5, W);
-  SET_VECTOR_ELT(out, 6, MU);
-  SET_VECTOR_ELT(out, 7, SG);
-  SEXP nms = PROTECT(allocVector(STRSXP, 8));
   const char *names[8] = {"status", "iterations", "converged", "loglik", "bad",
                           "weights", "mu", "sigma"};
-  for (int q = 0; q < 8; q++) SET_STRING_ELT(nms, q, mkChar(names[q]));
-  setAttrib(out, R_NamesSymbol, nms);
-  UNPROTECT(10);
+  const SEXP values[8] = {status, iters, conv, loglik, badc, W, MU, SG};
+  SEXP out = hm_named_list(8, names, values);
+  UNPROTECT(8);
   return out;
 }
 
