@@ -18,9 +18,17 @@ DEBIAN_PKGS=(
   r-cran-foreach r-cran-doparallel r-cran-mvtnorm r-cran-ksamples r-cran-suppdists
   r-cran-httr r-cran-colorspace r-cran-locfit r-cran-rcolorbrewer r-cran-fnn
   r-cran-multicool r-cran-pracma r-cran-kernlab
+  # second wave: 3D viewer and site, animation export, fast reading, clusters,
+  # discriminative classifiers
+  r-cran-htmlwidgets r-cran-jsonlite r-cran-pkgdown r-cran-gganimate r-cran-magick
+  r-cran-data.table r-cran-future.batchtools r-cran-batchtools r-cran-mass
+  r-cran-glmnet
   # the Python front end
   python3-rpy2 python3-numpy python3-pandas python3-pytest
 )
+# Optional tools: the browser tests and MP4 export skip with a clear message
+# where these cannot be installed, so a failure here does not stop the set-up.
+OPTIONAL_PKGS=(chromium ffmpeg)
 
 missing=()
 for p in "${DEBIAN_PKGS[@]}"; do
@@ -33,6 +41,17 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
 else
   echo "setup: Debian packages already present"
+fi
+opt_missing=()
+for p in "${OPTIONAL_PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || opt_missing+=("$p")
+done
+if [ ${#opt_missing[@]} -gt 0 ]; then
+  echo "setup: installing optional Debian packages: ${opt_missing[*]}"
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  { $SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q \
+      --no-install-recommends "${opt_missing[@]}"; } \
+    || echo "setup: could not install ${opt_missing[*]}; browser tests and MP4 export will be skipped"
 fi
 
 # CRAN-only packages, in dependency order; installed only when absent.
