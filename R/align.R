@@ -40,13 +40,13 @@
 dtw_align_pair <- function(x, template, engine = c("fast", "reference"), window = NULL) {
   call <- rlang::caller_env()
   engine <- rlang::arg_match(engine, error_call = call)
-  x <- as_align_matrix(x, "x", call, finite = TRUE)
-  template <- as_align_matrix(template, "template", call, finite = TRUE)
+  x <- as_numeric_matrix(x, "x", " (frames x DoFs)", call = call)
+  template <- as_numeric_matrix(template, "template", " (frames x DoFs)", call = call)
   if (ncol(x) != ncol(template)) {
     hm_abort("{.arg x} has {ncol(x)} column{?s} but {.arg template} has {ncol(template)}.",
-             "bad_argument", argument = "template", call = call)
+             "bad_input", argument = "template", call = call)
   }
-  window <- align_check_window(window, call)
+  window <- check_number(window, "window", min = 0, allow_null = TRUE, call = call)
   res <- tryCatch(
     if (engine == "fast") dtw_pair_fast(x, template, window)
     else dtw_pair_reference(x, template, window),
@@ -159,11 +159,12 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
   recs <- align_check_recordings(recordings, call)
   ids <- names(recs)
   n_frames <- vapply(recs, nrow, integer(1))
-  L <- align_check_target_length(target_length, n_frames, call)
-  align_check_count(max_iter, "max_iter", call)
+  L <- check_whole(target_length, "target_length", allow_null = TRUE, call = call) %||%
+    max(1L, as.integer(round(mean(n_frames))))
+  check_whole(max_iter, "max_iter", min = 0, call = call)
   overlong_check_mult(tol, "tol", call)
   overlong_check_mult(max_stall, "max_stall", call)
-  window <- align_check_window(window, call)
+  window <- check_number(window, "window", min = 0, allow_null = TRUE, call = call)
 
   if (length(recs) < 2L) {
     return(align_linear_fallback(recs, L, engine,
@@ -322,9 +323,6 @@ subset_run <- function(run, keep) {
 # One DBA run from a given template. Returns the final template and the
 # alignment of every recording to exactly that template.
 dba_run <- function(recs, template, engine, max_iter, tol, window) {
-  if (isTRUE(getOption("handmotion.align_force_failure"))) {
-    stop("alignment failure forced by option handmotion.align_force_failure")
-  }
   batch <- if (engine == "fast") dtw_batch_fast else dtw_batch_reference
   # Only the last alignment's warped recordings, warps and distances are
   # kept; the steps before it need the matched-frame sums alone (`full`).
@@ -508,29 +506,10 @@ print.grasp_alignment <- function(x, ...) {
 
 # ---- input checks -----------------------------------------------------------
 
-as_align_matrix <- function(x, arg, call, finite = FALSE) {
-  if (is.data.frame(x)) x <- as.matrix(x)
-  if (is.numeric(x) && is.null(dim(x))) x <- matrix(x, ncol = 1L)
-  if (!is.matrix(x) || !is.numeric(x)) {
-    hm_abort("{.arg {arg}} must be a numeric matrix (frames x DoFs), not {.cls {class(x)}}.",
-             "bad_argument", argument = arg, call = call)
-  }
-  if (nrow(x) < 1L || ncol(x) < 1L) {
-    hm_abort("{.arg {arg}} must have at least one frame and one DoF.",
-             "bad_argument", argument = arg, call = call)
-  }
-  if (finite && !all(is.finite(x))) {
-    hm_abort("{.arg {arg}} contains non-finite values.",
-             "bad_argument", argument = arg, call = call)
-  }
-  storage.mode(x) <- "double"
-  x
-}
-
 align_check_recordings <- function(recordings, call) {
   if (!is.list(recordings) || length(recordings) == 0L) {
     hm_abort("{.arg recordings} must be a non-empty list of numeric matrices.",
-             "bad_argument", argument = "recordings", call = call)
+             "bad_input", argument = "recordings", call = call)
   }
   ids <- names(recordings)
   if (is.null(ids) || anyNA(ids) || any(!nzchar(ids)) || anyDuplicated(ids)) {
@@ -538,46 +517,21 @@ align_check_recordings <- function(recordings, call) {
   }
   recs <- recordings
   # (double matrices, the usual case, need no conversion: only the others go
-  # through as_align_matrix(), which names the offending recording)
+  # through as_numeric_matrix(), which names the offending recording)
   ready <- vapply(recordings, function(x) is.double(x) && is.matrix(x) && length(x) > 0L,
                   logical(1))
   for (k in which(!ready)) {
-    recs[[k]] <- as_align_matrix(recordings[[k]], sprintf("recordings[[\"%s\"]]", ids[k]), call)
+    recs[[k]] <- as_numeric_matrix(recordings[[k]], sprintf("recordings[[\"%s\"]]", ids[k]),
+                                  " (frames x DoFs)", finite = FALSE, call = call)
   }
   p <- vapply(recs, ncol, integer(1))
   if (any(p != p[1])) {
     bad <- ids[p != p[1]]
     hm_abort(c("All recordings must have the same number of DoFs ({p[1]}).",
                x = "Different: {.val {bad}}."),
-             "bad_argument", argument = "recordings", call = call)
+             "bad_input", argument = "recordings", call = call)
   }
   names(recs) <- ids
   recs
 }
 
-align_check_target_length <- function(target_length, n_frames, call) {
-  if (is.null(target_length)) return(max(1L, as.integer(round(mean(n_frames)))))
-  if (!is.numeric(target_length) || length(target_length) != 1L || is.na(target_length) ||
-      target_length < 1 || target_length != round(target_length)) {
-    hm_abort("{.arg target_length} must be one positive whole number, not {.val {target_length}}.",
-             "bad_argument", argument = "target_length", call = call)
-  }
-  as.integer(target_length)
-}
-
-align_check_count <- function(x, arg, call) {
-  if (!is.numeric(x) || length(x) != 1L || is.na(x) || x < 0 || x != round(x)) {
-    hm_abort("{.arg {arg}} must be one non-negative whole number, not {.val {x}}.",
-             "bad_argument", argument = arg, call = call)
-  }
-  invisible(x)
-}
-
-align_check_window <- function(window, call) {
-  if (is.null(window)) return(NULL)
-  if (!is.numeric(window) || length(window) != 1L || is.na(window) || window < 0) {
-    hm_abort("{.arg window} must be {.code NULL} or one non-negative number, not {.val {window}}.",
-             "bad_argument", argument = "window", call = call)
-  }
-  as.double(window)
-}

@@ -1,12 +1,76 @@
 # Classed errors. Every error the package raises inherits from
-# "handmotion_error" and carries a specific class, so callers (and the Python
-# front end) can tell a bad file from a bad argument without parsing text.
+# "handmotion_error" and from one of three families, so callers (and the
+# Python front end) can tell a bad file from a bad argument from a failed fit
+# without parsing text. The family of each specific class lives in one table
+# below; hm_abort() adds it, so no call site has to remember it.
+
+#' Errors raised by handmotion
+#'
+#' Every error handmotion raises is a condition of class `handmotion_error`,
+#' with one family class and, below it, a specific class naming what went
+#' wrong. Catch a family with `tryCatch(..., handmotion_error_bad_file = ...)`
+#' or a specific class with `handmotion_error_truncated_line`. Each condition
+#' carries the offending argument, file, line, recording or joint as fields
+#' (`cnd$argument`, `cnd$file`, `cnd$line`, `cnd$recording`, ...).
+#'
+#' * `handmotion_error_bad_input`: a bad argument or recording. Specific
+#'   classes: `bad_recording`, `unknown_grasp`, `no_labels`, `bad_markers`,
+#'   `occluded`, `bad_mapping`, `dof_mismatch`, `multiple_grasps`,
+#'   `bad_params`, `bad_skeleton` (a skeleton that does not fit the data),
+#'   `too_few_subjects`.
+#' * `handmotion_error_bad_file`: a file that cannot be read in its format.
+#'   Specific classes: `empty_file`, `bad_field_count`, `truncated_line`,
+#'   `non_numeric`, `bad_value`, `unknown_header`, `unknown_file_name`,
+#'   `file_not_found`, `missing_file`, `not_in_manifest`, `bad_manifest`,
+#'   `no_files`, `file_exists`, `no_switch`, `no_segments`, and `bad_skeleton`
+#'   raised while reading an `.xmlskel` file.
+#' * `handmotion_error_fit_failed`: data that cannot be fitted.
+#'   Specific classes: `too_few_recordings`, `reference_too_small`.
+#' * `handmotion_error_missing_dependency`: a suggested package that a
+#'   function needs is not installed (no family).
+#'
+#' All specific classes are prefixed with `handmotion_error_`. Warnings follow
+#' the same scheme under `handmotion_warning`. From Python the families are
+#' `BadInputError`, `BadFileError` and `FitFailedError`, all subclasses of
+#' `HandmotionError`.
+#'
+#' @name handmotion_errors
+#' @examples
+#' cnd <- tryCatch(simulate_grasps(grasps = "No Such Grasp"),
+#'                 handmotion_error = function(e) e)
+#' class(cnd)
+#' inherits(cnd, "handmotion_error_bad_input")
+NULL
+
+# Specific class -> family. A class not listed belongs to "bad_input" (the
+# common case: a bad argument) unless another class given with it is listed.
+error_families <- c(
+  bad_file = "bad_file", empty_file = "bad_file", bad_field_count = "bad_file",
+  truncated_line = "bad_file", non_numeric = "bad_file", bad_value = "bad_file",
+  unknown_header = "bad_file", unknown_file_name = "bad_file",
+  file_not_found = "bad_file", missing_file = "bad_file",
+  not_in_manifest = "bad_file", bad_manifest = "bad_file", no_files = "bad_file",
+  file_exists = "bad_file", no_switch = "bad_file", no_segments = "bad_file",
+  fit_failed = "fit_failed", too_few_recordings = "fit_failed",
+  reference_too_small = "fit_failed",
+  missing_dependency = NA_character_
+)
+
+# The class vector of a handmotion condition: specific classes first, then the
+# family, then the root.
+error_classes <- function(class) {
+  listed <- class %in% names(error_families)
+  family <- if (any(listed)) unname(error_families[class[listed]]) else "bad_input"
+  family <- family[!is.na(family)]
+  c(paste0("handmotion_error_", unique(c(class, family))), "handmotion_error")
+}
 
 #' Raise a classed handmotion error
 #'
 #' @param message A cli-formatted message (character vector; names give bullets).
-#' @param class Short class name; the condition gets
-#'   `c("handmotion_error_<class>", "handmotion_error")`.
+#' @param class Specific class name(s); the condition gets
+#'   `handmotion_error_<class>`, its family (see [handmotion_errors]) and
+#'   `handmotion_error`.
 #' @param ... Extra fields stored in the condition (e.g. `file`, `line`,
 #'   `argument`, `recording`).
 #' @param call The user-facing call to report, passed down from the exported
@@ -15,9 +79,7 @@
 #' @noRd
 hm_abort <- function(message, class = "bad_input", ..., call = rlang::caller_env(),
                      .envir = parent.frame()) {
-  cli::cli_abort(message,
-                 class = c(paste0("handmotion_error_", class), "handmotion_error"),
-                 ..., call = call, .envir = .envir)
+  cli::cli_abort(message, class = error_classes(class), ..., call = call, .envir = .envir)
 }
 
 #' Warn with a classed handmotion warning

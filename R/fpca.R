@@ -83,7 +83,9 @@ fpca_fit <- function(Y, argvals = NULL, ncomp = 2, engine = c("fast", "reference
   call <- rlang::caller_env()
   engine <- rlang::arg_match(engine)
   cur <- fpca_curves(Y, argvals, call = call)
-  ncomp <- fpca_check_ncomp(ncomp, call = call)
+  # (more components than grid points are padded with zero components; the
+  # bound only refuses absurd requests)
+  ncomp <- check_whole(ncomp, "ncomp", max = max(ncol(cur$Y), 1000L), call = call)
   mean <- colMeans(cur$Y)
   Yc <- cur$Y - rep(mean, each = nrow(cur$Y))
   delta <- fpca_delta(cur$argvals, cur$rangeval)
@@ -130,14 +132,6 @@ fpca_curves <- function(Y, argvals, arg = "Y", call = rlang::caller_env()) {
   if (is.null(rangeval)) rangeval <- range(argvals)
   storage.mode(Y) <- "double"
   list(Y = unname(Y), argvals = argvals, rangeval = as.numeric(rangeval))
-}
-
-fpca_check_ncomp <- function(ncomp, call) {
-  if (!is.numeric(ncomp) || length(ncomp) != 1L || is.na(ncomp) || ncomp < 1 || ncomp != round(ncomp)) {
-    hm_abort("{.arg ncomp} must be a positive whole number, not {.val {ncomp}}.",
-             "bad_input", argument = "ncomp", call = call)
-  }
-  as.integer(ncomp)
 }
 
 # Trapezoidal weights as fda.usc's "TRAPZ" rule applies them: on a grid that

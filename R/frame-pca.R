@@ -63,9 +63,9 @@
 #' colMeans(fixed$reconstruction[, -1])
 fit_frame_pca_model <- function(x, d = 3, k = 2, align_signs = FALSE, nbasis = 10, ...) {
   call <- rlang::caller_env()
-  check_count(d, "d", call)
-  check_count(k, "k", call)
-  if (!is.null(nbasis)) check_count(nbasis, "nbasis", call)
+  check_whole(d, "d", max = 50, call = call)
+  check_whole(k, "k", max = 50, call = call)
+  check_whole(nbasis, "nbasis", max = 1000, allow_null = TRUE, call = call)
   if (inherits(x, "grasp_alignment")) {
     aln <- x
     grasp <- NA_character_

@@ -4,8 +4,8 @@
 # time through the sampled warping function. A batch is drawn by one native
 # call per model (src/generate-kernel.c: scores, warps and the recording
 # matrices themselves) and assembled with vectorised metadata columns, so
-# there is no per-recording R work. The R reference of the same arithmetic
-# (option handmotion.generate_kernel = "r") is kept to test the kernel.
+# there is no per-recording R work. An R transcription of the same arithmetic
+# lives in the tests (helper-generate-reference.R) to check the kernel.
 #
 # What a large batch costs (bench/bench-generate.R): beyond the arithmetic,
 # R's garbage collector. Each recording is its own R vector; while a batch is
@@ -63,21 +63,25 @@ generics::generate
 #' new
 generate.grasp_model <- function(x, n = 1, seed = NULL, warp = TRUE, ...) {
   call <- rlang::caller_env()
-  check_generate_n(n, call)
-  generate_reserve(list(x), as.integer(n), isTRUE(warp))
-  with_seed(seed, generate_batch(x, as.integer(n), warp = isTRUE(warp)))
+  n <- check_whole(n, "n", max = max_grasps_per_call, call = call)
+  warp <- check_flag(warp, "warp", call = call)
+  seed <- check_seed(seed, call = call)
+  validate_sampler(x, call)
+  with_seed(seed, generate_batch(x, n, warp = warp, call = call))
 }
 
 #' @rdname generate.grasp_model
 #' @export
 generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = NULL, warp = TRUE, ...) {
   call <- rlang::caller_env()
-  check_generate_n(n, call)
+  n <- check_whole(n, "n", max = max_grasps_per_call, call = call)
+  warp <- check_flag(warp, "warp", call = call)
+  seed <- check_seed(seed, call = call)
   models <- select_models(x, grasp, call)
-  generate_reserve(models, as.integer(n), isTRUE(warp))
+  for (m in models) validate_sampler(m, call)
   with_seed(seed, {
     # the models draw in turn from one RNG stream, then one assembly
-    parts <- lapply(models, draw_batch, n = as.integer(n), warp = isTRUE(warp))
+    parts <- lapply(models, draw_batch, n = n, warp = warp, call = call)
     assemble_generated(models, parts)
   })
 }
@@ -108,23 +112,6 @@ simulate.grasp_models <- function(object, nsim = 1, seed = NULL, ...) {
   generate.grasp_models(object, n = nsim, seed = seed, ...)
 }
 
-check_generate_n <- function(n, call) {
-  if (!is.numeric(n) || length(n) != 1L || !is.finite(n) || n < 1 || n != round(n)) {
-    hm_abort("{.arg n} must be one positive whole number of grasps, not {.val {format(n)}}.",
-             "bad_input", argument = "n", call = call)
-  }
-}
-
-# Draw the scores of a batch: alpha (n x p x ncomp) and beta (n x warp_ncomp),
-# every DoF's mixture sampled at once from the model's precomputed sampler.
-sample_scores <- function(model, n) {
-  smp <- value_or(model$sampler, build_sampler(model))
-  alpha <- sample_mixtures(smp$dofs, n)
-  dimnames(alpha) <- list(NULL, model$dofs, paste0("FPC", seq_len(model$settings$ncomp)))
-  beta <- matrix(sample_mixtures(smp$warp, n), n)
-  list(alpha = alpha, beta = beta)
-}
-
 # Mixture parameters of every DoF stacked for vectorised sampling: cumulative
 # weights (p x k), means (p x k x d) and symmetric square roots of the
 # covariances (p x k x d x d). A point mass (constant DoF) has root 0.
@@ -153,81 +140,69 @@ stack_mixtures <- function(gmms, d) {
   list(cumw = cumw, mu = mu, root = root, p = p, k = k, d = d)
 }
 
-# n draws from each of the p stacked mixtures: an n x p x d array. The
-# component of each draw is found from one uniform, the draw is
-# mean + root %*% z with z standard normal.
-sample_mixtures <- function(smp, n) {
-  p <- smp$p
-  k <- smp$k
-  d <- smp$d
-  np <- n * p
-  j <- rep(seq_len(p), each = n)
-  u <- stats::runif(np)
-  z <- rep.int(1L, np)
-  if (k > 1L) for (c in seq_len(k - 1L)) z <- z + (u > smp$cumw[j + p * (c - 1L)])
-  Z <- matrix(stats::rnorm(np * d), np, d)
-  base <- j + p * (z - 1L)                      # index of (dof, component)
-  pk <- p * k
-  out <- array(0, c(n, p, d))
-  for (a in seq_len(d)) {
-    v <- smp$mu[base + pk * (a - 1L)]
-    for (b in seq_len(d)) v <- v + smp$root[base + pk * (a - 1L) + pk * d * (b - 1L)] * Z[, b]
-    out[, , a] <- v
-  }
-  out
+# The raw draws of one batch from one model, by the native kernel: list(
+# recordings (unnamed n_new x p matrices with colnames = DoFs), n_frames,
+# beta (n x warp_ncomp), alpha (n x p x ncomp)).
+# The kernel's own checks (lengths, the frame bound) come back as classed
+# errors naming the model.
+draw_batch <- function(model, n, warp = TRUE, call = rlang::caller_env()) {
+  smp <- model$sampler %||% build_sampler(model)
+  tryCatch(
+    .Call(hm_generate_batch, as.integer(n), smp$dofs, smp$warp, model$basis$mean,
+          model$basis$components, as.numeric(model$warp$mean),
+          matrix(as.numeric(model$warp$components), model$target_length), isTRUE(warp),
+          model$dofs),
+    error = function(e) {
+      msg <- conditionMessage(e)
+      hm_abort(c("The model of {.val {model$grasp}} cannot generate.", x = "{msg}"),
+               "bad_model", argument = "x", grasp = model$grasp, call = call)
+    })
 }
 
-# Curves on the template grid for a batch: an (L * n) x p matrix, draw-major
-# (rows (d - 1) * L + 1:L belong to draw d).
-build_curves <- function(model, alpha) {
-  n <- dim(alpha)[1]
-  p <- dim(alpha)[2]
-  L <- model$target_length
+# Limits of one call: the number of grasps one generate() call returns (a
+# larger set is drawn in several calls), and the frames of one draw (checked
+# in the kernel too: src/generate-kernel.c, HM_MAX_GENERATED_FRAMES).
+max_grasps_per_call <- 1e7
+
+# Check a model's stored sampler and basis against each other before they
+# reach native code: a model altered by hand (a component count that does
+# not match its arrays, a basis of another size) gets a classed error naming
+# what does not fit, not a crash.
+validate_sampler <- function(model, call = rlang::caller_env()) {
+  bad <- function(what, .envir = parent.frame()) {
+    what <- cli::format_inline(what, .envir = .envir)
+    hm_abort(c("The model of {.val {model$grasp %||% \"?\"}} cannot generate: {what}.",
+               i = "Was it changed after fitting? Refit it with {.fn fit_grasp_model}."),
+             "bad_model", argument = "x", grasp = model$grasp, call = call)
+  }
+  if (!inherits(model, "grasp_model")) bad("it is not a {.cls grasp_model}")
+  smp <- model$sampler %||% build_sampler(model)
   B <- model$basis
-  out <- matrix(0, L * n, p, dimnames = list(NULL, model$dofs))
-  for (j in seq_len(p)) {
-    P <- matrix(B$components[, j, ], L)              # L x k
-    a <- matrix(alpha[, j, ], n)                       # n x k
-    # L x n: each column one draw's curve; column-major order = draw-major rows.
-    out[, j] <- as.vector(P %*% t(a) + B$mean[, j])
+  L <- model$target_length
+  p <- length(model$dofs)
+  if (!is.numeric(B$mean) || !identical(dim(B$mean), c(as.integer(L), p))) {
+    bad("its basis mean is not {L} x {p}")
   }
-  out
-}
-
-# Warping functions of a batch (n x L, original frame of each template
-# frame): monotone, starting at frame 1.
-build_warps <- function(model, beta) {
-  n <- nrow(beta)
-  W <- matrix(model$warp$mean, n, length(model$warp$mean), byrow = TRUE) +
-    beta %*% t(model$warp$components)
-  W[W < 1] <- 1
-  W[, 1] <- 1
-  # cummax along rows, vectorised over draws: running max column by column.
-  if (ncol(W) > 1L) for (c in 2:ncol(W)) W[, c] <- pmax(W[, c], W[, c - 1L])
-  W
-}
-
-# Map the curves of a batch back to original time (R reference of the
-# kernel's step 3b). For draw d with warp w_d, original frame t takes the
-# template time s where w_d(s) = t: the template interval is the last
-# template frame j with w_d(j) <= t (warps are monotone, so a count),
-# clamped to 1..L-1; past w_d(L) the last frame's value; a flat interval
-# takes its left end.
-unwarp_batch <- function(curves, W, n_new) {
-  n <- nrow(W)
-  L <- ncol(W)
-  draw <- rep.int(seq_len(n), n_new)
-  t_orig <- sequence(n_new)
-  j <- rowSums(W[draw, , drop = FALSE] <= t_orig)
-  at_end <- j >= L
-  j <- pmin(pmax(j, 1L), L - 1L)
-  lo <- W[cbind(draw, j)]
-  span <- W[cbind(draw, j + 1L)] - lo
-  f <- ifelse(span > 0, (t_orig - lo) / span, 0)
-  f <- pmin(pmax(f, 0), 1)
-  f[at_end] <- 1
-  rows <- (draw - 1L) * L + j
-  curves[rows, , drop = FALSE] * (1 - f) + curves[rows + 1L, , drop = FALSE] * f
+  check_stack <- function(st, p_want, what) {
+    dims <- c(st$p, st$k, st$d)
+    if (!is.numeric(dims) || length(dims) != 3L || anyNA(dims) || any(dims < 1)) {
+      bad("its {what} sampler has no valid sizes")
+    }
+    if (st$p != p_want) bad("its {what} sampler holds {st$p} mixture{?s}, not {p_want}")
+    want <- list(cumw = c(st$p, st$k), mu = c(st$p, st$k, st$d), root = c(st$p, st$k, st$d, st$d))
+    for (el in names(want)) {
+      if (!is.double(st[[el]]) || length(st[[el]]) != prod(want[[el]]) || anyNA(st[[el]])) {
+        bad("its {what} sampler's {.field {el}} does not hold {prod(want[[el]])} numbers ({paste(want[[el]], collapse = ' x ')})")
+      }
+    }
+  }
+  check_stack(smp$dofs, p, "DoF")
+  check_stack(smp$warp, 1L, "warp")
+  if (length(B$components) != L * p * smp$dofs$d) bad("its basis components do not match its sampler")
+  if (length(model$warp$mean) != L || length(model$warp$components) != L * smp$warp$d) {
+    bad("its warp basis does not match its warp sampler")
+  }
+  invisible(model)
 }
 
 # Split a stacked (sum n_new) x p matrix into one matrix per draw.
@@ -235,63 +210,6 @@ split_rows <- function(vals, n_new) {
   ends <- cumsum(n_new)
   starts <- ends - n_new + 1L
   lapply(seq_along(n_new), function(d) vals[starts[d]:ends[d], , drop = FALSE])
-}
-
-# Which implementation draws a batch: "c", the native kernel
-# (src/generate-kernel.c: scores, warps and recordings in one pass), or "r",
-# the vectorised R reference with the same arithmetic in the same order, kept
-# to test the kernel against. Internal option `handmotion.generate_kernel`.
-generate_kernel <- function() {
-  k <- getOption("handmotion.generate_kernel", "c")
-  if (!identical(k, "r")) "c" else "r"
-}
-
-# The raw draws of one batch from one model: list(recordings (unnamed
-# n_new x p matrices with colnames = DoFs), n_frames, beta (n x warp_ncomp),
-# alpha (n x p x ncomp)). Both kernels consume the RNG identically.
-draw_batch <- function(model, n, warp = TRUE, kernel = generate_kernel()) {
-  smp <- value_or(model$sampler, build_sampler(model))
-  if (kernel == "c") {
-    return(.Call(hm_generate_batch, as.integer(n), smp$dofs, smp$warp, model$basis$mean,
-                 model$basis$components, as.numeric(model$warp$mean),
-                 matrix(as.numeric(model$warp$components), model$target_length), isTRUE(warp),
-                 model$dofs))
-  }
-  sc <- sample_scores(model, n)
-  L <- model$target_length
-  curves <- build_curves(model, sc$alpha)
-  if (warp) {
-    W <- build_warps(model, sc$beta)
-    n_new <- pmax(2L, as.integer(round(W[, L])))
-    recs <- split_rows(unwarp_batch(curves, W, n_new), n_new)
-  } else {
-    n_new <- rep.int(as.integer(L), n)
-    recs <- split_rows(curves, n_new)
-  }
-  list(recordings = recs, n_frames = n_new, beta = sc$beta, alpha = unname(sc$alpha))
-}
-
-# Pre-size R's heap for a large batch (hm_reserve_heap() in
-# src/generate-kernel.c): the batch's size in bytes is estimated from each
-# model's mean warp (its end is the mean frame count). Only for batches of
-# some megabytes (below that the heap's free room holds them), only without a
-# vector-heap limit (the reservation briefly counts against it), and a failed
-# reservation (address space refused) only forgoes the speed-up: the batch
-# itself is unaffected. Option handmotion.generate_reserve = FALSE turns it
-# off (bench/bench-generate.R measures both).
-generate_reserve <- function(models, n, warp) {
-  if (!isTRUE(getOption("handmotion.generate_reserve", TRUE))) return(invisible(FALSE))
-  per_grasp <- vapply(models, function(m) {
-    frames <- if (warp) max(2, m$warp$mean[m$target_length]) else m$target_length
-    (frames * length(m$dofs) * 8 + 200) * 1.1
-  }, numeric(1))
-  bytes <- n * sum(per_grasp)
-  if (!is.finite(bytes) || bytes < 4e6 || is.finite(mem.maxVSize())) return(invisible(FALSE))
-  ok <- tryCatch({
-    .Call(hm_reserve_heap, bytes)
-    TRUE
-  }, error = function(e) FALSE)
-  invisible(ok)
 }
 
 # One grasps object from the draws of one or more models (in order): ids
@@ -340,6 +258,6 @@ stack_scores <- function(parts, N, ids, model) {
 }
 
 # One batch from one model as a grasps object.
-generate_batch <- function(model, n, warp = TRUE, kernel = generate_kernel()) {
-  assemble_generated(list(model), list(draw_batch(model, n, warp, kernel)))
+generate_batch <- function(model, n, warp = TRUE, call = rlang::caller_env()) {
+  assemble_generated(list(model), list(draw_batch(model, n, warp, call = call)))
 }

@@ -7,7 +7,7 @@
 #   (d = 1), the package of the thesis; random starting values (seeded by
 #   `seed`) and seconds per fit;
 # * "fast": our EM (compiled for d = 1 and 2, src/gmm-em.c; the R version
-#   below for d > 2 and, with option handmotion.gmm_em = "R", for tests),
+#   below for d > 2; the tests check the two against each other),
 #   vectorised over observations. One matrix product gives
 #   the sufficient statistics of every component (M-step) and one gives all
 #   log-densities (E-step), because a Gaussian log-density is linear in the
@@ -87,9 +87,9 @@ gmm_fit <- function(X, k = 2, engine = c("fast", "reference"), max_iter = 500, t
                     seed = NULL) {
   call <- rlang::caller_env()
   engine <- rlang::arg_match(engine)
-  X <- gmm_data(X, "X", call = call)
-  k <- gmm_count(k, "k", call = call)
-  max_iter <- gmm_count(max_iter, "max_iter", call = call)
+  X <- as_numeric_matrix(X, "X", " (one observation per row)", call = call)
+  k <- check_whole(k, "k", max = max(1L, nrow(X)), call = call)
+  max_iter <- check_whole(max_iter, "max_iter", call = call)
   if (!is.numeric(tol) || length(tol) != 1L || !is.finite(tol) || tol <= 0) {
     hm_abort("{.arg tol} must be a positive number, not {.val {tol}}.", "bad_input",
              argument = "tol", call = call)
@@ -120,30 +120,6 @@ gmm_fit <- function(X, k = 2, engine = c("fast", "reference"), max_iter = 500, t
     return(gmm_fallback(X, "non-finite log-likelihood", engine, iterations = cand$iterations))
   }
   fit
-}
-
-gmm_data <- function(X, arg, call) {
-  if (is.data.frame(X)) X <- as.matrix(X)
-  if (is.numeric(X) && is.null(dim(X))) X <- matrix(X, ncol = 1L)
-  if (!is.numeric(X) || !is.matrix(X) || nrow(X) < 1L || ncol(X) < 1L) {
-    hm_abort("{.arg {arg}} must be a non-empty numeric matrix (one observation per row).",
-             "bad_input", argument = arg, call = call)
-  }
-  bad <- which(!is.finite(X), arr.ind = TRUE)
-  if (nrow(bad) > 0L) {
-    hm_abort("{.arg {arg}} has a non-finite value at row {bad[1, 1]}, column {bad[1, 2]}.",
-             "bad_input", argument = arg, call = call)
-  }
-  storage.mode(X) <- "double"
-  X
-}
-
-gmm_count <- function(x, arg, call) {
-  if (!is.numeric(x) || length(x) != 1L || is.na(x) || x < 1 || x != round(x)) {
-    hm_abort("{.arg {arg}} must be a positive whole number, not {.val {x}}.", "bad_input",
-             argument = arg, call = call)
-  }
-  as.integer(x)
 }
 
 # Reasons the data cannot carry k full-covariance components, before any EM.
@@ -290,12 +266,13 @@ gmm_unmap <- function(labels, k) {
 }
 
 # EM from several starting partitions at once: the compiled EM
-# (src/gmm-em.c) for d = 1 and d = 2, the R version below otherwise or when
-# option `handmotion.gmm_em = "R"` asks for it (tests compare the two).
+# (src/gmm-em.c) for d = 1 and d = 2 (the thesis' warp scores and FPC score
+# pairs, every fit of the default model), the R version below for more
+# dimensions (ncomp > 2); tests compare the two on d <= 2.
 # Returns one result per start: the last parameters, log-likelihood (of the
 # standardised data), iterations and convergence, or `failed` with a reason.
 gmm_em_batch <- function(design, starts, k, max_iter, tol, logdet0) {
-  if (design$d <= 2L && !identical(getOption("handmotion.gmm_em"), "R")) {
+  if (design$d <= 2L) {
     gmm_em_batch_c(design, starts, k, max_iter, tol, logdet0)
   } else {
     gmm_em_batch_r(design, starts, k, max_iter, tol, logdet0)
@@ -305,10 +282,8 @@ gmm_em_batch <- function(design, starts, k, max_iter, tol, logdet0) {
 gmm_em_batch_c <- function(design, starts, k, max_iter, tol, logdet0) {
   d <- design$d
   labels <- matrix(as.integer(unlist(starts, use.names = FALSE)), design$n)
-  # (option handmotion.gmm_simd caps the instruction set: 0 scalar, 1 SSE2,
-  # 2 AVX2 (default; where compiled in and the CPU has it); for tests)
   r <- .Call(hm_gmm_em, design$P, labels, as.integer(k), as.integer(max_iter), as.double(tol),
-             as.double(logdet0), as.integer(getOption("handmotion.gmm_simd", 2L)))
+             as.double(logdet0))
   mu <- array(r$mu, c(d, k, length(starts)))
   sigma <- array(r$sigma, c(d, d, k, length(starts)))
   lapply(seq_along(starts), function(a) {
@@ -551,30 +526,14 @@ gmm_starts <- function(Y, k, seed) {
   unique(canonical)
 }
 
-# k-means from each of a list of centre matrices: compiled (src/gmm-em.c)
-# unless option `handmotion.gmm_em = "R"`; both give the same labels.
+# k-means from each of a list of centre matrices (src/gmm-em.c; an R
+# transcription in the tests checks it).
 gmm_kmeans_all <- function(Y, centres, iters = 10L) {
-  if (identical(getOption("handmotion.gmm_em"), "R")) {
-    return(lapply(centres, function(cen) gmm_kmeans(Y, cen, iters)))
-  }
   lab <- .Call(hm_gmm_kmeans, Y, lapply(centres, function(cen) {
     storage.mode(cen) <- "double"
     cen
   }), as.integer(iters))
   lapply(seq_along(centres), function(s) lab[, s])
-}
-
-# A few Lloyd iterations from given centres.
-gmm_kmeans <- function(Y, centres, iters = 10L) {
-  lab <- integer(nrow(Y))
-  for (i in seq_len(iters)) {
-    dist <- -2 * Y %*% t(centres) + rep(rowSums(centres^2), each = nrow(Y))
-    new <- max.col(-dist, ties.method = "first")
-    if (identical(new, lab)) break
-    lab <- new
-    for (g in unique(lab)) centres[g, ] <- colMeans(Y[lab == g, , drop = FALSE])
-  }
-  lab
 }
 
 # The two-group split of a projection with the least within-group sum of
@@ -648,7 +607,7 @@ check_gmm_fit <- function(fit, call) {
 gmm_points <- function(fit, X, call) {
   d <- ncol(fit$means)
   if (is.numeric(X) && is.null(dim(X))) X <- matrix(X, ncol = d, byrow = TRUE)
-  X <- gmm_data(X, "X", call = call)
+  X <- as_numeric_matrix(X, "X", " (one observation per row)", call = call)
   if (ncol(X) != d) {
     hm_abort("{.arg X} must have {d} column{?s}, like the data the mixture was fitted to.",
              "bad_input", argument = "X", call = call)

@@ -85,9 +85,9 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = 2, warp_ncomp = 1, k = 2,
                             keep_data = TRUE) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  check_count(ncomp, "ncomp", call)
-  check_count(warp_ncomp, "warp_ncomp", call)
-  check_count(k, "k", call)
+  check_whole(ncomp, "ncomp", max = 50, call = call)
+  check_whole(warp_ncomp, "warp_ncomp", max = 50, call = call)
+  check_whole(k, "k", max = 50, call = call)
   engines <- resolve_engines(engine, call)
   warping <- rlang::arg_match(warping, error_call = call)
   x <- select_one_type(x, grasp, call)
@@ -398,28 +398,12 @@ resolve_engines <- function(engine, call) {
                "bad_input", argument = "engine", call = call)
     }
     out <- stats::setNames(as.list(rep("fast", 3)), steps)
-    for (s in names(engine)) out[[s]] <- check_engine(engine[[s]], call)
+    for (s in names(engine)) out[[s]] <- check_choice(engine[[s]], c("fast", "reference"), "engine", call = call)
     return(out)
   }
   if (is.character(engine) && identical(engine, choices)) engine <- "fast"
-  e <- check_engine(engine, call)
+  e <- check_choice(engine, c("fast", "reference"), "engine", call = call)
   stats::setNames(as.list(rep(e, 3)), steps)
-}
-
-check_engine <- function(e, call) {
-  if (!is.character(e) || length(e) != 1L || !e %in% c("fast", "reference")) {
-    hm_abort("{.arg engine} must be {.val fast} or {.val reference}, not {.val {format(e)}}.",
-             "bad_input", argument = "engine", call = call)
-  }
-  e
-}
-
-check_count <- function(x, arg, call) {
-  if (!is.numeric(x) || length(x) != 1L || !is.finite(x) || x < 1 || x != round(x)) {
-    hm_abort("{.arg {arg}} must be one positive whole number, not {.val {format(x)}}.",
-             "bad_input", argument = arg, call = call)
-  }
-  invisible(x)
 }
 
 # Select the recordings of one type; refuse a set that mixes types.

@@ -114,7 +114,7 @@ handover_build <- function(ref_all, ref_y, markers, ncomp = NULL, k = 256, smoot
                i = "It needs at least {d + 2} frames (3 coordinates per marker + 2)."),
              "reference_too_small", argument = "reference", call = call)
   }
-  ncomp <- check_ncomp(ncomp, p, call = call)
+  ncomp <- check_whole(ncomp, "ncomp", max = p, allow_null = TRUE, call = call) %||% p
   if (!is.numeric(k) || length(k) != 1L || is.na(k) || k < d + 2) {
     hm_abort("{.arg k} must be a number of neighbours of at least {d + 2}, not {.val {format(k)}}.",
              "bad_input", argument = "k", call = call)
@@ -141,16 +141,6 @@ handover_build <- function(ref_all, ref_y, markers, ncomp = NULL, k = 256, smoot
     reference = data.frame(recordings = NA_integer_, frames = n_ref, grasp_types = NA_integer_,
                            subjects = NA_integer_)
   ), class = "handover_model")
-}
-
-check_ncomp <- function(ncomp, p, call = rlang::caller_env()) {
-  if (is.null(ncomp)) return(p)
-  if (!is.numeric(ncomp) || length(ncomp) != 1L || is.na(ncomp) || ncomp < 1 || ncomp > p ||
-      ncomp != round(ncomp)) {
-    hm_abort("{.arg ncomp} must be a whole number from 1 to {p} (the number of DoFs), not {.val {format(ncomp)}}.",
-             "bad_input", argument = "ncomp", call = call)
-  }
-  as.integer(ncomp)
 }
 
 # Extend an orthonormal basis with fewer columns than rows to a full one.

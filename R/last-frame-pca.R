@@ -39,7 +39,7 @@
 fit_last_frame_pca <- function(x, k = 5, grasps = NULL) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  k <- check_pc_count(k, length(x$dofs), call = call)
+  k <- check_whole(k, "k", max = length(x$dofs), call = call)
   types <- labelled_types(x, grasps, call = call)
   last <- last_frame_matrix(x)
   models <- lapply(types, function(type) {
@@ -58,14 +58,6 @@ fit_last_frame_pca <- function(x, k = 5, grasps = NULL) {
   structure(list(models = models, k = k, k_used = k_used, dofs = x$dofs,
                  n_unlabelled = sum(is.na(x$meta$grasp))),
             class = "last_frame_pca")
-}
-
-check_pc_count <- function(k, p, call = rlang::caller_env()) {
-  if (!is.numeric(k) || length(k) != 1L || is.na(k) || k < 1 || k != round(k) || k > p) {
-    hm_abort("{.arg k} must be a whole number of PCs between 1 and {p}, not {.val {format(k)}}.",
-             "bad_input", argument = "k", call = call)
-  }
-  as.integer(k)
 }
 
 # Grasp types to model: the requested ones (validated) or all labelled types

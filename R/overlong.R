@@ -69,17 +69,17 @@ overlong_threshold <- function(n_frames, rule = overlong_rule()) {
 overlong_threshold_impl <- function(n_frames, rule, call) {
   if (!is.numeric(n_frames) || length(n_frames) == 0L) {
     hm_abort("{.arg n_frames} must be a non-empty numeric vector of frame counts.",
-             "bad_argument", argument = "n_frames", call = call)
+             "bad_input", argument = "n_frames", call = call)
   }
   if (anyNA(n_frames)) {
     bad <- which(is.na(n_frames))
     hm_abort(c("{.arg n_frames} must not contain missing values.",
                x = "Missing at position{?s} {.val {bad}}."),
-             "bad_argument", argument = "n_frames", call = call)
+             "bad_input", argument = "n_frames", call = call)
   }
   if (!inherits(rule, "overlong_rule")) {
     hm_abort("{.arg rule} must be made by {.fn overlong_rule}.",
-             "bad_argument", argument = "rule", call = call)
+             "bad_input", argument = "rule", call = call)
   }
   q <- stats::quantile(n_frames, c(0.25, 0.5, 0.75), names = FALSE, type = 7)
   max(q[3] + rule$iqr_mult * (q[3] - q[1]), rule$median_mult * q[2])
@@ -88,7 +88,7 @@ overlong_threshold_impl <- function(n_frames, rule, call) {
 overlong_check_mult <- function(x, arg, call) {
   if (!is.numeric(x) || length(x) != 1L || is.na(x) || x <= 0 || !is.finite(x)) {
     hm_abort("{.arg {arg}} must be one positive number, not {.val {x}}.",
-             "bad_argument", argument = arg, call = call)
+             "bad_input", argument = arg, call = call)
   }
   invisible(x)
 }

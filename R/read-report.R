@@ -84,7 +84,7 @@ read_failures <- function(x) {
 }
 
 # Raise a classed error about a file's content or name. `class` is the
-# specific problem; every such error is also a "handmotion_error_bad_file",
+# specific problem; every such error is also in the "handmotion_error_bad_file" family,
 # and carries the fields `file` and `line`.
 abort_bad_file <- function(message, class, file, line = NA_integer_, ...,
                            call = rlang::caller_env(), .envir = parent.frame()) {

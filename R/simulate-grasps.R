@@ -76,9 +76,9 @@
 simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 3, rate = 50, seed = 1,
                             overlong = TRUE, params = simulator_params()) {
   call <- rlang::caller_env()
-  subjects <- sim_check_count(subjects, "subjects", call)
-  objects <- sim_check_count(objects, "objects", call)
-  trials <- sim_check_count(trials, "trials", call)
+  subjects <- check_whole(subjects, "subjects", max = 1e5, call = call)
+  objects <- check_whole(objects, "objects", max = 1e5, call = call)
+  trials <- check_whole(trials, "trials", max = 1e5, call = call)
   types <- sim_check_types(grasps, call)
   check_rate(rate, call = call)
   if (rate < 10) {
@@ -106,14 +106,6 @@ simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 
   recs <- unlist(lapply(parts, `[[`, "recordings"), recursive = FALSE)
   meta <- do.call(rbind, lapply(parts, `[[`, "meta"))
   new_grasps(recs, meta, handmotion::hust_dofs$name, rate, "deg")
-}
-
-sim_check_count <- function(x, arg, call) {
-  if (!is.numeric(x) || length(x) != 1L || !is.finite(x) || x < 1 || x != round(x)) {
-    hm_abort("{.arg {arg}} must be one positive whole number (a count), not {.val {format(x)}}.",
-             "bad_input", argument = arg, call = call)
-  }
-  as.integer(x)
 }
 
 sim_check_types <- function(grasps, call) {

@@ -61,7 +61,7 @@ read_skeleton <- function(file, positions = c("absolute", "relative")) {
   }
   doc <- tryCatch(xml2::read_xml(file), error = function(e) {
     hm_abort(c("Skeleton file {.file {file}} is not well-formed XML.",
-               x = "{conditionMessage(e)}"), "bad_skeleton", file = file, call = call)
+               x = "{conditionMessage(e)}"), c("bad_skeleton", "bad_file"), file = file, call = call)
   })
   lines <- readLines(file, warn = FALSE)
   parse_skeleton_xml(doc, file, lines, positions, call)
@@ -110,12 +110,12 @@ parse_skeleton_xml <- function(doc, file, lines, positions, call) {
   top <- xml2::xml_name(doc)
   if (!identical(top, "skeleton")) {
     hm_abort(c("Skeleton file {.file {file}} has root element {.val <{top}>}, not {.val <skeleton>}."),
-             "bad_skeleton", file = file, call = call)
+             c("bad_skeleton", "bad_file"), file = file, call = call)
   }
   units <- parse_skeleton_units(doc, file, lines, call)
   nodes <- xml2::xml_find_all(doc, "//joint")
   if (length(nodes) == 0L) {
-    hm_abort("Skeleton file {.file {file}} has no {.val <joint>} elements.", "bad_skeleton",
+    hm_abort("Skeleton file {.file {file}} has no {.val <joint>} elements.", c("bad_skeleton", "bad_file"),
              file = file, call = call)
   }
   field <- function(tag) trimws(xml2::xml_text(xml2::xml_find_first(nodes, paste0("./", tag))))
@@ -300,7 +300,7 @@ skel_abort <- function(message, file, lines, tag, value, joint, occurrence = 1L,
   line <- skeleton_line(lines, tag, value, occurrence)
   where <- if (is.na(line)) "In {.file {file}}." else "In {.file {file}}, line {line}."
   msg <- c(message, i = where)
-  hm_abort(msg, "bad_skeleton", file = file, line = line, joint = joint, call = call,
+  hm_abort(msg, c("bad_skeleton", "bad_file"), file = file, line = line, joint = joint, call = call,
            .envir = list2env(list(file = file, line = line), parent = .envir))
 }
 

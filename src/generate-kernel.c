@@ -13,16 +13,21 @@
  * Returns list(recordings, n_frames, beta, alpha); the recordings are
  * n_new x p matrices with colnames `dofs`, ready for new_grasps().
  *
- * The arithmetic follows the R reference (kernel = "r") operation for
- * operation, in the same order, so both paths give the same numbers
- * (bit for bit with R's reference BLAS, which sums matrix products in the
- * same order as the loops below). */
+ * The arithmetic follows the R reference kept in the tests
+ * (tests/testthat/helper-generate-reference.R) operation for operation, in
+ * the same order, so both give the same numbers up to rounding.
+ *
+ * Every length and index is checked here as well as in R (validate_sampler()
+ * in R/generate.R): a damaged model gives an R error, never a crash. */
 #include <R.h>
 #include <Rinternals.h>
 #include "named-list.h"
 #include <Rmath.h>
 #include <math.h>
 #include <string.h>
+
+/* the longest recording one draw may have (R: max_generated_frames) */
+#define HM_MAX_GENERATED_FRAMES 100000
 
 /* one stacked mixture set: p mixtures of k components in d dimensions */
 typedef struct {
@@ -41,14 +46,26 @@ static SEXP list_elt(SEXP list, const char *name) {
   return R_NilValue; /* not reached */
 }
 
+/* a double vector of exactly `len` elements, or an R error */
+static const double *real_of_length(SEXP x, R_xlen_t len, const char *what) {
+  if (TYPEOF(x) != REALSXP || XLENGTH(x) != len)
+    error("generate kernel: %s must be a double array of %lld values", what, (long long) len);
+  return REAL(x);
+}
+
 static mixtures as_mixtures(SEXP smp) {
   mixtures m;
+  if (TYPEOF(smp) != VECSXP || TYPEOF(getAttrib(smp, R_NamesSymbol)) != STRSXP)
+    error("generate kernel: a sampler must be a named list");
   m.p = asInteger(list_elt(smp, "p"));
   m.k = asInteger(list_elt(smp, "k"));
   m.d = asInteger(list_elt(smp, "d"));
-  m.cumw = REAL(list_elt(smp, "cumw"));
-  m.mu = REAL(list_elt(smp, "mu"));
-  m.root = REAL(list_elt(smp, "root"));
+  if (m.p == NA_INTEGER || m.k == NA_INTEGER || m.d == NA_INTEGER || m.p < 1 || m.k < 1 || m.d < 1)
+    error("generate kernel: sampler sizes p, k, d must be positive");
+  const R_xlen_t pk = (R_xlen_t) m.p * m.k;
+  m.cumw = real_of_length(list_elt(smp, "cumw"), pk, "sampler cumw (p x k)");
+  m.mu = real_of_length(list_elt(smp, "mu"), pk * m.d, "sampler mu (p x k x d)");
+  m.root = real_of_length(list_elt(smp, "root"), pk * m.d * m.d, "sampler root (p x k x d x d)");
   return m;
 }
 
@@ -95,15 +112,20 @@ static void sample_mixtures(mixtures m, int n, double *out, int *comp) {
 SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP comps,
                        SEXP warp_mean, SEXP warp_comps, SEXP do_warp_, SEXP dofs) {
   const int n = asInteger(n_), do_warp = asLogical(do_warp_);
+  if (n < 0 || n == NA_INTEGER) error("generate kernel: bad batch size");
+  if (do_warp == NA_LOGICAL) error("generate kernel: warp must be TRUE or FALSE");
+  if (TYPEOF(mean) != REALSXP || !isMatrix(mean)) error("generate kernel: mean must be a double matrix");
   const int L = nrows(mean), p = ncols(mean);
+  if (L < 1 || p < 1) error("generate kernel: empty basis");
+  if (TYPEOF(dofs) != STRSXP || XLENGTH(dofs) != p) error("generate kernel: dofs must be %d names", p);
   const mixtures md = as_mixtures(dof_smp), mw = as_mixtures(warp_smp);
   const int k = md.d, kw = mw.d;
-  if (n < 0 || n == NA_INTEGER) error("generate kernel: bad batch size");
-  if (md.p != p || XLENGTH(comps) != (R_xlen_t) L * p * k)
-    error("generate kernel: basis (%d x %d x %d) does not match the sampler", L, p, k);
-  if (mw.p != 1 || XLENGTH(warp_mean) != L || XLENGTH(warp_comps) != (R_xlen_t) L * kw)
-    error("generate kernel: warp basis does not match the sampler");
-  const double *mu = REAL(mean), *P = REAL(comps), *wmu = REAL(warp_mean), *wP = REAL(warp_comps);
+  if (md.p != p) error("generate kernel: the sampler has %d DoFs, the basis %d", md.p, p);
+  if (mw.p != 1) error("generate kernel: the warp sampler must hold one mixture");
+  const double *mu = REAL(mean);
+  const double *P = real_of_length(comps, (R_xlen_t) L * p * k, "basis components (L x p x ncomp)");
+  const double *wmu = real_of_length(warp_mean, L, "warp mean (L)");
+  const double *wP = real_of_length(warp_comps, (R_xlen_t) L * kw, "warp components (L x warp_ncomp)");
 
   SEXP alpha = PROTECT(alloc3DArray(REALSXP, n, p, k));
   SEXP beta = PROTECT(allocMatrix(REALSXP, n, kw));
@@ -131,6 +153,7 @@ SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP com
   R_xlen_t cap = 0; /* capacity of lo / f, grown to the longest draw */
 
   for (int d = 0; d < n; d++) {
+    if (d % 1024 == 1023) R_CheckUserInterrupt(); /* Ctrl-C reaches long batches */
     /* 2. warp: mean + beta %*% t(components), floored at frame 1, starting
      * at 1, made monotone by a running maximum */
     int m = L;
@@ -144,6 +167,10 @@ SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP com
       w[0] = 1;
       for (int s = 1; s < L; s++) if (w[s - 1] > w[s]) w[s] = w[s - 1];
       const double r = nearbyint(w[L - 1]); /* R's round(): half to even */
+      /* a warp score far outside the data would ask for an absurd length */
+      if (!(r <= HM_MAX_GENERATED_FRAMES))
+        error("generate kernel: draw %d asks for %.0f frames (at most %d)", d + 1, r,
+              HM_MAX_GENERATED_FRAMES);
       m = (r < 2) ? 2 : (int) r;
     }
     nn[d] = m;
@@ -206,18 +233,4 @@ SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP com
   SEXP res = hm_named_list(4, names, values);
   UNPROTECT(5);
   return res;
-}
-
-/* Pre-size R's vector heap for a batch of about `bytes` bytes: allocate an
- * uninitialised raw vector of that size (its pages are never touched, so it
- * costs address space, not memory) and drop it at once. The allocation makes
- * R's collector grow the heap trigger to fit the batch in one step; without
- * it the trigger grows about a fifth per collection, so a large batch runs
- * several full collections, each re-marking the whole session, and batches
- * in a loop outlive the young generation. The block itself is reclaimed by
- * the next (young-generation) collection. See generate_reserve() in R. */
-SEXP hm_reserve_heap(SEXP bytes) {
-  const double b = asReal(bytes);
-  if (R_FINITE(b) && b >= 1) allocVector(RAWSXP, (R_xlen_t) b);
-  return R_NilValue;
 }

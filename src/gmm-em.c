@@ -16,21 +16,14 @@
  *
  * What differs is rounding only, for speed: the k = 2 E-step is one pass
  * over the points fused with the next M-step's sums; sum log1p(exp(neg)) is
- * the log of a running product; on x86-64 four points go through AVX2 at
- * once when the CPU has it (estep2_avx2, chosen at run time), else two
- * through SSE2 (estep2_sse2), with an inline exp(); -DHM_NO_AVX2,
- * -DHM_NO_SIMD or another architecture fall back to SSE2 or the scalar
- * estep2 with libm's exp. Whatever the path, log-likelihoods agree with the
- * R version to about 1e-11 (tests/testthat/test-gmm.R runs all three).
- * Elsewhere, sums over points that R computes with BLAS (crossprod, %*%)
- * are plain double sums in point order (as the reference BLAS does); those
- * R computes with colSums use long double, as R does.
+ * the log of a running product. Plain C with libm's exp(): log-likelihoods
+ * agree with the R version to about 1e-11 (tests/testthat/test-gmm.R).
+ * Sums over points are plain double sums in point order.
  *
  * Entry points:
- *   hm_gmm_em(P, labels, k, max_iter, tol, logdet0, simd)
+ *   hm_gmm_em(P, labels, k, max_iter, tol, logdet0)
  *     P: n x nm monomials of the standardised data (nm = 3 for d = 1, 6 for
- *     d = 2); labels: n x S integer starting partitions (1..k); simd: the
- *     widest instruction set to use (0 scalar, 1 SSE2, 2 AVX2).
+ *     d = 2); labels: n x S integer starting partitions (1..k).
  *     Returns list(status, iterations, converged, loglik, bad, weights, mu,
  *     sigma): status 0 = stopped with parameters (converged or at max_iter),
  *     1 = failed (bad = first degenerate component, 0 = non-finite
@@ -43,16 +36,6 @@
 #include <R.h>
 #include <Rinternals.h>
 #include "named-list.h"
-#if defined(__SSE2__) && !defined(HM_NO_SIMD)
-#include <emmintrin.h>
-#endif
-/* AVX2 (four points at once) where the compiler can target it for one
- * function and the CPU has it, checked at run time: GCC and clang on x86-64 */
-#if defined(__SSE2__) && !defined(HM_NO_SIMD) && defined(__x86_64__) && \
-    (defined(__GNUC__) || defined(__clang__)) && !defined(HM_NO_AVX2)
-#define HM_AVX2 1
-#include <immintrin.h>
-#endif
 
 #define ST_DONE 0
 #define ST_FAILED 1
@@ -188,268 +171,17 @@ static inline double estep2(const double *Pt, int n, const int nm, const double 
   return logs + log(prod);
 }
 
-#if defined(__SSE2__) && !defined(HM_NO_SIMD)
-/* exp() of two values at once for |x| <= 230 (SSE2, the x86-64 baseline):
- * x = n ln2 + r with |r| <= ln2 / 2 (Cody-Waite, n*LN2_HI exact), exp(r) by
- * its Taylor series to degree 13 (truncation below 1e-17 relative), times
- * 2^n built in the exponent bits. Within a few ulps of libm's exp(); the
- * E-step's sums then agree with the R version's to about 1e-13. */
-static inline __m128d exp_pd(__m128d x) {
-  const __m128d shifter = _mm_set1_pd(6755399441055744.0); /* 1.5 * 2^52 */
-  __m128d t = _mm_add_pd(_mm_mul_pd(x, _mm_set1_pd(1.4426950408889634)), shifter);
-  __m128d n = _mm_sub_pd(t, shifter); /* round(x / ln2) */
-  __m128d r = _mm_sub_pd(x, _mm_mul_pd(n, _mm_set1_pd(6.93147180369123816490e-01)));
-  r = _mm_sub_pd(r, _mm_mul_pd(n, _mm_set1_pd(1.90821492927058770002e-10)));
-  /* sum_{k=0}^{13} r^k / k! by Estrin's scheme: a shallow tree of
-   * multiply-adds rather than Horner's chain of thirteen, whose latency
-   * would dominate */
-#define HM_C(k) _mm_set1_pd(1.0 / (k))
-  const __m128d r2 = _mm_mul_pd(r, r), r4 = _mm_mul_pd(r2, r2), r8 = _mm_mul_pd(r4, r4);
-  __m128d q0 = _mm_add_pd(_mm_set1_pd(1.0), r);                                 /* 1 + r */
-  __m128d q1 = _mm_add_pd(HM_C(2.0), _mm_mul_pd(HM_C(6.0), r));                 /* r^2, r^3 */
-  __m128d q2 = _mm_add_pd(HM_C(24.0), _mm_mul_pd(HM_C(120.0), r));              /* r^4, r^5 */
-  __m128d q3 = _mm_add_pd(HM_C(720.0), _mm_mul_pd(HM_C(5040.0), r));            /* r^6, r^7 */
-  __m128d q4 = _mm_add_pd(HM_C(40320.0), _mm_mul_pd(HM_C(362880.0), r));        /* r^8, r^9 */
-  __m128d q5 = _mm_add_pd(HM_C(3628800.0), _mm_mul_pd(HM_C(39916800.0), r));    /* r^10, r^11 */
-  __m128d q6 = _mm_add_pd(HM_C(479001600.0), _mm_mul_pd(HM_C(6227020800.0), r)); /* r^12, r^13 */
-#undef HM_C
-  __m128d t0 = _mm_add_pd(q0, _mm_mul_pd(q1, r2));
-  __m128d t1 = _mm_add_pd(q2, _mm_mul_pd(q3, r2));
-  __m128d t2 = _mm_add_pd(q4, _mm_mul_pd(q5, r2));
-  __m128d u0 = _mm_add_pd(t0, _mm_mul_pd(t1, r4));
-  __m128d u1 = _mm_add_pd(t2, _mm_mul_pd(q6, r4));
-  __m128d p = _mm_add_pd(u0, _mm_mul_pd(u1, r8));
-  /* t's low mantissa bits hold n + 2^51: add 1023 - 2^51, shift into the
-   * exponent field: the bits of 2^n */
-  __m128i bits = _mm_add_epi64(_mm_castpd_si128(t),
-                               _mm_set1_epi64x((long long) 1023 - ((long long) 1 << 51)));
-  __m128d scale = _mm_castsi128_pd(_mm_slli_epi64(bits, 52));
-  return _mm_mul_pd(p, scale);
-}
-
-/* estep2() two points at a time, reading the monomials column-major (P);
- * for d = 1 (three monomials) the other three columns are `zero` and their
- * coefficients 0, which adds exact zeros. The six sums live in registers
- * (spelt out, not an array, which the compiler kept in memory); they run
- * over even and odd points separately and are added at the end
- * (rounding-level differences from the point-order sums). Pairs with
- * |neg| > 230 (exp near overflow, or the product's flush limit) go through
- * the scalar formulas. */
-static double estep2_sse2(const double *P, int n, int nm, const double *zero, const double *D,
-                          double *s_next, int *inf) {
-  const double *c0 = P, *c1 = P + n, *c2 = P + 2 * (size_t) n;
-  const double *c3 = nm == 6 ? P + 3 * (size_t) n : zero;
-  const double *c4 = nm == 6 ? P + 4 * (size_t) n : zero;
-  const double *c5 = nm == 6 ? P + 5 * (size_t) n : zero;
-  const __m128d d0 = _mm_set1_pd(D[0]), d1 = _mm_set1_pd(D[1]), d2 = _mm_set1_pd(D[2]);
-  const __m128d d3 = _mm_set1_pd(nm == 6 ? D[3] : 0.0), d4 = _mm_set1_pd(nm == 6 ? D[4] : 0.0),
-                d5 = _mm_set1_pd(nm == 6 ? D[5] : 0.0);
-  __m128d s0 = _mm_setzero_pd(), s1 = s0, s2 = s0, s3 = s0, s4 = s0, s5 = s0;
-  __m128d prod = _mm_set1_pd(1.0);
-  const __m128d one = _mm_set1_pd(1.0), lim = _mm_set1_pd(230.0), big = _mm_set1_pd(1e200);
-  const __m128d absmask = _mm_castsi128_pd(_mm_set1_epi64x(0x7fffffffffffffffLL));
-  double logs = 0.0;
-  int hit = 0, i = 0;
-  for (; i + 2 <= n; i += 2) {
-    const __m128d p0 = _mm_loadu_pd(c0 + i), p1 = _mm_loadu_pd(c1 + i), p2 = _mm_loadu_pd(c2 + i);
-    const __m128d p3 = _mm_loadu_pd(c3 + i), p4 = _mm_loadu_pd(c4 + i), p5 = _mm_loadu_pd(c5 + i);
-    __m128d v = _mm_mul_pd(p0, d0);
-    v = _mm_add_pd(v, _mm_mul_pd(p1, d1));
-    v = _mm_add_pd(v, _mm_mul_pd(p2, d2));
-    v = _mm_add_pd(v, _mm_mul_pd(p3, d3));
-    v = _mm_add_pd(v, _mm_mul_pd(p4, d4));
-    v = _mm_add_pd(v, _mm_mul_pd(p5, d5));
-    __m128d z;
-    /* not (|v| <= 230): large or NaN */
-    if (_mm_movemask_pd(_mm_cmpnle_pd(_mm_and_pd(v, absmask), lim))) {
-      double vv[2], zz[2];
-      _mm_storeu_pd(vv, v);
-      for (int b = 0; b < 2; b++) {
-        double e = exp(vv[b]);
-        zz[b] = 1.0 / (1.0 + e);
-        if (e == R_PosInf) hit = 1;
-        logs += log1p(e);
-      }
-      z = _mm_loadu_pd(zz);
-    } else {
-      __m128d e1 = _mm_add_pd(one, exp_pd(v));
-      z = _mm_div_pd(one, e1);
-      prod = _mm_mul_pd(prod, e1);
-      if (_mm_movemask_pd(_mm_cmpgt_pd(prod, big))) {
-        double pp[2];
-        _mm_storeu_pd(pp, prod);
-        logs += log(pp[0]) + log(pp[1]);
-        prod = one;
-      }
-    }
-    s0 = _mm_add_pd(s0, _mm_mul_pd(p0, z));
-    s1 = _mm_add_pd(s1, _mm_mul_pd(p1, z));
-    s2 = _mm_add_pd(s2, _mm_mul_pd(p2, z));
-    s3 = _mm_add_pd(s3, _mm_mul_pd(p3, z));
-    s4 = _mm_add_pd(s4, _mm_mul_pd(p4, z));
-    s5 = _mm_add_pd(s5, _mm_mul_pd(p5, z));
-  }
-  double pp[2], ss[6], t2[2];
-  _mm_storeu_pd(pp, prod);
-  __m128d sv[6] = {s0, s1, s2, s3, s4, s5};
-  for (int m = 0; m < 6; m++) {
-    _mm_storeu_pd(t2, sv[m]);
-    ss[m] = t2[0] + t2[1];
-  }
-  double tail = 0.0;
-  for (; i < n; i++) { /* the last point of an odd n */
-    double v = 0.0;
-    for (int m = 0; m < nm; m++) v += P[(size_t) m * n + i] * D[m];
-    double e = exp(v);
-    double z = 1.0 / (1.0 + e);
-    for (int m = 0; m < nm; m++) ss[m] += P[(size_t) m * n + i] * z;
-    if (e == R_PosInf) hit = 1;
-    tail += log1p(e);
-  }
-  for (int m = 0; m < nm; m++) s_next[m] = ss[m];
-  *inf = hit;
-  return logs + log(pp[0]) + log(pp[1]) + tail;
-}
-
-#ifdef HM_AVX2
-/* exp_pd() four values at once (same steps, same constants) */
-__attribute__((target("avx2"))) static inline __m256d exp_pd4(__m256d x) {
-  const __m256d shifter = _mm256_set1_pd(6755399441055744.0);
-  __m256d t = _mm256_add_pd(_mm256_mul_pd(x, _mm256_set1_pd(1.4426950408889634)), shifter);
-  __m256d n = _mm256_sub_pd(t, shifter);
-  __m256d r = _mm256_sub_pd(x, _mm256_mul_pd(n, _mm256_set1_pd(6.93147180369123816490e-01)));
-  r = _mm256_sub_pd(r, _mm256_mul_pd(n, _mm256_set1_pd(1.90821492927058770002e-10)));
-#define HM_C4(k) _mm256_set1_pd(1.0 / (k))
-  const __m256d r2 = _mm256_mul_pd(r, r), r4 = _mm256_mul_pd(r2, r2), r8 = _mm256_mul_pd(r4, r4);
-  __m256d q0 = _mm256_add_pd(_mm256_set1_pd(1.0), r);
-  __m256d q1 = _mm256_add_pd(HM_C4(2.0), _mm256_mul_pd(HM_C4(6.0), r));
-  __m256d q2 = _mm256_add_pd(HM_C4(24.0), _mm256_mul_pd(HM_C4(120.0), r));
-  __m256d q3 = _mm256_add_pd(HM_C4(720.0), _mm256_mul_pd(HM_C4(5040.0), r));
-  __m256d q4 = _mm256_add_pd(HM_C4(40320.0), _mm256_mul_pd(HM_C4(362880.0), r));
-  __m256d q5 = _mm256_add_pd(HM_C4(3628800.0), _mm256_mul_pd(HM_C4(39916800.0), r));
-  __m256d q6 = _mm256_add_pd(HM_C4(479001600.0), _mm256_mul_pd(HM_C4(6227020800.0), r));
-#undef HM_C4
-  __m256d t0 = _mm256_add_pd(q0, _mm256_mul_pd(q1, r2));
-  __m256d t1 = _mm256_add_pd(q2, _mm256_mul_pd(q3, r2));
-  __m256d t2 = _mm256_add_pd(q4, _mm256_mul_pd(q5, r2));
-  __m256d u0 = _mm256_add_pd(t0, _mm256_mul_pd(t1, r4));
-  __m256d u1 = _mm256_add_pd(t2, _mm256_mul_pd(q6, r4));
-  __m256d p = _mm256_add_pd(u0, _mm256_mul_pd(u1, r8));
-  __m256i bits = _mm256_add_epi64(_mm256_castpd_si256(t),
-                                  _mm256_set1_epi64x((long long) 1023 - ((long long) 1 << 51)));
-  return _mm256_mul_pd(p, _mm256_castsi256_pd(_mm256_slli_epi64(bits, 52)));
-}
-
-/* estep2_sse2() four points at a time; the sums run over the four residues
- * of the point index mod 4. */
-__attribute__((target("avx2"))) static double estep2_avx2(const double *P, int n, int nm,
-                                                         const double *zero, const double *D,
-                                                         double *s_next, int *inf) {
-  const double *c0 = P, *c1 = P + n, *c2 = P + 2 * (size_t) n;
-  const double *c3 = nm == 6 ? P + 3 * (size_t) n : zero;
-  const double *c4 = nm == 6 ? P + 4 * (size_t) n : zero;
-  const double *c5 = nm == 6 ? P + 5 * (size_t) n : zero;
-  const __m256d d0 = _mm256_set1_pd(D[0]), d1 = _mm256_set1_pd(D[1]), d2 = _mm256_set1_pd(D[2]);
-  const __m256d d3 = _mm256_set1_pd(nm == 6 ? D[3] : 0.0),
-                d4 = _mm256_set1_pd(nm == 6 ? D[4] : 0.0),
-                d5 = _mm256_set1_pd(nm == 6 ? D[5] : 0.0);
-  __m256d s0 = _mm256_setzero_pd(), s1 = s0, s2 = s0, s3 = s0, s4 = s0, s5 = s0;
-  __m256d prod = _mm256_set1_pd(1.0);
-  const __m256d one = _mm256_set1_pd(1.0), lim = _mm256_set1_pd(230.0),
-                big = _mm256_set1_pd(1e200);
-  const __m256d absmask = _mm256_castsi256_pd(_mm256_set1_epi64x(0x7fffffffffffffffLL));
-  double logs = 0.0;
-  int hit = 0, i = 0;
-  for (; i + 4 <= n; i += 4) {
-    const __m256d p0 = _mm256_loadu_pd(c0 + i), p1 = _mm256_loadu_pd(c1 + i),
-                  p2 = _mm256_loadu_pd(c2 + i), p3 = _mm256_loadu_pd(c3 + i),
-                  p4 = _mm256_loadu_pd(c4 + i), p5 = _mm256_loadu_pd(c5 + i);
-    __m256d v = _mm256_mul_pd(p0, d0);
-    v = _mm256_add_pd(v, _mm256_mul_pd(p1, d1));
-    v = _mm256_add_pd(v, _mm256_mul_pd(p2, d2));
-    v = _mm256_add_pd(v, _mm256_mul_pd(p3, d3));
-    v = _mm256_add_pd(v, _mm256_mul_pd(p4, d4));
-    v = _mm256_add_pd(v, _mm256_mul_pd(p5, d5));
-    __m256d z;
-    if (_mm256_movemask_pd(_mm256_cmp_pd(_mm256_and_pd(v, absmask), lim, _CMP_NLE_UQ))) {
-      double vv[4], zz[4];
-      _mm256_storeu_pd(vv, v);
-      for (int b = 0; b < 4; b++) {
-        double e = exp(vv[b]);
-        zz[b] = 1.0 / (1.0 + e);
-        if (e == R_PosInf) hit = 1;
-        logs += log1p(e);
-      }
-      z = _mm256_loadu_pd(zz);
-    } else {
-      __m256d e1 = _mm256_add_pd(one, exp_pd4(v));
-      z = _mm256_div_pd(one, e1);
-      prod = _mm256_mul_pd(prod, e1);
-      if (_mm256_movemask_pd(_mm256_cmp_pd(prod, big, _CMP_GT_OQ))) {
-        double pp[4];
-        _mm256_storeu_pd(pp, prod);
-        logs += log(pp[0]) + log(pp[1]) + log(pp[2]) + log(pp[3]);
-        prod = one;
-      }
-    }
-    s0 = _mm256_add_pd(s0, _mm256_mul_pd(p0, z));
-    s1 = _mm256_add_pd(s1, _mm256_mul_pd(p1, z));
-    s2 = _mm256_add_pd(s2, _mm256_mul_pd(p2, z));
-    s3 = _mm256_add_pd(s3, _mm256_mul_pd(p3, z));
-    s4 = _mm256_add_pd(s4, _mm256_mul_pd(p4, z));
-    s5 = _mm256_add_pd(s5, _mm256_mul_pd(p5, z));
-  }
-  double pp[4], ss[6], t4[4];
-  _mm256_storeu_pd(pp, prod);
-  __m256d sv[6] = {s0, s1, s2, s3, s4, s5};
-  for (int m = 0; m < 6; m++) {
-    _mm256_storeu_pd(t4, sv[m]);
-    ss[m] = (t4[0] + t4[1]) + (t4[2] + t4[3]);
-  }
-  double tail = 0.0;
-  for (; i < n; i++) { /* the last n mod 4 points */
-    double v = 0.0;
-    for (int m = 0; m < nm; m++) v += P[(size_t) m * n + i] * D[m];
-    double e = exp(v);
-    double z = 1.0 / (1.0 + e);
-    for (int m = 0; m < nm; m++) ss[m] += P[(size_t) m * n + i] * z;
-    if (e == R_PosInf) hit = 1;
-    tail += log1p(e);
-  }
-  for (int m = 0; m < nm; m++) s_next[m] = ss[m];
-  *inf = hit;
-  return logs + (log(pp[0]) + log(pp[1])) + (log(pp[2]) + log(pp[3])) + tail;
-}
-
-static int hm_cpu_avx2(void) {
-  static int has = -1;
-  if (has < 0) has = __builtin_cpu_supports("avx2") ? 1 : 0;
-  return has;
-}
-#endif /* HM_AVX2 */
-#endif /* SSE2 */
-
-/* The E-step pass of one start: `simd` caps the instruction set (0 scalar,
- * 1 SSE2, 2 AVX2; tests run all three), within what was compiled and what
- * the CPU has. */
-static double estep2_any(int simd, const double *P, const double *Pt, const double *zero, int n,
-                         int nm, const double *D, double *s_next, int *inf) {
-#if defined(__SSE2__) && !defined(HM_NO_SIMD)
-#ifdef HM_AVX2
-  if (simd >= 2 && hm_cpu_avx2()) return estep2_avx2(P, n, nm, zero, D, s_next, inf);
-#endif
-  if (simd >= 1) return estep2_sse2(P, n, nm, zero, D, s_next, inf);
-#endif
-  (void) P;
-  (void) zero;
-  (void) simd;
+/* The E-step pass of one start (inlined with nm = 3 and nm = 6 so the
+ * compiler unrolls and vectorises the inner loops). */
+static double estep2_any(const double *Pt, int n, int nm, const double *D, double *s_next,
+                         int *inf) {
   return nm == 3 ? estep2(Pt, n, 3, D, s_next, inf) : estep2(Pt, n, 6, D, s_next, inf);
 }
 
 /* R's overflow-safe alternative: sum_i log1pexp(-neg_i), i.e.
- * -sum(plogis(neg, log.p = TRUE)), long double as .colSums. */
+ * -sum(plogis(neg, log.p = TRUE)). */
 static double estep2_plogis(const double *Pt, int n, int nm, const double *D) {
-  long double acc = 0;
+  double acc = 0;
   for (int i = 0; i < n; i++) {
     const double *pi = Pt + (size_t) i * nm;
     double v = 0.0;
@@ -459,14 +191,12 @@ static double estep2_plogis(const double *Pt, int n, int nm, const double *D) {
   return (double) acc;
 }
 
-SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP logdet0_,
-               SEXP simd_) {
+SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP logdet0_) {
   if (!isReal(P_) || !isMatrix(P_)) error("'P' must be a double matrix");
   if (!isInteger(labels_) || !isMatrix(labels_)) error("'labels' must be an integer matrix");
   const int n = nrows(P_), nm = ncols(P_), S = ncols(labels_);
   const int k = asInteger(k_), max_iter = asInteger(max_iter_);
   const double tol = asReal(tol_), logdet0 = asReal(logdet0_);
-  const int simd = asInteger(simd_);
   int d;
   if (nm == 3) d = 1;
   else if (nm == 6) d = 2;
@@ -478,10 +208,10 @@ SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP l
   const double floor_logdet = logdet0 + log(1e-8); /* gmm_det_floor */
   const int two = (k == 2);
 
-  /* column sums of the monomials (colSums: long double) */
+  /* column sums of the monomials */
   double *psum = (double *) R_alloc(nm, sizeof(double));
   for (int m = 0; m < nm; m++) {
-    long double acc = 0;
+    double acc = 0;
     for (int i = 0; i < n; i++) acc += P[(size_t) m * n + i];
     psum[m] = (double) acc;
   }
@@ -492,8 +222,6 @@ SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP l
   double *Pt = (double *) R_alloc((size_t) n * nm, sizeof(double)); /* point-major P */
   for (int i = 0; i < n; i++)
     for (int m = 0; m < nm; m++) Pt[(size_t) i * nm + m] = P[(size_t) m * n + i];
-  double *zero = (double *) R_alloc(n, sizeof(double)); /* (see estep2_sse2) */
-  for (int i = 0; i < n; i++) zero[i] = 0.0;
   double *Z = two ? NULL : (double *) R_alloc((size_t) n * k * S, sizeof(double));
   double *S1 = (double *) R_alloc((size_t) nm * S, sizeof(double));
   double *Dc = (double *) R_alloc((size_t) nm * S, sizeof(double));
@@ -605,7 +333,7 @@ SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP l
         double lin = 0.0;
         for (int m = 0; m < nm; m++) lin += psum[m] * Ca[m];
         double *s1 = S1 + (size_t) nm * a;
-        double lse = estep2_any(simd, P, Pt, zero, n, nm, D, s1, inf_hit + q);
+        double lse = estep2_any(Pt, n, nm, D, s1, inf_hit + q);
         ll_new[q] = lin + lse;
         if (inf_hit[q]) overflow = 1;
       }
@@ -636,12 +364,12 @@ SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP l
             lj[i] = v + cj;
           }
         }
-        long double tot = 0;
+        double tot = 0;
         for (int i = 0; i < n; i++) {
           double top = Lw[i];
           for (int j = 1; j < k; j++)
             if (Lw[(size_t) j * n + i] > top) top = Lw[(size_t) j * n + i];
-          long double se = 0;
+          double se = 0;
           for (int j = 0; j < k; j++) se += exp(Lw[(size_t) j * n + i] - top);
           double lse = top + log((double) se);
           tot += lse;
@@ -720,7 +448,7 @@ SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP l
 /* Lloyd iterations from each of a list of k x d centre matrices, as
  * gmm_kmeans(): squared distances up to a per-point constant,
  * -2 y.c + |c|^2, nearest centre with ties to the first, centres updated to
- * their group's mean (long double, as colMeans), empty groups keep their
+ * their group's mean (double, as colMeans), empty groups keep their
  * centre; stop when the labels repeat or after `iters` passes. */
 SEXP hm_gmm_kmeans(SEXP Y_, SEXP centres_, SEXP iters_) {
   if (!isReal(Y_) || !isMatrix(Y_)) error("'Y' must be a double matrix");
@@ -736,14 +464,14 @@ SEXP hm_gmm_kmeans(SEXP Y_, SEXP centres_, SEXP iters_) {
     const int k = nrows(c0);
     double *cen = (double *) R_alloc((size_t) k * d, sizeof(double));
     double *cn2 = (double *) R_alloc(k, sizeof(double));
-    long double *acc = (long double *) R_alloc((size_t) k * d, sizeof(long double));
+    double *acc = (double *) R_alloc((size_t) k * d, sizeof(double));
     int *cnt = (int *) R_alloc(k, sizeof(int));
     for (int q = 0; q < k * d; q++) cen[q] = REAL(c0)[q];
     int *lab = lab_all + (size_t) s * n;
     for (int i = 0; i < n; i++) lab[i] = 0;
     for (int pass = 0; pass < iters; pass++) {
-      for (int g = 0; g < k; g++) { /* rowSums(centres^2): long double */
-        long double s2 = 0;
+      for (int g = 0; g < k; g++) { /* rowSums(centres^2): double */
+        double s2 = 0;
         for (int c = 0; c < d; c++) s2 += cen[(size_t) c * k + g] * cen[(size_t) c * k + g];
         cn2[g] = (double) s2;
       }

@@ -95,10 +95,10 @@ test_that("pairwise DTW paths are valid and handle n = 1 and L = 1", {
 })
 
 test_that("pairwise DTW rejects bad input with classed errors", {
-  expect_error(dtw_align_pair(matrix(1, 3, 2), matrix(1, 3, 3)), class = "handmotion_error_bad_argument")
-  expect_error(dtw_align_pair(matrix(c(1, NA), 2), matrix(1, 3)), class = "handmotion_error_bad_argument")
-  expect_error(dtw_align_pair("a", matrix(1, 3)), class = "handmotion_error_bad_argument")
-  expect_error(dtw_align_pair(matrix(1, 3), matrix(1, 3), window = -1), class = "handmotion_error_bad_argument")
+  expect_error(dtw_align_pair(matrix(1, 3, 2), matrix(1, 3, 3)), class = "handmotion_error_bad_input")
+  expect_error(dtw_align_pair(matrix(c(1, NA), 2), matrix(1, 3)), class = "handmotion_error_bad_input")
+  expect_error(dtw_align_pair("a", matrix(1, 3)), class = "handmotion_error_bad_input")
+  expect_error(dtw_align_pair(matrix(1, 3), matrix(1, 3), window = -1), class = "handmotion_error_bad_input")
   expect_error(dtw_align_pair(matrix(1, 3), matrix(1, 3), engine = "slow"))
 })
 
@@ -236,7 +236,7 @@ test_that("failures fall back to linear warping with a recorded reason", {
   expect_match(al$fallback_reason, "non-finite")
   expect_equal(unname(al$warps["rec01", ]), seq(1, pl$n[1], length.out = al$target_length))
   # forced failure through the internal option, on clean data
-  withr::local_options(handmotion.align_force_failure = TRUE)
+  local_failing_alignment()
   forced <- align_recordings(pl$recs)
   expect_identical(forced$method, "linear")
   expect_match(forced$fallback_reason, "forced")
@@ -295,14 +295,14 @@ test_that("align_recordings accepts grasps objects and rejects bad input", {
   g <- grasps(pl$recs)
   al <- align_recordings(g)
   expect_identical(al$ids, names(pl$recs))
-  expect_error(align_recordings(list()), class = "handmotion_error_bad_argument")
+  expect_error(align_recordings(list()), class = "handmotion_error_bad_input")
   expect_error(align_recordings(list(matrix(1, 3, 2), matrix(1, 3, 3))),
-               class = "handmotion_error_bad_argument")
-  expect_error(align_recordings(pl$recs, target_length = 2.5), class = "handmotion_error_bad_argument")
-  expect_error(align_recordings(pl$recs, max_iter = -1), class = "handmotion_error_bad_argument")
-  expect_error(align_recordings(pl$recs, max_stall = 0), class = "handmotion_error_bad_argument")
+               class = "handmotion_error_bad_input")
+  expect_error(align_recordings(pl$recs, target_length = 2.5), class = "handmotion_error_bad_input")
+  expect_error(align_recordings(pl$recs, max_iter = -1), class = "handmotion_error_bad_input")
+  expect_error(align_recordings(pl$recs, max_stall = 0), class = "handmotion_error_bad_input")
   expect_error(align_recordings(list(a = matrix(numeric(0), 0, 3), b = matrix(1, 2, 3))),
-               class = "handmotion_error_bad_argument")
+               class = "handmotion_error_bad_input")
 })
 
 test_that("print shows method, iterations and drops", {
@@ -312,7 +312,7 @@ test_that("print shows method, iterations and drops", {
   al <- align_recordings(recs, max_iter = 3, features = "raw")
   expect_output(print(al), "6 recordings x 3 DoFs")
   expect_output(print(al), "dropped 1 degenerate warp")
-  withr::local_options(handmotion.align_force_failure = TRUE)
+  local_failing_alignment()
   expect_output(print(align_recordings(recs)), "LINEAR warping \\(fallback: alignment failure forced")
 })
 
@@ -351,7 +351,7 @@ test_that("autoplot draws the frame-count histogram and one path per recording",
   expect_equal(range(p$data[[1]]$x), c(1, al$target_length))
   h <- ggplot2::ggplot_build(autoplot(al, type = "histogram"))
   expect_equal(sum(h$data[[1]]$count), 7)
-  withr::local_options(handmotion.align_force_failure = TRUE)
+  local_failing_alignment()
   lin <- ggplot2::ggplot_build(autoplot(align_recordings(pl$recs), type = "paths"))
   d <- lin$data[[1]]
   # linear fallback: straight paths

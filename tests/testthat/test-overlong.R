@@ -42,11 +42,11 @@ test_that("find_overlong keeps names and handles tiny inputs", {
 })
 
 test_that("bad input gives classed errors", {
-  expect_error(find_overlong(c(40, NA, 42)), class = "handmotion_error_bad_argument")
-  expect_error(find_overlong(character(0)), class = "handmotion_error_bad_argument")
-  expect_error(find_overlong(1:5, rule = list(iqr_mult = 3)), class = "handmotion_error_bad_argument")
-  expect_error(overlong_rule(iqr_mult = -1), class = "handmotion_error_bad_argument")
-  expect_error(overlong_rule(median_mult = c(1, 2)), class = "handmotion_error_bad_argument")
+  expect_error(find_overlong(c(40, NA, 42)), class = "handmotion_error_bad_input")
+  expect_error(find_overlong(character(0)), class = "handmotion_error_bad_input")
+  expect_error(find_overlong(1:5, rule = list(iqr_mult = 3)), class = "handmotion_error_bad_input")
+  expect_error(overlong_rule(iqr_mult = -1), class = "handmotion_error_bad_input")
+  expect_error(overlong_rule(median_mult = c(1, 2)), class = "handmotion_error_bad_input")
 })
 
 test_that("overlong_rule prints its formula", {

@@ -25,40 +25,56 @@ class HandmotionError(Exception):
 
 
 class BadInputError(HandmotionError, ValueError):
-    """A bad argument (R class ``handmotion_error_bad_input``) or bad Python input."""
+    """A bad argument or recording (R family ``handmotion_error_bad_input``), or bad Python input."""
 
 
-class BadRecordingError(HandmotionError, ValueError):
+class BadRecordingError(BadInputError):
     """A recording that is not a finite numeric frames x DoF matrix."""
 
 
-class UnknownGraspError(HandmotionError, ValueError):
+class UnknownGraspError(BadInputError):
     """A grasp type name or id that is not one of the 33 Feix types."""
 
 
 class BadFileError(HandmotionError, OSError):
-    """A file that cannot be read in its format (R class ``handmotion_error_bad_file``)."""
+    """A file that cannot be read in its format (R family ``handmotion_error_bad_file``)."""
 
 
 class BadSkeletonError(HandmotionError, ValueError):
-    """An ``.xmlskel`` skeleton that is malformed."""
+    """An ``.xmlskel`` skeleton that is malformed or does not fit the data.
+
+    Raised from a file it is also a :class:`BadFileError` (see :func:`from_r_condition`).
+    """
+
+
+class FitFailedError(HandmotionError, RuntimeError):
+    """Data that cannot be fitted (R family ``handmotion_error_fit_failed``)."""
 
 
 class RError(HandmotionError):
     """Any other error raised in R."""
 
 
+# Specific R classes first, then the three families (R's documented hierarchy,
+# ?handmotion_errors): the first class of the R condition found here wins.
 _BY_CLASS = {
-    "handmotion_error_bad_input": BadInputError,
     "handmotion_error_bad_recording": BadRecordingError,
     "handmotion_error_unknown_grasp": UnknownGraspError,
-    "handmotion_error_bad_file": BadFileError,
     "handmotion_error_bad_skeleton": BadSkeletonError,
+    "handmotion_error_bad_input": BadInputError,
+    "handmotion_error_bad_file": BadFileError,
+    "handmotion_error_fit_failed": FitFailedError,
 }
+
+
+class _SkeletonFileError(BadSkeletonError, BadFileError):
+    """A malformed ``.xmlskel`` file: both a skeleton and a file error."""
 
 
 def from_r_condition(message, r_class):
     """Build the Python exception that matches an R condition's class vector."""
+    if "handmotion_error_bad_skeleton" in r_class and "handmotion_error_bad_file" in r_class:
+        return _SkeletonFileError(message, r_class)
     for cls in r_class:
         if cls in _BY_CLASS:
             return _BY_CLASS[cls](message, r_class)

@@ -1,0 +1,133 @@
+# Argument checkers: the one place where the package decides what a valid
+# count, number, choice, seed or numeric matrix is. Each raises a
+# `handmotion_error_bad_input` (see ?handmotion_errors) naming the argument and
+# the user-facing call, and returns the value in the form the caller uses
+# (integers as integer, matrices as double), so call sites read
+#   k <- check_whole(k, "k", max = p, call = call)
+
+# A single whole number in [min, max]; `allow_null` lets NULL through.
+check_whole <- function(x, arg, min = 1, max = Inf, allow_null = FALSE,
+                        call = rlang::caller_env()) {
+  if (is.null(x) && allow_null) return(NULL)
+  ok <- is.numeric(x) && length(x) == 1L && is.finite(x) && x == round(x) && x >= min && x <= max
+  if (!ok) {
+    range <- if (is.finite(max)) sprintf("from %s to %s", format(min), format(max))
+             else if (min == 1) "positive" else if (min == 0) "non-negative" else sprintf("of at least %s", format(min))
+    what <- if (is.finite(max)) paste("a whole number", range) else paste("one", range, "whole number")
+    hm_abort("{.arg {arg}} must be {what}, not {describe_value(x)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  as.integer(x)
+}
+
+# A single finite number in [min, max] (or (min, max] with `min_open`).
+check_number <- function(x, arg, min = -Inf, max = Inf, min_open = FALSE, allow_null = FALSE,
+                         call = rlang::caller_env()) {
+  if (is.null(x) && allow_null) return(NULL)
+  ok <- is.numeric(x) && length(x) == 1L && is.finite(x) && x <= max &&
+    (if (min_open) x > min else x >= min)
+  if (!ok) {
+    bound <- if (min_open && min == 0) "a positive number"
+             else if (min == 0) "a non-negative number"
+             else if (is.finite(min) || is.finite(max)) sprintf("a number %s %s%s", if (min_open) ">" else ">=",
+                                                                format(min), if (is.finite(max)) sprintf(" and <= %s", format(max)) else "")
+             else "one finite number"
+    hm_abort("{.arg {arg}} must be {bound}, not {describe_value(x)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  as.double(x)
+}
+
+# TRUE or FALSE.
+check_flag <- function(x, arg, call = rlang::caller_env()) {
+  if (!is.logical(x) || length(x) != 1L || is.na(x)) {
+    hm_abort("{.arg {arg}} must be {.code TRUE} or {.code FALSE}, not {describe_value(x)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  x
+}
+
+# One non-missing string.
+check_string <- function(x, arg, call = rlang::caller_env()) {
+  if (!is.character(x) || length(x) != 1L || is.na(x)) {
+    hm_abort("{.arg {arg}} must be one string, not {describe_value(x)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  x
+}
+
+# One of `choices`. The whole `choices` vector (an argument left at its
+# default, as with match.arg()) means the first choice. A misspelt choice gets
+# a classed error with the valid values and the closest one.
+check_choice <- function(x, choices, arg, call = rlang::caller_env()) {
+  if (identical(x, choices)) return(choices[1])
+  if (is.character(x) && length(x) == 1L && !is.na(x) && x %in% choices) return(x)
+  hint <- NULL
+  if (is.character(x) && length(x) == 1L && !is.na(x)) {
+    d <- utils::adist(x, choices, ignore.case = TRUE)[1, ]
+    if (min(d) <= max(2, nchar(x) %/% 3)) hint <- c(i = "Did you mean {.val {choices[which.min(d)]}}?")
+  }
+  hm_abort(c("{.arg {arg}} must be one of {.or {.val {choices}}}, not {describe_value(x)}.", hint),
+           "bad_input", argument = arg, call = call)
+}
+
+# A seed: NULL (use the current RNG stream) or one finite whole number.
+check_seed <- function(seed, arg = "seed", call = rlang::caller_env()) {
+  if (is.null(seed)) return(NULL)
+  if (!is.numeric(seed) || length(seed) != 1L || !is.finite(seed) || seed != round(seed) ||
+      abs(seed) > .Machine$integer.max) {
+    hm_abort("{.arg {arg}} must be {.code NULL} or one whole number, not {describe_value(seed)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  as.integer(seed)
+}
+
+# A numeric matrix (a data frame or, with `vector`, a numeric vector taken as
+# one column or one row), with at least `min_rows` x `min_cols` cells and, with
+# `finite`, only finite values; returned as a double matrix. `what` says what
+# the rows and columns are, for the message; a non-finite cell is named.
+as_numeric_matrix <- function(x, arg, what = "", finite = TRUE, vector = c("column", "row", "none"),
+                              min_rows = 1L, min_cols = 1L, ncol = NULL,
+                              call = rlang::caller_env()) {
+  vector <- vector[1]
+  if (inherits(x, "fdata")) x <- x$data
+  if (is.data.frame(x)) x <- as.matrix(x)
+  if (is.numeric(x) && is.null(dim(x)) && vector != "none") {
+    x <- if (vector == "column") matrix(x, ncol = 1L) else matrix(x, nrow = 1L)
+  }
+  if (!is.matrix(x) || !(is.numeric(x) || is.logical(x) && all(is.na(x)))) {
+    hm_abort("{.arg {arg}} must be a numeric matrix{what}, not {describe_value(x)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  if (nrow(x) < min_rows || ncol(x) < min_cols) {
+    hm_abort("{.arg {arg}} must have at least {min_rows} row{?s} and {min_cols} column{?s}{what}, not {nrow(x)} x {ncol(x)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  if (!is.null(ncol) && ncol(x) != ncol) {
+    hm_abort("{.arg {arg}} must have {ncol} column{?s}{what}, not {ncol(x)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  if (finite) {
+    bad <- which(!is.finite(x), arr.ind = TRUE)
+    if (nrow(bad) > 0L) {
+      hm_abort(c("{.arg {arg}} has {nrow(bad)} non-finite value{?s}.",
+                 x = "First at row {bad[1, 1]}, column {bad[1, 2]}."),
+               "bad_input", argument = arg, recording = bad[1, 1], call = call)
+    }
+  }
+  storage.mode(x) <- "double"
+  x
+}
+
+# A short description of an offending value for messages: the value itself
+# when it is one short atom, otherwise its type and length.
+describe_value <- function(x) {
+  if (is.null(x)) return("NULL")
+  if (is.atomic(x) && length(x) == 1L && is.null(dim(x))) {
+    v <- if (is.character(x) && !is.na(x)) sprintf("\"%s\"", x) else format(x)
+    if (nchar(v) <= 40) return(v)
+  }
+  if (is.atomic(x) && is.null(dim(x))) return(sprintf("a %s vector of length %d", typeof(x), length(x)))
+  if (is.matrix(x)) return(sprintf("a %d x %d %s matrix", nrow(x), ncol(x), typeof(x)))
+  paste0("an object of class <", paste(class(x), collapse = "/"), ">")
+}
