@@ -240,13 +240,40 @@ fpca_finish <- function(raw, Yc, cur, mean, ncomp, delta, weights) {
       "component%s %s: zero variance (the centred curves have rank %d), returned as zero",
       if (sum(!live) > 1) "s" else "", paste(which(!live), collapse = ", "), sum(nonzero)))
   }
-  colnames(comps) <- colnames(scores) <- names(var_explained) <- paste0("FPC", seq_len(ncomp))
-  structure(list(
-    mean = mean, components = comps, scores = scores,
-    eigenvalues = s2[nonzero] * delta^2 / n, var_explained = var_explained,
-    argvals = cur$argvals, weights = weights, delta = delta, rangeval = cur$rangeval,
-    n = n, ncomp = ncomp, engine = NA_character_, notes = notes),
-    class = "fpca_fit")
+  new_fpca_fit(mean = mean, components = comps, scores = scores,
+               eigenvalues = s2[nonzero] * delta^2 / n, var_explained = var_explained,
+               argvals = cur$argvals, weights = weights, delta = delta, rangeval = cur$rangeval,
+               engine = NA_character_, notes = notes)
+}
+
+# The one constructor of class "fpca_fit": every producer (fpca_fit()'s
+# engines, the constant stand-in of a model) goes through it, so every fit
+# has every field print(), predict() and the model code read.
+new_fpca_fit <- function(mean, components, scores, eigenvalues, var_explained, argvals, weights,
+                         delta, rangeval, engine, notes = character(), constant = FALSE) {
+  components <- as.matrix(components)
+  ncomp <- ncol(components)
+  labels <- paste0("FPC", seq_len(ncomp))
+  scores <- as.matrix(scores)
+  colnames(components) <- colnames(scores) <- labels
+  var_explained <- stats::setNames(as.numeric(var_explained), labels)
+  validate_fpca_fit(structure(list(
+    mean = as.numeric(mean), components = components, scores = scores,
+    eigenvalues = eigenvalues, var_explained = var_explained,
+    argvals = argvals, weights = weights, delta = delta, rangeval = rangeval,
+    n = nrow(scores), ncomp = ncomp, engine = engine, notes = notes, constant = constant),
+    class = "fpca_fit"))
+}
+
+# Shapes that fit together: L grid points, ncomp components, n curves.
+validate_fpca_fit <- function(x) {
+  L <- length(x$mean)
+  stopifnot(
+    nrow(x$components) == L, length(x$argvals) == L, length(x$weights) == L,
+    ncol(x$scores) == x$ncomp, length(x$var_explained) == x$ncomp,
+    is.numeric(x$delta), length(x$delta) == 1L, length(x$rangeval) == 2L
+  )
+  x
 }
 
 # +1 or -1: makes the component's integral positive, or, when the integral is

@@ -211,7 +211,7 @@ prepare_alignment <- function(x, settings, engines, call) {
   recs <- recs[keep]
   L <- max(2L, as.integer(round(mean(meta$n_frames[keep]))))
   if (identical(settings$warping, "linear")) {
-    aln <- linear_alignment(recs, L, "requested")
+    aln <- align_linear_fallback(recs, L, engines$align, reason = "requested")
   } else {
     aln <- tryCatch(
       align_recordings(recs, target_length = L, engine = engines$align, max_stall = settings$max_stall),
@@ -219,7 +219,7 @@ prepare_alignment <- function(x, settings, engines, call) {
     )
     if (inherits(aln, "error")) {
       reason <- paste("alignment failed:", cli::ansi_strip(conditionMessage(aln)))
-      aln <- linear_alignment(recs, L, reason)
+      aln <- align_linear_fallback(recs, L, engines$align, reason = reason)
     }
   }
   if (identical(aln$method, "linear") && !identical(settings$warping, "linear")) {
@@ -239,35 +239,6 @@ prepare_alignment <- function(x, settings, engines, call) {
        n_input = length(x$recordings))
 }
 
-# Linear warps for every recording: the thesis' fallback when DTW failed.
-linear_alignment <- function(recs, L, reason) {
-  ids <- names(recs)
-  p <- ncol(recs[[1]])
-  warps <- matrix(0, length(recs), L, dimnames = list(ids, NULL))
-  warped <- array(0, c(length(recs), L, p), dimnames = list(ids, NULL, colnames(recs[[1]])))
-  for (i in seq_along(recs)) {
-    warps[i, ] <- seq(1, nrow(recs[[i]]), length.out = L)
-    warped[i, , ] <- interpolate_rows(recs[[i]], warps[i, ])
-  }
-  structure(list(warped = warped, warps = warps, template = colMeans(warped), target_length = L,
-                 ids = ids, n_frames = vapply(recs, nrow, integer(1)), method = "linear",
-                 fallback_reason = reason,
-                 degenerate = data.frame(id = character(), stall = numeric()),
-                 iterations = 0L, converged = FALSE, engine = "linear"),
-            class = "grasp_alignment")
-}
-
-# Evaluate a frames x DoF matrix at fractional frame times by linear
-# interpolation between neighbouring frames.
-interpolate_rows <- function(x, times) {
-  n <- nrow(x)
-  times <- pmin(pmax(times, 1), n)
-  i <- pmin(floor(times), n - 1L)
-  if (n == 1L) return(x[rep(1L, length(times)), , drop = FALSE])
-  f <- times - i
-  x[i, , drop = FALSE] * (1 - f) + x[i + 1L, , drop = FALSE] * f
-}
-
 # FPCA of one set of curves, or a zero-component stand-in when the curves do
 # not vary (a constant DoF or identical warps), so later steps never divide
 # by a zero variance.
@@ -278,14 +249,13 @@ fit_fpca_or_constant <- function(Y, argvals, ncomp, engine) {
   v <- if (n > 1L) sum(colSums((Y - rep(colMeans(Y), each = n))^2)) / (n - 1L) else NA_real_
   scale <- max(1, mean(Y^2))
   if (!is.finite(v) || v <= 1e-12 * scale) {
-    L <- ncol(Y)
-    comps <- matrix(0, L, ncomp)
-    return(structure(list(mean = colMeans(Y), components = comps,
-                          scores = matrix(0, nrow(Y), ncomp), eigenvalues = rep(0, ncomp),
-                          var_explained = rep(NA_real_, ncomp), argvals = argvals,
-                          weights = trapezoid_weights(argvals), engine = engine,
-                          notes = "constant", constant = TRUE),
-                     class = "fpca_fit"))
+    return(new_fpca_fit(mean = colMeans(Y), components = matrix(0, ncol(Y), ncomp),
+                        scores = matrix(0, n, ncomp), eigenvalues = rep(0, ncomp),
+                        var_explained = rep(NA_real_, ncomp), argvals = argvals,
+                        weights = trapezoid_weights(argvals),
+                        delta = fpca_delta(argvals, range(argvals)), rangeval = range(argvals),
+                        engine = engine, notes = "constant: the curves do not vary",
+                        constant = TRUE))
   }
   fit <- fpca_fit(Y, argvals = argvals, ncomp = ncomp, engine = engine)
   fit$constant <- FALSE

@@ -205,3 +205,37 @@ test_that("the mixtures run EM up to the model's cap before falling back", {
   expect_gt(fit$iterations, 500)
   expect_true(gmm_fit(X)$fallback) # gmm_fit()'s own default cap of 500 falls back
 })
+
+test_that("a model on linear warps can be drawn, whether asked for or fallen back to", {
+  # regression: model fitting built a second, thinner linear-alignment object
+  # whose missing fields made autoplot() of it fail ("invalid 'times' argument")
+  g <- planted_grasps(n = 30, p = 3, seed = 3)
+  aln <- frame_pca_alignment(g, rlang::current_env(), warping = "linear")
+  expect_s3_class(ggplot2::ggplot_build(autoplot(aln)), "ggplot_built")
+  asked <- fit_grasp_model(g, warping = "linear", seed = 1)
+  expect_identical(asked$warping$method, "linear")
+  for (type in c("fpca", "mixture", "warps")) {
+    expect_s3_class(ggplot2::ggplot_build(autoplot(asked, type = type)), "ggplot_built")
+  }
+  local_failing_alignment()
+  fell <- fit_grasp_model(g, seed = 1)
+  expect_identical(fell$warping$method, "linear")
+  expect_match(fell$fallbacks$reason[fell$fallbacks$step == "warping"], "linear warping")
+  expect_s3_class(ggplot2::ggplot_build(autoplot(fell, type = "warps")), "ggplot_built")
+  expect_equal(fell$data$warps, asked$data$warps)
+})
+
+test_that("the FPCA of a constant DoF prints and has every field of an fpca_fit", {
+  # regression: the constant stand-in was built by hand without n, ncomp and
+  # delta, so printing it failed with "invalid format '%d'"
+  g <- planted_grasps(n = 30, p = 3, seed = 4)
+  g$recordings <- lapply(g$recordings, function(r) { r[, 2] <- 7; r })
+  m <- fit_grasp_model(g, seed = 1)
+  f <- m$fpca[[2]]
+  expect_true(f$constant)
+  expect_identical(f$n, m$n_used)
+  expect_identical(f$ncomp, 2L)
+  expect_output(print(f), "2 components")
+  expect_output(print(m$fpca[[1]]), "variance explained")
+  expect_setequal(names(f), names(m$fpca[[1]]))
+})
