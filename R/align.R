@@ -39,7 +39,7 @@
 #' @export
 dtw_align_pair <- function(x, template, engine = c("fast", "reference"), window = NULL) {
   call <- rlang::caller_env()
-  engine <- rlang::arg_match(engine, error_call = call)
+  engine <- check_choice(engine, arg = "engine", call = call)
   x <- as_numeric_matrix(x, "x", " (frames x DoFs)", call = call)
   template <- as_numeric_matrix(template, "template", " (frames x DoFs)", call = call)
   if (ncol(x) != ncol(template)) {
@@ -153,8 +153,8 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
                              max_iter = 10, tol = 1e-3, max_stall = 0.25, window = NULL,
                              features = c("shape", "raw")) {
   call <- rlang::caller_env()
-  engine <- rlang::arg_match(engine, error_call = call)
-  features <- rlang::arg_match(features, error_call = call)
+  engine <- check_choice(engine, arg = "engine", call = call)
+  features <- check_choice(features, arg = "features", call = call)
   if (inherits(recordings, "grasps")) recordings <- recordings$recordings
   recs <- align_check_recordings(recordings, call)
   ids <- names(recs)

@@ -56,10 +56,15 @@ check_string <- function(x, arg, call = rlang::caller_env()) {
   x
 }
 
-# One of `choices`. The whole `choices` vector (an argument left at its
-# default, as with match.arg()) means the first choice. A misspelt choice gets
-# a classed error with the valid values and the closest one.
-check_choice <- function(x, choices, arg, call = rlang::caller_env()) {
+# One of `choices` (by default the default of argument `arg` of the calling
+# function, as match.arg() does). The whole `choices` vector (an argument
+# left at its default) means the first choice. A misspelt choice gets a
+# classed error with the valid values and the closest one.
+check_choice <- function(x, choices = NULL, arg, call = rlang::caller_env()) {
+  if (is.null(choices)) {
+    caller <- sys.function(sys.parent())
+    choices <- eval(formals(caller)[[arg]], envir = environment(caller))
+  }
   if (identical(x, choices)) return(choices[1])
   if (is.character(x) && length(x) == 1L && !is.na(x) && x %in% choices) return(x)
   hint <- NULL

@@ -74,7 +74,7 @@ resolve_method <- function(models, method, defaulted, call = rlang::caller_env()
              "bad_input", argument = "models", call = call)
   }
   if (defaulted) return(if (is.na(implied)) "fpca" else implied)
-  method <- rlang::arg_match0(method, c("fpca", "last_frame"), arg_nm = "method", error_call = call)
+  method <- check_choice(method, c("fpca", "last_frame"), arg = "method", call = call)
   if (!is.na(implied) && method != implied) {
     hm_abort("{.arg method} is {.val {method}} but {.arg models} is a {.cls {class(models)[1]}} ({.val {implied}}) fit.",
              "bad_input", argument = "method", call = call)

@@ -309,7 +309,7 @@ as.data.frame.grasp_confusion <- function(x, row.names = NULL, optional = FALSE,
 #' cm <- grasp_confusion(c("Tripod", "Tripod", "Ring"), c("Tripod", "Ring", "Ring"))
 #' ggplot2::autoplot(cm)
 autoplot.grasp_confusion <- function(object, type = "heatmap", normalise = FALSE, ...) {
-  type <- rlang::arg_match0(type, "heatmap")
+  type <- check_choice(type, "heatmap", arg = "type", call = rlang::current_env())
   d <- as.data.frame(object)
   lab <- confusion_labels(object$levels)
   d$truth <- factor(lab[as.integer(d$truth)], levels = lab)

@@ -108,7 +108,7 @@
 graspdb14_to_hust <- function(x, dip = c("inferred", "pip", "zero")) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  dip <- rlang::arg_match(dip, error_call = call)
+  dip <- check_choice(dip, arg = "dip", call = call)
   sensors <- handmotion::cyberglove_sensors
   missing <- setdiff(sensors$name[!is.na(sensors$hust_dof)], x$dofs)
   if (length(missing)) {

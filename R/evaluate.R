@@ -64,7 +64,7 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame"), fit_args = list()
                           folds = NULL, in_sample = TRUE, seed = 1) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  method <- rlang::arg_match(method, error_call = call)
+  method <- check_choice(method, arg = "method", call = call)
   # future.seed switches the session to L'Ecuyer-CMRG; give the caller back
   # the RNG kind and stream they had.
   old_rng <- save_rng()

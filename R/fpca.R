@@ -81,7 +81,7 @@
 #' head(fit$scores)
 fpca_fit <- function(Y, argvals = NULL, ncomp = 2, engine = c("fast", "reference")) {
   call <- rlang::caller_env()
-  engine <- rlang::arg_match(engine)
+  engine <- check_choice(engine, arg = "engine", call = rlang::current_env())
   cur <- fpca_curves(Y, argvals, call = call)
   # (more components than grid points are padded with zero components; the
   # bound only refuses absurd requests)

@@ -134,7 +134,7 @@ fit_frame_pca_model <- function(x, d = 3, k = 2, align_signs = FALSE, nbasis = 1
 
 frame_pca_alignment <- function(x, call, engine = "fast", overlong = overlong_rule(),
                                 warping = c("dtw", "linear"), max_stall = 0.25) {
-  warping <- rlang::arg_match(warping, error_call = call)
+  warping <- check_choice(warping, arg = "warping", call = call)
   settings <- list(overlong = overlong, warping = warping, max_stall = max_stall)
   prepare_alignment(x, settings, resolve_engines(engine, call), call)$alignment
 }
@@ -269,7 +269,7 @@ print.frame_pca_model <- function(x, ...) {
 #' ggplot2::autoplot(fit_frame_pca_model(g, align_signs = TRUE))
 autoplot.frame_pca_model <- function(object, type = c("weights", "loadings"), component = 1,
                                      max_recordings = 30, ...) {
-  type <- rlang::arg_match(type)
+  type <- check_choice(type, arg = "type", call = rlang::current_env())
   if (!is.numeric(component) || length(component) != 1L || !component %in% seq_len(object$d)) {
     hm_abort("{.arg component} must be one of 1 to {object$d}.", "bad_input", argument = "component")
   }

@@ -86,7 +86,7 @@ gmm_det_floor <- 1e-8
 gmm_fit <- function(X, k = 2, engine = c("fast", "reference"), max_iter = 500, tol = 1e-8,
                     seed = NULL) {
   call <- rlang::caller_env()
-  engine <- rlang::arg_match(engine)
+  engine <- check_choice(engine, arg = "engine", call = rlang::current_env())
   X <- as_numeric_matrix(X, "X", " (one observation per row)", call = call)
   k <- check_whole(k, "k", max = max(1L, nrow(X)), call = call)
   max_iter <- check_whole(max_iter, "max_iter", call = call)

@@ -89,7 +89,7 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = 2, warp_ncomp = 1, k = 2,
   check_whole(warp_ncomp, "warp_ncomp", max = 50, call = call)
   check_whole(k, "k", max = 50, call = call)
   engines <- resolve_engines(engine, call)
-  warping <- rlang::arg_match(warping, error_call = call)
+  warping <- check_choice(warping, arg = "warping", call = call)
   x <- select_one_type(x, grasp, call)
   settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
                    k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,

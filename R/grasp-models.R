@@ -54,7 +54,14 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1) {
   parts <- lapply(types, function(g) x[!is.na(x$meta$grasp) & x$meta$grasp == g])
   names(parts) <- types
   args <- list(...)
-  future_seed <- if (is.null(seed)) TRUE else as.integer(seed)
+  unknown <- setdiff(names(args) %||% rep("", length(args)), setdiff(names(formals(fit_grasp_model)), c("x", "grasp", "seed")))
+  if (length(unknown)) {
+    hm_abort(c("{.fn fit_grasp_models} passes {.arg ...} to {.fn fit_grasp_model}, which has no argument{?s} {.val {unknown}}.",
+               i = "Arguments must be named; see {.help handmotion::fit_grasp_model}."),
+             "bad_input", argument = "...", call = call)
+  }
+  seed <- check_seed(seed, call = call)
+  future_seed <- if (is.null(seed)) TRUE else seed
   p <- progressr::progressor(along = types)
   # future's seeding switches the session to L'Ecuyer-CMRG; give the caller back their RNG
   old_rng <- save_rng()

@@ -71,7 +71,7 @@ fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth =
                          filter_size = NULL, method = c("pca", "direct"), ridge = 1e-3,
                          eps = 1e-6, skeleton = hand_skeleton(), ...) {
   call <- rlang::caller_env()
-  method <- match.arg(method)
+  method <- check_choice(method, arg = "method", call = rlang::current_env())
   check_grasps(reference, "reference", call = call)
   all_markers <- markers_from_angles(reference, skeleton = skeleton, ...)
   ref_all <- do.call(rbind, all_markers)
@@ -198,7 +198,7 @@ global_linear_fit <- function(x, y, ridge) {
 # Reference markers are stored transposed (d x N) so that a neighbour set is
 # a column subset and the query recycles down its columns.
 lwr_predict <- function(ref_x, ref_y, query, k, ridge, eps, engine = c("c", "r")) {
-  engine <- match.arg(engine)
+  engine <- check_choice(engine, arg = "engine", call = rlang::current_env())
   if (engine == "r") return(lwr_predict_r(ref_x, ref_y, query, k, ridge, eps))
   storage.mode(ref_x) <- storage.mode(ref_y) <- storage.mode(query) <- "double"
   .Call(hm_lwr_predict, ref_x, ref_y, query, as.integer(min(k, nrow(ref_x))), as.double(ridge),
@@ -535,7 +535,7 @@ unit_factor <- function(unit) if (identical(unit, "rad")) 180 / pi else 1
 #' handover_error(g, noisy, by = "recording")
 handover_error <- function(truth, recon, by = c("overall", "recording", "frame", "dof")) {
   call <- rlang::caller_env()
-  by <- match.arg(by)
+  by <- check_choice(by, arg = "by", call = rlang::current_env())
   check_grasps(truth, "truth", call = call)
   check_grasps(recon, "recon", call = call)
   if (!identical(truth$meta$id, recon$meta$id) || !identical(truth$meta$n_frames, recon$meta$n_frames) ||

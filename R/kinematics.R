@@ -223,7 +223,7 @@ forward_kinematics <- function(x, skeleton = hand_skeleton(), mapping = NULL,
                                mode = c("plain", "full", "fixed-root"),
                                deactivate = NULL, frames = NULL, unit = NULL) {
   call <- rlang::caller_env()
-  mode <- rlang::arg_match(mode)
+  mode <- check_choice(mode, arg = "mode", call = rlang::current_env())
   check_skeleton(skeleton, call = call)
   input <- fk_input(x, unit, call)
   plan <- fk_plan(input$dofs, skeleton, mapping, mode, deactivate, call)

@@ -152,7 +152,7 @@ cumulative_variance <- function(fit) {
 #' table(predict(fit, g), g$meta$grasp, dnn = c("predicted", "truth"))
 predict.last_frame_pca <- function(object, newdata, type = c("class", "distance"), ...) {
   call <- rlang::caller_env()
-  type <- rlang::arg_match(type)
+  type <- check_choice(type, arg = "type", call = rlang::current_env())
   d <- last_frame_distances(object, newdata, call = call)
   if (type == "distance") return(d)
   nearest_type(d)

@@ -228,7 +228,7 @@ stack_markers <- function(x, skeleton, call = rlang::caller_env(), ...) {
 rank_markers <- function(reference, weighting = c("eigenvalue", "equal"),
                          n_components = NULL, skeleton = hand_skeleton(), ...) {
   call <- rlang::caller_env()
-  weighting <- match.arg(weighting)
+  weighting <- check_choice(weighting, arg = "weighting", call = rlang::current_env())
   m <- stack_markers(reference, skeleton, call = call, ...)
   markers <- marker_names_of(m, call = call)
   keep <- markers %in% hand_marker_set()$marker[hand_marker_set()$segment == "hand"]

@@ -20,7 +20,7 @@
 #' @method autoplot grasp_alignment
 #' @export
 autoplot.grasp_alignment <- function(object, type = c("both", "histogram", "paths"), ...) {
-  type <- rlang::arg_match(type)
+  type <- check_choice(type, arg = "type", call = rlang::current_env())
   hist_df <- alignment_length_data(object)
   path_df <- alignment_path_data(object)
   colours <- c(kept = "grey35", degenerate = "red")

@@ -36,7 +36,7 @@
 #' ggplot2::autoplot(m, type = "mixture", dof = 1:4)
 autoplot.grasp_model <- function(object, type = c("fpca", "projection", "mixture", "warps"),
                                  dof = NULL, recording = 1, newdata = NULL, max_recordings = 100, ...) {
-  type <- rlang::arg_match(type)
+  type <- check_choice(type, arg = "type", call = rlang::current_env())
   dofs <- plot_model_dofs(object, dof)
   switch(type,
     fpca = plot_model_fpca(object, dofs, max_recordings),

@@ -79,8 +79,8 @@ graspdb14_nominal_rate <- 60
 read_graspdb14 <- function(path, recursive = FALSE, pattern = "\\.txt$", datatype = NULL,
                            truncated = c("error", "drop")) {
   call <- rlang::caller_env()
-  truncated <- rlang::arg_match(truncated, error_call = call)
-  if (!is.null(datatype)) datatype <- rlang::arg_match(datatype, c("rad", "raw"), error_call = call)
+  truncated <- check_choice(truncated, arg = "truncated", call = call)
+  if (!is.null(datatype)) datatype <- check_choice(datatype, c("rad", "raw"), arg = "datatype", call = call)
   input <- list_input_files(path, pattern, recursive, call = call)
   files <- input$files
   is_annot <- grepl("_annot[^/\\\\]*$", file_stem(files), ignore.case = TRUE)

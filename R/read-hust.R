@@ -66,7 +66,7 @@ read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = 
                       rate = NULL, unit = NULL, file_pattern = "\\.(csv|txt)$",
                       recursive = FALSE, truncated = c("error", "drop")) {
   call <- rlang::caller_env()
-  truncated <- rlang::arg_match(truncated, error_call = call)
+  truncated <- check_choice(truncated, arg = "truncated", call = call)
   if (!is.null(manifest) && !is.null(pattern)) {
     hm_abort("Give {.arg manifest} or {.arg pattern}, not both.", "bad_input",
              argument = "manifest", call = call)

@@ -21,7 +21,10 @@ restore_rng <- function(old) {
 
 # Evaluate `expr` with the RNG seeded (in the caller's RNG kind), restoring the
 # global RNG state and kind afterwards. A NULL seed evaluates `expr` as is.
+# A seed that is not NULL or one whole number is a classed error naming the
+# caller (the user-facing function).
 with_seed <- function(seed, expr) {
+  seed <- check_seed(seed, call = rlang::caller_env())
   if (is.null(seed)) return(expr)
   old <- save_rng()
   on.exit(restore_rng(old))

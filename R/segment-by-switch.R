@@ -72,7 +72,7 @@ check_switch <- function(switch, n = NULL, call = rlang::caller_env()) {
 segment_by_switch <- function(x, keep = c("all", "on", "off"), min_frames = 1L, switch = NULL) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  keep <- rlang::arg_match(keep, error_call = call)
+  keep <- check_choice(keep, arg = "keep", call = call)
   if (!is.numeric(min_frames) || length(min_frames) != 1L || is.na(min_frames) || min_frames < 1) {
     hm_abort("{.arg min_frames} must be a positive number of frames.", "bad_input",
              argument = "min_frames", call = call)

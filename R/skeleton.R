@@ -51,7 +51,7 @@ skeleton_limit_cols <- c("rotx_min", "rotx_max", "roty_min", "roty_max", "rotz_m
 #' head(skel$joints)
 read_skeleton <- function(file, positions = c("absolute", "relative")) {
   call <- rlang::caller_env()
-  positions <- rlang::arg_match(positions)
+  positions <- check_choice(positions, arg = "positions", call = rlang::current_env())
   if (!is.character(file) || length(file) != 1L || is.na(file)) {
     hm_abort("{.arg file} must be one file path.", "bad_input", argument = "file", call = call)
   }

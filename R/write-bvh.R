@@ -50,7 +50,7 @@ write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate 
   }
   check_rate(rate, call = call)
   input <- fk_input(if (is.data.frame(x)) as.matrix(x) else x, unit, call)
-  mode <- if (is.null(dots$mode)) "plain" else rlang::arg_match0(dots$mode, c("plain", "full", "fixed-root"))
+  mode <- if (is.null(dots$mode)) "plain" else check_choice(dots$mode, c("plain", "full", "fixed-root"), arg = "mode", call = call)
   plan <- fk_plan(input$dofs, skeleton, dots$mapping, mode, dots$deactivate, call)
   rec <- input$recordings[[1]]
   ang <- fk_angles(plan, rec, input$factor)

@@ -7,7 +7,7 @@
 # needs about 50 s), the fast engines 100x or more faster than the reference.
 #
 # Run from the repository root after `R CMD INSTALL --no-multiarch .`:
-#   Rscript bench/bench-fit.R
+#   Rscript bench/bench-fit.R        (BENCH_QUICK=1: a small design, seconds)
 # It times the INSTALLED package: R CMD INSTALL compiles src/ with R's
 # optimisation flags (-O2), whereas pkgload::load_all() compiles it with -O0
 # for debugging (the DTW and EM kernels run 3-4x slower), and multisession
@@ -21,36 +21,10 @@
 # the load average, since the machine is shared and elapsed time stretches
 # when other jobs hold the cores.
 
-newer_sources <- function() {
-  built <- tryCatch(packageDescription("handmotion")$Built, error = function(e) NULL)
-  if (is.null(built)) return(NULL)
-  when <- as.POSIXct(strsplit(built, "; ")[[1]][3], tz = "UTC")
-  src <- c(list.files("R", full.names = TRUE), list.files("src", "\\.[ch]$", full.names = TRUE))
-  # (whole seconds: the stamp has no fractions, a file saved within the
-  # build's first second was built)
-  src[floor(as.numeric(file.mtime(src))) > as.numeric(when)]
-}
-use_installed <- nzchar(system.file(package = "handmotion"))
-if (use_installed) {
-  suppressPackageStartupMessages(library(handmotion))
-  cat("timing the installed package\n")
-  stale <- newer_sources()
-  if (length(stale)) {
-    cat(sprintf("NOTE: changed since the installation (not timed; R CMD INSTALL first): %s\n",
-                paste(stale, collapse = ", ")))
-  }
-} else {
-  cat("NOTE: handmotion is not installed; timing a load_all() build (C code at -O0)\n",
-      "      and skipping multisession. Run `R CMD INSTALL --no-multiarch .` first.\n", sep = "")
-  pkgload::load_all(".", quiet = TRUE)
-}
+source("bench/_common.R")
+use_installed <- startsWith(bench_build, "installed")
 hm <- asNamespace("handmotion")
 
-load_avg <- function() {
-  tryCatch(paste(utils::head(strsplit(readLines("/proc/loadavg"), " ")[[1]], 3), collapse = " "),
-           error = function(e) "unknown")
-}
-cpu_of <- function(st) st[["user.self"]] + st[["sys.self"]]
 # CPU seconds (user + system) used so far by process `pid`, from /proc
 proc_cpu <- function(pid) {
   f <- sprintf("/proc/%d/stat", pid)
@@ -62,7 +36,7 @@ cat(sprintf("load average at start: %s on %d cores\n\n", load_avg(), parallel::d
 
 # ---- the full default fit --------------------------------------------------
 
-t_sim <- system.time(g <- simulate_grasps())
+t_sim <- system.time(g <- simulate_grasps(subjects = bq(30, 4), grasps = bq(1:33, 1:4)))
 cat(sprintf("simulate_grasps(): %d recordings, %.2f s elapsed, %.2f s CPU\n\n", length(g),
             t_sim[["elapsed"]], cpu_of(t_sim)))
 
@@ -95,13 +69,16 @@ run <- function(label, workers = NULL) {
               steps[1], steps[2], steps[3]))
   cat(sprintf("  EM fallbacks: %d DoF mixtures, %d warp mixtures; load average %s\n\n",
               fb[["dof"]], fb[["warp"]], load_avg()))
-  invisible(list(models = ms, seconds = el))
+  invisible(list(models = ms, seconds = el, cpu = cpu))
 }
 
 future::plan(future::sequential)
 seq_run <- run("sequential plan:")
+bench_record(sprintf("fit %d models, %d recordings, sequential, elapsed", length(seq_run$models), length(g)),
+             seq_run$seconds, "s")
+bench_record(sprintf("fit %d models, sequential, CPU", length(seq_run$models)), seq_run$cpu, "s")
 
-if (use_installed) {
+if (use_installed && !bench_quick) {
   future::plan(future::multisession, workers = 2)
   # the workers' process ids (two overlapping futures land on both workers)
   fs <- lapply(1:2, function(i) future::future({ Sys.sleep(0.5); Sys.getpid() }))
@@ -126,25 +103,34 @@ scores <- unlist(lapply(unclass(seq_run$models), function(m) {
 scores <- Filter(Negate(is.null), scores)
 biv <- Filter(function(s) ncol(s) == 2L, scores)
 uni <- Filter(function(s) ncol(s) == 1L, scores)
-em_time <- function(sets, max_iter, backend = NULL) {
-  old <- options(handmotion.gmm_em = backend)
-  on.exit(options(old))
+# backend "R": the R EM (the production path for d > 2) swapped in for the
+# compiled one, to measure what compiling it bought
+em_time <- function(sets, max_iter, backend = "C") {
+  if (backend == "R") {
+    compiled <- hm$gmm_em_batch
+    unlockBinding("gmm_em_batch", hm)
+    assign("gmm_em_batch", function(design, ...) hm$gmm_em_batch_r(design, ...), envir = hm)
+    on.exit({ assign("gmm_em_batch", compiled, envir = hm); lockBinding("gmm_em_batch", hm) })
+  }
   cpu_of(system.time(for (s in sets) gmm_fit(s, max_iter = max_iter)))
 }
 cat(sprintf("mixtures alone, fast engine (CPU s): %d bivariate fits %.2f s (max_iter 5000), %.2f s (max_iter 500); %d univariate %.2f s\n",
             length(biv), em_time(biv, 5000), em_time(biv, 500), length(uni), em_time(uni, 5000)))
-r_em <- em_time(biv[1:48], 500, backend = "R")
-c_em <- em_time(biv[1:48], 500)
-cat(sprintf("  compiled EM vs the R implementation (48 bivariate fits, max_iter 500): %.2f s vs %.2f s CPU, %.1fx\n\n",
-            c_em, r_em, r_em / c_em))
+n_em <- min(48L, length(biv))
+r_em <- em_time(biv[seq_len(n_em)], 500, backend = "R")
+c_em <- em_time(biv[seq_len(n_em)], 500)
+cat(sprintf("  compiled EM vs the R implementation (%d bivariate fits, max_iter 500): %.2f s vs %.2f s CPU, %.1fx\n\n",
+            n_em, c_em, r_em, r_em / c_em))
+bench_record("EM, R / compiled (CPU)", r_em / c_em, "x")
 
 # ---- fast against reference engines on one small subset ---------------------
 
-types <- levels(g$meta$grasp)[c(1, 14)]
-sub_ids <- unlist(lapply(types, function(t) utils::head(g$meta$id[g$meta$grasp %in% t], 60)))
+types <- levels(droplevels(g$meta$grasp))[bq(c(1, 14), c(1, 4))]
+n_sub <- bq(60, 20)
+sub_ids <- unlist(lapply(types, function(t) utils::head(g$meta$id[g$meta$grasp %in% t], n_sub)))
 sub <- g[sub_ids]
-cat(sprintf("fast vs reference engines on %d types x 60 recordings (%s), sequential:\n",
-            length(types), paste(types, collapse = ", ")))
+cat(sprintf("fast vs reference engines on %d types x %d recordings (%s), sequential:\n",
+            length(types), n_sub, paste(types, collapse = ", ")))
 time_engine <- function(engine) {
   tt <- system.time(ms <- fit_grasp_models(sub, seed = 1, engine = engine))
   list(models = ms, el = tt[["elapsed"]], cpu = cpu_of(tt), steps = steps_of(ms))
@@ -158,6 +144,7 @@ for (e in list(list("fast", fast), list("reference", ref))) {
               r$steps[2], r$steps[3]))
 }
 ratio <- ref$cpu / fast$cpu
+bench_record("model fit, reference / fast engines (CPU)", ratio, "x")
 cat(sprintf("  ratio reference / fast: %.0fx CPU overall (target 100x: %s); align %.0fx, fpca %.0fx, gmm %.0fx\n",
             ratio, if (ratio >= 100) "met" else "MISSED", ref$steps[1] / fast$steps[1],
             ref$steps[2] / fast$steps[2], ref$steps[3] / fast$steps[3]))

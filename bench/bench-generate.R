@@ -3,25 +3,17 @@
 # largest batch. Targets on the 2-core reference machine: 100,000 or more
 # grasps per second in batches; 1 ms or less for one grasp.
 #
-# Run from the repository root:  Rscript bench/bench-generate.R
-# load_all() compiles the C code without optimisation; to measure the
-# installed (-O2) build instead:
-#   R CMD INSTALL --no-multiarch -l /tmp/hm-lib . && HM_LIB=/tmp/hm-lib Rscript bench/bench-generate.R
+# Run from the repository root:  Rscript bench/bench-generate.R  (BENCH_QUICK=1: seconds)
 #
 # Throughput is given as grasps per elapsed second and per CPU second of
 # this process: on a shared machine other jobs inflate elapsed time, CPU time
 # is what generation itself costs. Batches are timed back to back, the
 # previous batch dropped first, so each figure includes collecting the
 # garbage of the batch before (what a loop of generate() calls pays).
-lib <- Sys.getenv("HM_LIB")
-if (nzchar(lib)) library(handmotion, lib.loc = lib) else pkgload::load_all(".", quiet = TRUE)
-build <- if (nzchar(lib)) paste("installed build in", lib) else "pkgload::load_all() build (-O0 C code)"
-
+source("bench/_common.R")
 loadavg <- function() tryCatch(readLines("/proc/loadavg"), error = function(e) "unknown")
-cat("load average before:", loadavg(), "\n")
-cat("build:", build, "\n")
 
-ms <- fit_grasp_models(simulate_grasps(grasps = c(11, 17)), seed = 1)
+ms <- fit_grasp_models(simulate_grasps(grasps = c(11, 17), subjects = bq(30, 6)), seed = 1)
 m <- ms[[1]]
 cat(sprintf("model set: %s; first model %s: %d DoFs, L = %d frames, %d FPCs, %d-component mixtures\n",
             paste(vapply(ms, `[[`, "", "grasp"), collapse = ", "), m$grasp, length(m$dofs),
@@ -32,7 +24,7 @@ cat(sprintf("model set: %s; first model %s: %d DoFs, L = %d frames, %d FPCs, %d-
 # total elapsed and total CPU time, so R's garbage collections are included
 # in proportion (a median would hide them: one batch in several pays for a
 # full collection).
-throughput <- function(f, size, min_time = 1.5, min_calls = 3L) {
+throughput <- function(f, size, min_time = bq(1.5, 0.1), min_calls = bq(3L, 1L)) {
   x <- f()
   x <- NULL
   calls <- 0L
@@ -57,50 +49,45 @@ row <- function(label, size, r, target = size >= 1000) {
 }
 
 cat("\nbatches from one model: generate(m, n = N)\n")
-for (N in c(1L, 10L, 100L, 1000L, 10000L, 100000L)) {
-  row(sprintf("  N = %6d", N), N, throughput(function() generate(m, n = N), N))
+for (N in bq(c(1L, 10L, 100L, 1000L, 10000L, 100000L), c(1L, 1000L))) {
+  r <- throughput(function() generate(m, n = N), N)
+  row(sprintf("  N = %6d", N), N, r)
+  bench_record(sprintf("one model, batch of %d, grasps per CPU second", N), r[["cpu"]], "1/s")
 }
 cat("batches from the model set (2 types): generate(ms, n = N / 2)\n")
-for (N in c(10L, 100L, 1000L, 10000L, 100000L)) {
+for (N in bq(c(10L, 100L, 1000L, 10000L, 100000L), 1000L)) {
   row(sprintf("  N = %6d", N), N, throughput(function() generate(ms, n = N %/% 2L), N))
 }
 row("  N =  10000, one model, no warp", 10000L,
     throughput(function() generate(m, n = 10000L, warp = FALSE), 10000L))
-ref <- withr::with_options(list(handmotion.generate_kernel = "r"),
-                           throughput(function() generate(m, n = 10000L), 10000L))
+# The R transcription of the kernel (tests/testthat/helper-generate-reference.R)
+# on the same batch: what the native kernel buys.
+ref_env <- new.env(parent = asNamespace("handmotion"))
+sys.source("tests/testthat/helper-generate-reference.R", envir = ref_env)
+ref <- throughput(function() ref_env$generate_reference(m, 10000L, NULL), 10000L)
 row("  N =  10000, one model, R reference", 10000L, ref, target = FALSE)
+nat <- throughput(function() generate(m, n = 10000L), 10000L)
+bench_record("batch of 10000, native / R reference (CPU)", nat[["cpu"]] / ref[["cpu"]], "x")
 
 cat("\nsingle grasp: generate(m, n = 1)\n")
-one <- bench::mark(generate(m, n = 1L), iterations = 2000, check = FALSE, filter_gc = FALSE,
+one <- bench::mark(generate(m, n = 1L), iterations = bq(2000, 100), check = FALSE, filter_gc = FALSE,
                    memory = FALSE)
 times <- as.numeric(one$time[[1]]) * 1000
 cat(sprintf("  median %.3f ms, 90th percentile %.3f ms (target 1 ms: %s)\n",
             stats::median(times), stats::quantile(times, 0.9), if (stats::median(times) <= 1) "met" else "MISSED"))
+bench_record("one grasp, median", stats::median(times), "ms")
 
-# The heap reservation (generate_reserve() in R/generate.R) and the memory
-# of the largest batch, each in a fresh R process: the collector's state
-# (heap size) carries over from batch to batch, so the comparison and the
-# peak resident set are only fair from a clean start.
+# The memory of the largest batch, in a fresh R process: the collector's
+# state (heap size) carries over from batch to batch, so the peak resident
+# set is only fair from a clean start.
 in_fresh_r <- function(code) {
-  setup <- sprintf(paste0("lib <- %s; if (nzchar(lib)) library(handmotion, lib.loc = lib) else ",
-                          "pkgload::load_all('.', quiet = TRUE); ",
-                          "ms <- fit_grasp_models(simulate_grasps(grasps = c(11, 17)), seed = 1); "),
-                   deparse(lib))
+  setup <- paste0("source('bench/_common.R'); ",
+                  "ms <- fit_grasp_models(simulate_grasps(grasps = c(11, 17)), seed = 1); ")
   out <- system2(file.path(R.home("bin"), "Rscript"), c("-e", shQuote(paste0(setup, code))),
-                 stdout = TRUE, stderr = TRUE)
-  cat(out, sep = "\n")
+                 stdout = TRUE, stderr = TRUE, env = "BENCH_CSV=/dev/null")
+  cat(out[!startsWith(out, "==")], sep = "\n")
 }
-cat("\nheap reservation on and off, batches in a loop from a fresh session: generate(ms, n = N / 2)\n")
-for (N in c(10000L, 100000L)) for (res in c(FALSE, TRUE)) {
-  in_fresh_r(sprintf(paste0(
-    "options(handmotion.generate_reserve = %s); x <- NULL; g0 <- gc.time()[1]; calls <- 0L; t0 <- proc.time(); ",
-    "repeat { x <- NULL; x <- generate(ms, n = %dL); calls <- calls + 1L; t1 <- proc.time() - t0; ",
-    "if (calls >= 3L && t1[['elapsed']] >= 2) break }; ",
-    "cat(sprintf('  N = %%6d, reservation %%-5s %%9.0f /s elapsed %%9.0f /s CPU, of which collections %%.0f %%%%\\n', ",
-    "%dL, %s, %d * calls / t1[['elapsed']], %d * calls / (t1[['user.self']] + t1[['sys.self']]), ",
-    "100 * (gc.time()[1] - g0) / (t1[['user.self']] + t1[['sys.self']])))"),
-    res, N %/% 2L, N, deparse(if (res) "on" else "off"), N, N))
-}
+if (bench_quick) quit(save = "no")
 
 # Memory: R's own accounting (gc() "max used" since a reset, over the
 # baseline) and the process's peak resident set (VmHWM, reset through
@@ -117,7 +104,7 @@ in_fresh_r(paste0(
   "cat(sprintf('  %d grasps, %.1f frames on average, %d DoFs: %.0f MB of angles (8 bytes each)\\n', ",
   "length(x), frames / length(x), length(x$dofs), frames * length(x$dofs) * 8 / 2^20)); ",
   "cat(sprintf('  held by the result: %.0f MB; R\\'s peak count during generation: %.0f MB over the baseline ",
-  "(it includes the heap reservation, address space never touched)\\n', held, peak)); ",
+  "\\n', held, peak)); ",
   "cat(sprintf('  process peak resident set: %.0f MB, %.0f MB before the batch%s\\n', rss_peak(), rss0, ",
   "if (reset_ok) '' else ' (peak not resettable: since start)'))"))
 cat("load average after:", loadavg(), "\n")

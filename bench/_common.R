@@ -1,0 +1,79 @@
+# Shared set-up of every benchmark in bench/ (sourced first by each script;
+# run from the repository root: `Rscript bench/<name>.R`, or `make bench` /
+# `make bench-quick`). See bench/README.md for the conventions.
+#
+# * The installed package is timed (R's CFLAGS, -O2), as users get it; a
+#   pkgload::load_all() build compiles C at -O0 and is used, with a note, only
+#   when handmotion is not installed or the sources changed since (make bench
+#   installs first, so this is the exception).
+# * BENCH_QUICK=1: small sizes and few repetitions, seconds per script. CI runs
+#   this mode so that a benchmark that breaks fails CI. The figures of a quick
+#   run are not comparable with a full run's and are recorded as mode "quick".
+# * Every figure goes through bench_record(), which prints nothing and appends
+#   one row (commit, date, mode, benchmark, figure, value, unit) to a CSV:
+#   $BENCH_CSV, or bench/results/<benchmark>.csv, so figures can be compared
+#   between commits.
+
+bench_quick <- identical(Sys.getenv("BENCH_QUICK"), "1")
+
+# The size to use: `full` normally, `quick` under BENCH_QUICK=1.
+bq <- function(full, quick) if (bench_quick) quick else full
+
+bench_name <- local({
+  args <- commandArgs(trailingOnly = FALSE)
+  f <- sub("^--file=", "", grep("^--file=", args, value = TRUE))
+  if (length(f)) sub("[.]R$", "", basename(f[1])) else "interactive"
+})
+
+bench_load <- function() {
+  installed <- nzchar(system.file(package = "handmotion"))
+  current <- FALSE
+  if (installed) {
+    stamp <- file.path(system.file(package = "handmotion"), "source-hash")
+    files <- list.files(c("R", "src"), full.names = TRUE, recursive = TRUE,
+                        pattern = "[.](R|c|h)$")
+    current <- file.exists(stamp) &&
+      all(file.mtime(files) <= file.mtime(stamp))
+  }
+  if (installed && current) {
+    suppressPackageStartupMessages(library(handmotion))
+    "installed package (-O2)"
+  } else {
+    pkgload::load_all(".", quiet = TRUE)
+    "pkgload::load_all() build (C at -O0; install first for representative figures)"
+  }
+}
+bench_build <- bench_load()
+
+bench_commit <- tryCatch(system2("git", c("rev-parse", "--short", "HEAD"), stdout = TRUE,
+                                 stderr = FALSE)[1], error = function(e) NA_character_)
+
+bench_csv <- function() {
+  f <- Sys.getenv("BENCH_CSV")
+  if (!nzchar(f)) f <- file.path("bench", "results", paste0(bench_name, ".csv"))
+  dir.create(dirname(f), recursive = TRUE, showWarnings = FALSE)
+  f
+}
+
+# Record one figure (a number with its unit; ratios have unit "x").
+bench_record <- function(figure, value, unit) {
+  row <- data.frame(commit = bench_commit %||% NA_character_,
+                    date = format(Sys.time(), "%Y-%m-%d %H:%M:%S", tz = "UTC"),
+                    mode = if (bench_quick) "quick" else "full", benchmark = bench_name,
+                    figure = figure, value = signif(as.numeric(value), 6), unit = unit)
+  f <- bench_csv()
+  utils::write.table(row, f, sep = ",", row.names = FALSE, col.names = !file.exists(f),
+                     append = file.exists(f), qmethod = "double")
+  invisible(value)
+}
+
+`%||%` <- function(a, b) if (is.null(a) || length(a) == 0L || is.na(a[1])) b else a
+
+# CPU time of a system.time() result, and the load average: the machine may
+# be shared, so figures come with both.
+cpu_of <- function(st) st[["user.self"]] + st[["sys.self"]] + sum(st[c("user.child", "sys.child")], na.rm = TRUE)
+load_avg <- function() tryCatch(scan("/proc/loadavg", n = 1, quiet = TRUE), error = function(e) NA)
+
+cat(sprintf("== %s (%s mode; %s; load average %s on %d cores)\n", bench_name,
+            if (bench_quick) "quick" else "full", bench_build, format(load_avg()),
+            parallel::detectCores()))
