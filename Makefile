@@ -9,7 +9,7 @@ export HANDMOTION_SHARED ?= $(abspath ../shared)
 # snapshot tests run outside CRAN
 export NOT_CRAN ?= true
 
-.PHONY: setup demo test test-r test-python check bench docs clean
+.PHONY: setup demo test test-r test-python check bench bench-quick docs clean
 
 setup:
 	bash tools/setup.sh
@@ -31,8 +31,13 @@ test-python:
 check: setup
 	bash tools/check.sh
 
+## Benchmarks (bench/README.md): figures and ratios printed and appended to bench/results/*.csv
 bench: setup
-	for f in bench/*.R; do echo "== $$f"; $(R) $$f || exit 1; done
+	bash tools/bench.sh
+
+## The same benchmarks at small sizes (seconds each); CI runs these so a broken benchmark fails CI
+bench-quick: setup
+	BENCH_QUICK=1 bash tools/bench.sh
 
 docs:
 	$(R) -e 'roxygen2::roxygenise()'

@@ -11,8 +11,9 @@ check_whole <- function(x, arg, min = 1, max = Inf, allow_null = FALSE,
   if (is.null(x) && allow_null) return(NULL)
   ok <- is.numeric(x) && length(x) == 1L && is.finite(x) && x == round(x) && x >= min && x <= max
   if (!ok) {
-    range <- if (is.finite(max)) sprintf("from %s to %s", format(min), format(max))
-             else if (min == 1) "positive" else if (min == 0) "non-negative" else sprintf("of at least %s", format(min))
+    num <- function(v) format(v, big.mark = ",", scientific = FALSE, trim = TRUE)
+    range <- if (is.finite(max)) sprintf("from %s to %s", num(min), num(max))
+             else if (min == 1) "positive" else if (min == 0) "non-negative" else sprintf("of at least %s", num(min))
     what <- if (is.finite(max)) paste("a whole number", range) else paste("one", range, "whole number")
     hm_abort("{.arg {arg}} must be {what}, not {describe_value(x)}.",
              "bad_input", argument = arg, call = call)

@@ -3,9 +3,9 @@
 # Run from the repository root: Rscript bench/bench-handover.R
 # The machine is shared: elapsed time depends on the load (printed), CPU time
 # (user + system of this process) much less.
-pkgload::load_all(".", quiet = TRUE)
+source("bench/_common.R")
 
-g <- simulate_grasps(subjects = 10, grasps = 1:33, objects = 1, trials = 1, seed = 11,
+g <- simulate_grasps(subjects = 10, grasps = bq(1:33, 1:3), objects = 1, trials = 1, seed = 11,
                      overlong = FALSE)
 subj <- unique(g$meta$subject)
 ref <- g[g$meta$subject %in% subj[1:8]]
@@ -21,7 +21,7 @@ fit3 <- fit_handover(ref, markers = 3)
 mk6 <- markers_from_angles(test, markers = fit6$markers)
 mk3 <- markers_from_angles(test, markers = fit3$markers)
 
-time_it <- function(f, reps = 3) {
+time_it <- function(f, reps = bq(3, 1)) {
   el <- cpu <- numeric(reps)
   for (i in seq_len(reps)) {
     t <- system.time(f())
@@ -36,7 +36,9 @@ row <- function(label, t) {
               t[["cpu"]], n_q / t[["cpu"]]))
 }
 cat("load average:", readLines("/proc/loadavg", warn = FALSE), "\n")
-row("reconstruct, 6 markers, k = 256 (default)", time_it(function() reconstruct(fit6, mk6)))
+t6 <- time_it(function() reconstruct(fit6, mk6))
+row("reconstruct, 6 markers, k = 256 (default)", t6)
+bench_record("reconstruct, 6 markers, frames per CPU second", n_q / t6[["cpu"]], "1/s")
 row("reconstruct, 3 markers, k = 256", time_it(function() reconstruct(fit3, mk3)))
 fit6_128 <- fit_handover(ref, markers = fit6$markers, k = 128)
 row("reconstruct, 6 markers, k = 128", time_it(function() reconstruct(fit6_128, mk6)))
@@ -51,6 +53,7 @@ t_r <- time_it(function() lwr_predict(fit6$ref_x, fit6$ref_scores, q, 256, 1e-3,
                reps = 1)
 cat(sprintf("LWR core, C engine vs R reference engine: %.2f s vs %.2f s CPU (speed-up %.1fx)\n",
             t_c[["cpu"]], t_r[["cpu"]], t_r[["cpu"]] / t_c[["cpu"]]))
+bench_record("LWR core, R reference / C (CPU)", t_r[["cpu"]] / t_c[["cpu"]], "x")
 cat("load average:", readLines("/proc/loadavg", warn = FALSE), "\n")
 cat(sprintf("accuracy on the unseen subjects: 6 markers %.2f deg, 3 markers %.2f deg\n",
             handover_error(test, reconstruct(fit6, test)), handover_error(test, reconstruct(fit3, test))))

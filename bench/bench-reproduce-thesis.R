@@ -3,9 +3,14 @@
 # sequentially and once with 2 multicore workers (the `make demo` setting).
 # Target on the 2-core reference machine: under 5 minutes (300 s).
 # Run from the repository root: Rscript bench/bench-reproduce-thesis.R [sequential|multicore|both]
-pkgload::load_all(".", quiet = TRUE)
+# BENCH_QUICK=1: a small design (4 subjects, 3 types, 2 folds), sequential only.
+source("bench/_common.R")
+if (bench_quick) {
+  Sys.setenv(HANDMOTION_REPORT_SUBJECTS = "4", HANDMOTION_REPORT_GRASPS = "9,17,22",
+             HANDMOTION_REPORT_FOLDS = "2")
+}
 args <- commandArgs(trailingOnly = TRUE)
-which <- if (length(args)) args[1] else "both"
+which <- if (length(args)) args[1] else if (bench_quick) "sequential" else "both"
 
 run <- function(label) {
   out <- tempfile("report")
@@ -26,10 +31,12 @@ run <- function(label) {
 if (which %in% c("sequential", "both")) {
   future::plan(future::sequential)
   t_seq <- run("sequential plan")
+  bench_record("report, sequential, elapsed", t_seq, "s")
 }
 if (which %in% c("multicore", "both") && future::supportsMulticore()) {
   future::plan(future::multicore, workers = 2)
   t_par <- run("multicore plan, 2 workers")
+  bench_record("report, 2 multicore workers, elapsed", t_par, "s")
   future::plan(future::sequential)
   if (exists("t_seq")) cat(sprintf("\nspeed-up with 2 workers: %.2fx\n", t_seq / t_par))
 }

@@ -1,14 +1,15 @@
 # Benchmark of the classifiers and their evaluation (run from the repo root:
 #   Rscript bench/classify.R
-# after pkgload::load_all(), which this script does). Prints timings, the
+# BENCH_QUICK=1: 2 subjects x 6 types). Prints timings, the
 # in-sample (thesis-style) and held-out accuracies of both classifiers on
 # simulated HUST-like data, and the cost ratio of full LOSO vs grouped folds.
-pkgload::load_all(".", quiet = TRUE)
+source("bench/_common.R")
 
-subjects <- as.integer(Sys.getenv("HM_BENCH_SUBJECTS", "6"))
+subjects <- as.integer(Sys.getenv("HM_BENCH_SUBJECTS", bq("6", "3")))
 folds <- as.integer(Sys.getenv("HM_BENCH_FOLDS", "3"))
-g <- simulate_grasps(subjects = subjects, grasps = 1:33, objects = 1, trials = 2, seed = 1)
-cat(sprintf("data: %d recordings, %d types, %d subjects\n", length(g), 33, subjects))
+types <- bq(1:33, 1:6)
+g <- simulate_grasps(subjects = subjects, grasps = types, objects = 1, trials = 2, seed = 1)
+cat(sprintf("data: %d recordings, %d types, %d subjects\n", length(g), length(types), subjects))
 
 timed <- function(expr) {
   t0 <- proc.time()[["elapsed"]]
@@ -31,6 +32,9 @@ cat(sprintf("fit_last_frame_pca:                 %7.3f s\n", lf_fit$seconds))
 cat(sprintf("classify, last frame:               %7.3f s\n", cl_lf$seconds))
 cat(sprintf("ratio FPCA / last-frame (fit + classify): %.0f\n",
             (fit$seconds + cl_fpca$seconds) / (lf_fit$seconds + cl_lf$seconds)))
+bench_record(sprintf("classify FPCA, %d recordings x %d models", length(g), length(fit$value)), cl_fpca$seconds, "s")
+bench_record("classify FPCA / last-frame (fit + classify)",
+             (fit$seconds + cl_fpca$seconds) / (lf_fit$seconds + cl_lf$seconds), "x")
 cat(sprintf("in-sample accuracy: FPCA %.1f%%, last-frame PCA %.1f%%\n",
             100 * acc(cl_fpca$value), 100 * acc(cl_lf$value)))
 print(distance_minima(distance_table(cl_fpca$value)))

@@ -16,7 +16,8 @@ from .api import (classify, evaluate_loso, fit_grasp_models, fit_last_frame_pca,
                   table_5_2, table_5_3, table_5_6, table_5_7, table_5_8, write_bvh,
                   write_graspdb14, write_hust)
 from .errors import (BadFileError, BadInputError, BadRecordingError, BadSkeletonError,
-                     FitFailedError, HandmotionError, RError, UnknownGraspError)
+                     FitFailedError, HandmotionError, HandmotionWarning, RError,
+                     UnknownGraspError)
 from .grasps import Grasps
 from .handles import GraspModels, HandoverModel, RHandle, Skeleton
 
@@ -25,7 +26,7 @@ __version__ = "0.1.0"
 __all__ = [
     "Grasps", "GraspModels", "HandoverModel", "RHandle", "Skeleton",
     "HandmotionError", "BadInputError", "BadRecordingError", "UnknownGraspError", "BadFileError",
-    "BadSkeletonError", "FitFailedError", "RError",
+    "BadSkeletonError", "FitFailedError", "RError", "HandmotionWarning",
     "simulate_grasps", "read_hust", "write_hust", "read_graspdb14", "write_graspdb14",
     "read_skeleton", "hand_skeleton", "forward_kinematics", "joint_names", "write_bvh",
     "fit_grasp_models", "generate", "classify", "fit_last_frame_pca", "evaluate_loso",

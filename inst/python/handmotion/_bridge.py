@@ -7,20 +7,30 @@ flat encoders/decoders for the ``grasps`` class (one numeric vector for all
 recordings, which crosses the bridge far faster than a list of matrices).
 """
 
+import warnings
+
 import numpy as np
 import pandas as pd
 
-from .errors import BadInputError, from_r_condition
+from .errors import BadInputError, from_r_condition, from_r_warning
 
 _R_HELPERS = r"""
 local({
   env <- new.env()
   env$call <- function(f, args) {
     fun <- if (is.function(f)) f else getExportedValue("handmotion", f)
-    tryCatch(list(ok = TRUE, value = do.call(fun, args)),
+    # R's warnings are collected (not printed) and raised in Python
+    warned <- list()
+    keep <- function(w) {
+      warned[[length(warned) + 1L]] <<- list(message = cli::ansi_strip(conditionMessage(w)),
+                                             class = class(w))
+      invokeRestart("muffleWarning")
+    }
+    tryCatch(list(ok = TRUE, value = withCallingHandlers(do.call(fun, args), warning = keep),
+                  warnings = warned),
              error = function(e) list(ok = FALSE,
                                       message = cli::ansi_strip(conditionMessage(e)),
-                                      class = class(e)))
+                                      class = class(e), warnings = warned))
   }
   env$grasps_out <- function(x) {
     meta <- x$meta
@@ -222,6 +232,8 @@ def call(fname, *args, **kwargs):
     rkw = {k: py_to_r(v) for k, v in kwargs.items()}
     arglist = ro.r["list"](*rargs, **rkw)
     res = helpers()["call"](fname, arglist)
+    for w in res.rx2("warnings"):
+        warnings.warn(from_r_warning(str(w.rx2("message")[0]), list(w.rx2("class"))), stacklevel=3)
     if not bool(res.rx2("ok")[0]):
         message = str(res.rx2("message")[0])
         raise from_r_condition(message, list(res.rx2("class")))

@@ -7,6 +7,8 @@ become numpy arrays, and model objects become handles. Seeds pass straight
 through, so Python and R give identical numbers for the same seed.
 """
 
+import warnings
+
 import numpy as np
 
 from ._bridge import call, r, r_array, r_to_py
@@ -161,9 +163,9 @@ def fit_grasp_models(x, grasps=None, seed=1, **kwargs):
 def generate(models, grasp=None, n=1, seed=None, as_array=False, **kwargs):
     """Generate new grasps by sampling component scores (thesis eq. 2.5).
 
-    Returns a :class:`Grasps`; with ``as_array=True`` and a single grasp type,
-    also a numpy array n x frames x DoF (frames are padded with NaN where generated
-    lengths differ).
+    Returns a :class:`Grasps` (use its ``as_array()`` for an n x frames x DoF numpy
+    array padded with NaN). ``as_array=True`` is deprecated: it returns that array
+    alone (it used to return a tuple).
     """
     if not isinstance(models, RHandle):
         raise BadInputError("models must come from fit_grasp_models()")
@@ -174,13 +176,9 @@ def generate(models, grasp=None, n=1, seed=None, as_array=False, **kwargs):
     out = r_to_py(call("generate", models, **kw))
     if not as_array:
         return out
-    if grasp is None or len(_grasps_arg(grasp)) != 1:
-        raise BadInputError("as_array=True needs exactly one grasp type")
-    longest = int(out.meta["n_frames"].max())
-    arr = np.full((len(out), longest, len(out.dofs)), np.nan)
-    for i, rec in enumerate(out.recordings):
-        arr[i, :rec.shape[0], :] = rec
-    return out, arr
+    warnings.warn("generate(as_array=True) is deprecated; call .as_array() on the Grasps it returns",
+                  DeprecationWarning, stacklevel=2)
+    return out.as_array()
 
 
 def classify(models, x, method="fpca", **kwargs):

@@ -81,3 +81,24 @@ def from_r_condition(message, r_class):
     if "handmotion_error" in r_class:
         return HandmotionError(message, r_class)
     return RError(message, r_class)
+
+
+class HandmotionWarning(UserWarning):
+    """A warning raised in R by handmotion (or any other R warning), carrying its R class.
+
+    Attributes
+    ----------
+    r_class : list of str
+        The R condition's class vector, e.g. ``["handmotion_warning_read_failures",
+        "handmotion_warning", "rlang_warning", "warning", "condition"]``.
+    """
+
+    def __init__(self, message, r_class=None):
+        super().__init__(message)
+        self.r_message = message
+        self.r_class = list(r_class or [])
+
+
+def from_r_warning(message, r_class):
+    """Build the Python warning for an R warning condition."""
+    return HandmotionWarning(message, r_class)

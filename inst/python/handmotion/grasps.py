@@ -146,12 +146,19 @@ class Grasps:
         return (f"<Grasps: {len(self)} recordings of {len(self.dofs)} DoFs at {self.rate:g} Hz "
                 f"in {self.unit}{span}>")
 
-    def as_array(self):
-        """All recordings as one numpy array (n x frames x DoF); they must share a length."""
-        lengths = set(self.meta["n_frames"])
-        if len(lengths) != 1:
-            raise BadInputError(f"recordings have different lengths {sorted(lengths)}; cannot stack")
-        return np.stack(self.recordings)
+    def as_array(self, pad=np.nan):
+        """All recordings as one numpy array n x frames x DoF.
+
+        Recordings shorter than the longest are padded at the end with ``pad``
+        (NaN by default; the true lengths are ``meta["n_frames"]``).
+        """
+        if len(self) == 0:
+            return np.empty((0, 0, len(self.dofs)))
+        longest = int(self.meta["n_frames"].max())
+        arr = np.full((len(self), longest, len(self.dofs)), pad, dtype=float)
+        for i, rec in enumerate(self.recordings):
+            arr[i, :rec.shape[0], :] = rec
+        return arr
 
     # ------------------------------------------------------------ long form
     def to_long(self):

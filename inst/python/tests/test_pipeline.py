@@ -20,8 +20,15 @@ def test_generate_returns_grasps_and_array(hm, models):
     x = hm.generate(models, grasp="Power Sphere", n=10, seed=2)
     assert len(x) == 10 and len(x.dofs) == 16
     assert set(x.meta["grasp"]) == {"Power Sphere"}
-    g, arr = hm.generate(models, grasp="Power Sphere", n=4, seed=2, as_array=True)
-    assert arr.shape[0] == 4 and arr.shape[2] == 16
+    arr = x.as_array()
+    longest = int(x.meta["n_frames"].max())
+    assert arr.shape == (10, longest, 16)
+    first = x.recordings[0]
+    np.testing.assert_array_equal(arr[0, :first.shape[0]], first)
+    assert np.isnan(arr[0, first.shape[0]:]).all()
+    with pytest.warns(DeprecationWarning):
+        old = hm.generate(models, grasp="Power Sphere", n=4, seed=2, as_array=True)
+    assert isinstance(old, np.ndarray) and old.shape[0] == 4
     # same seed, same numbers; and the same as R's generate() for that seed
     again = hm.generate(models, grasp="Power Sphere", n=10, seed=2)
     for a, b in zip(x.recordings, again.recordings):
