@@ -36,7 +36,7 @@
 #' p <- dtw_align_pair(x, y)
 #' p$distance
 #' head(cbind(p$index1, p$index2))
-#' @export
+#' @noRd
 dtw_align_pair <- function(x, template, engine = c("fast", "reference"), window = NULL) {
   call <- rlang::caller_env()
   engine <- check_choice(engine, arg = "engine", call = call)
@@ -81,7 +81,7 @@ dtw_pair_reference <- function(x, template, window) {
 #' warping against a template refined by DTW barycenter averaging (DBA):
 #' the initial template is the mean of all recordings linearly resampled to
 #' `L`; each iteration aligns every recording to the template
-#' ([dtw_align_pair()]) and replaces template frame `j` by the mean of all
+#' (`dtw_align_pair()`) and replaces template frame `j` by the mean of all
 #' recording frames matched to it, until the relative change of the template
 #' (Frobenius norm) is below `tol` or after `max_iter` iterations.
 #'
@@ -113,12 +113,12 @@ dtw_pair_reference <- function(x, template, window) {
 #' @param target_length Length `L` of the warped recordings; default
 #'   `round(mean(n_frames))`.
 #' @param engine `"fast"` or `"reference"` pairwise DTW (see
-#'   [dtw_align_pair()]).
+#'   `dtw_align_pair()`).
 #' @param max_iter Maximum number of DBA iterations (0 = align to the linear
 #'   mean only).
 #' @param tol Convergence tolerance on the relative template change.
 #' @param max_stall Longest allowed stall, as a fraction of `L`.
-#' @param window Optional DTW window half-width (see [dtw_align_pair()]).
+#' @param window Optional DTW window half-width (see `dtw_align_pair()`).
 #' @param features What DTW compares. `"shape"` (default): each recording's
 #'   DoFs centred on the midpoint of its start and end postures and scaled by
 #'   their standard deviation, so that differences in posture and excursion

@@ -228,8 +228,8 @@ as.data.frame.grasp_classification <- function(x, row.names = NULL, optional = F
 #' @param x A [grasps()] object (labelled) when `models` are models.
 #' @return A numeric matrix with rows = model and columns = true type (types
 #'   present in `x`, in Feix order), dimnames named `model` and `truth`.
-#'   [distance_minima()] counts its row and column minima.
-#' @seealso [classify()], [distance_minima()]
+#'   `distance_minima()` counts its row and column minima.
+#' @seealso [classify()], `distance_minima()`
 #' @export
 #' @examples
 #' set.seed(1)
@@ -270,11 +270,10 @@ distance_table <- function(models, x = NULL) {
 #' @return A one-row data frame: `models`, `types`, `model_min_own_type`,
 #'   `type_min_own_model`, `both`, `models_never_min`, and `most_attracting`
 #'   (the model that is the minimum of most types) with `n_attracted`.
-#' @export
+#' @noRd
 #' @examples
 #' tab <- matrix(c(1, 3, 2, 2, 1, 3, 4, 2, 5), 3,
 #'               dimnames = list(model = c("A", "B", "C"), truth = c("A", "B", "C")))
-#' distance_minima(tab)
 distance_minima <- function(tab) {
   models <- rownames(tab)
   types <- colnames(tab)

@@ -71,8 +71,8 @@
 #'   component), `argvals`, `weights` (the trapezoidal quadrature weights used
 #'   for inner products and norms), `delta`, `rangeval`, `n`, `ncomp`,
 #'   `engine` and `notes` (character vector of recorded special cases).
-#' @seealso [fpca_project()], [fpca_reconstruct()], [fpca_residual_norm()].
-#' @export
+#' @seealso `fpca_project()`, `fpca_reconstruct()`, `fpca_residual_norm()`.
+#' @noRd
 #' @examples
 #' t <- seq(0, 1, length.out = 30)
 #' Y <- outer(rnorm(40), sin(pi * t)) + outer(rnorm(40, sd = 0.3), cos(pi * t))
@@ -290,11 +290,11 @@ fpca_sign <- function(phi, weights) {
 #' fit used (trapezoidal rule on its grid): `<Y_i - mean, phi_r>`. On the
 #' curves the model was fitted to this returns `fit$scores`.
 #'
-#' @param fit An [fpca_fit()] object.
+#' @param fit An `fpca_fit()` object.
 #' @param Ynew Curves on the fit's grid: an `m x L` matrix, a numeric vector of
 #'   length `L` (one curve), or an `fdata` object.
 #' @return An `m x ncomp` matrix of scores.
-#' @export
+#' @noRd
 #' @examples
 #' t <- seq(0, 1, length.out = 30)
 #' Y <- outer(rnorm(40), sin(pi * t)) + outer(rnorm(40, sd = 0.3), cos(pi * t))
@@ -311,10 +311,10 @@ fpca_project <- function(fit, Ynew) {
 #' `mean + scores %*% t(components)`: the curves a set of scores stands for,
 #' as used to generate new motion from sampled scores.
 #'
-#' @param fit An [fpca_fit()] object.
+#' @param fit An `fpca_fit()` object.
 #' @param scores An `m x ncomp` matrix (or a vector of length `ncomp`).
 #' @return An `m x L` matrix of curves.
-#' @export
+#' @noRd
 #' @examples
 #' t <- seq(0, 1, length.out = 30)
 #' Y <- outer(rnorm(40), sin(pi * t)) + outer(rnorm(40, sd = 0.3), cos(pi * t))
@@ -343,7 +343,7 @@ fpca_reconstruct <- function(fit, scores) {
 #'
 #' @inheritParams fpca_project
 #' @return A numeric vector of length `m`.
-#' @export
+#' @noRd
 #' @examples
 #' t <- seq(0, 1, length.out = 30)
 #' Y <- outer(rnorm(40), sin(pi * t)) + outer(rnorm(40, sd = 0.3), cos(pi * t))

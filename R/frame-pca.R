@@ -48,8 +48,8 @@
 #'   `loadings_raw` and `weights_raw` (before repair), `frame_mean` (L x p),
 #'   `frame_var_explained` (L x d proportions of each frame's variance),
 #'   `sign_flips` (data frame: `component`, `raw`, `aligned` counts),
-#'   `flip_frames` (logical L x d, raw flips), `fpca` (one [fpca_fit()] per
-#'   PC), `gmm` (one [gmm_fit()] per PC), `reconstruction` (data frame: `id`,
+#'   `flip_frames` (logical L x d, raw flips), `fpca` (one `fpca_fit()` per
+#'   PC), `gmm` (one `gmm_fit()` per PC), `reconstruction` (data frame: `id`,
 #'   `frame_pca_rmse`, `fpca_rmse`), `align_signs`, `d`, `k`, `ids`, `dofs`,
 #'   `grasp`.
 #' @seealso [autoplot.frame_pca_model()], [fit_grasp_model()] (the model that

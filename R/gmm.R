@@ -76,8 +76,8 @@ gmm_det_floor <- 1e-8
 #'   `means` (`k x d`), `covs` (`d x d x k`), `loglik` (of `X` under the fit),
 #'   `iterations`, `converged`, `fallback`, `reason` (`NA` unless
 #'   `fallback`), `engine`, `n` and `colnames`.
-#' @seealso [gmm_sample()], [gmm_density()], [gmm_loglik()].
-#' @export
+#' @seealso `gmm_sample()`, `gmm_density()`, `gmm_loglik()`.
+#' @noRd
 #' @examples
 #' X <- rbind(matrix(rnorm(100), 50), matrix(rnorm(100, mean = 4), 50))
 #' fit <- gmm_fit(X, k = 2)
@@ -623,12 +623,12 @@ gmm_points <- function(fit, X, call) {
 #' covariance (a fallback fitted to collinear or identical points) has its
 #' density taken on its support, and zero off it.
 #'
-#' @param fit A [gmm_fit()] object.
+#' @param fit A `gmm_fit()` object.
 #' @param X An `m x d` matrix of points (a vector of length `d` is one point;
 #'   for `d = 1` a vector is a set of points).
 #' @return `gmm_density()`: a numeric vector of length `m`; `gmm_loglik()`:
 #'   a number.
-#' @export
+#' @noRd
 #' @examples
 #' X <- rbind(matrix(rnorm(100), 50), matrix(rnorm(100, mean = 4), 50))
 #' fit <- gmm_fit(X)
@@ -641,8 +641,7 @@ gmm_density <- function(fit, X) {
   exp(gmm_log_density(fit$weights, fit$means, fit$covs, X))
 }
 
-#' @rdname gmm_density
-#' @export
+#' @noRd
 gmm_loglik <- function(fit, X) {
   call <- rlang::caller_env()
   check_gmm_fit(fit, call)
@@ -657,10 +656,10 @@ gmm_loglik <- function(fit, X) {
 #' covariance, so singular fallback covariances and point masses work too).
 #' Uses the random number generator: set a seed first for reproducible draws.
 #'
-#' @param fit A [gmm_fit()] object.
+#' @param fit A `gmm_fit()` object.
 #' @param n Number of draws.
 #' @return An `n x d` matrix.
-#' @export
+#' @noRd
 #' @examples
 #' X <- rbind(matrix(rnorm(100), 50), matrix(rnorm(100, mean = 4), 50))
 #' fit <- gmm_fit(X)

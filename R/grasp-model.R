@@ -16,12 +16,12 @@
 #'    a degenerate warp (one frame repeated over a long stretch, Figure 5.1)
 #'    are dropped, and linear warping is used only if the alignment fails;
 #' 3. functional PCA with `ncomp` components per DoF on the warped curves
-#'    ([fpca_fit()]), with the variance each component explains;
+#'    (`fpca_fit()`), with the variance each component explains;
 #' 4. functional PCA with `warp_ncomp` components on the warping functions,
 #'    which are kept in original frames so that one component captures the
 #'    variation in duration;
 #' 5. a `k`-component Gaussian mixture per DoF on the FPC scores, and one on
-#'    the warp scores ([gmm_fit()], with EM capped at 5000 iterations,
+#'    the warp scores (`gmm_fit()`, with EM capped at 5000 iterations,
 #'    recorded as `settings$gmm_max_iter`); when EM fails the mixture is
 #'    replaced by a single Gaussian with the sample mean and covariance
 #'    (Table 5.1).
@@ -65,9 +65,9 @@
 #'   `dofs`, `rate`, `unit`, `target_length`, `argvals`, `n_input`, `n_used`,
 #'   `ids` (recordings used), `removed` (data frame: `id`, `n_frames`, `reason`,
 #'   `detail`), `warping` (method, fallback reason, engine, ...), `fpca` (one
-#'   [fpca_fit()] per DoF), `basis` (`mean` L x p and `components`
+#'   `fpca_fit()` per DoF), `basis` (`mean` L x p and `components`
 #'   L x p x ncomp arrays), `var_explained` (p x ncomp proportions), `scores`
-#'   (n x p x ncomp array), `gmm` (one [gmm_fit()] per DoF), `warp` (the warp
+#'   (n x p x ncomp array), `gmm` (one `gmm_fit()` per DoF), `warp` (the warp
 #'   FPCA, scores and mixture), `fallbacks` (data frame: `step`, `dof`,
 #'   `reason`), `settings`, `engine`, `timing` (seconds per step) and, with
 #'   `keep_data`, `data` (warped array n x L x p, warps n x L, frame counts).

@@ -217,7 +217,7 @@ as_feix_grasp <- function(x, ids = NULL, call = rlang::caller_env()) {
 #' @param x A [grasps()] object.
 #' @return `recordings()` gives the list of frames x DoF matrices, named by
 #'   recording id; `grasp_meta()` the metadata data frame.
-#' @export
+#' @noRd
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:2, objects = 1, trials = 1)
 #' dim(recordings(g)[[1]])
@@ -227,8 +227,7 @@ recordings <- function(x) {
   x$recordings
 }
 
-#' @rdname recordings
-#' @export
+#' @noRd
 grasp_meta <- function(x) {
   check_grasps(x)
   x$meta

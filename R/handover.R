@@ -41,7 +41,7 @@
 #'
 #' @param reference A [grasps()] object recorded with the full marker set
 #'   (joint angles; markers are computed by [markers_from_angles()]).
-#' @param markers Marker names (see [hand_marker_set()]), or a number `n` to
+#' @param markers Marker names (see `hand_marker_set()`), or a number `n` to
 #'   use `select_markers(reference, n)`.
 #' @param ncomp Number of principal components regressed and back-projected;
 #'   `NULL` for all (one per DoF).
@@ -686,7 +686,7 @@ handover_pca_error <- function(reference, data = NULL) {
 #' @param x A [grasps()] object.
 #' @return A list of frames x DoF score matrices (columns `PC1`, ...), named
 #'   by recording id.
-#' @export
+#' @noRd
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:3, objects = 1, trials = 1)
 #' fit <- fit_handover(g, markers = 3)

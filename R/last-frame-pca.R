@@ -11,7 +11,7 @@
 #' For every grasp type in `x`, takes the last frame of each recording, centres
 #' on the type's mean last frame and computes its principal components (no
 #' scaling: all DoFs share the angle unit). Used by [classify()] with
-#' `method = "last_frame"`; [cumulative_variance()] gives the thesis' Table 5.7.
+#' `method = "last_frame"`; `cumulative_variance()` gives the thesis' Table 5.7.
 #'
 #' A type with `n` recordings has at most `n - 1` informative PCs. When
 #' `n - 1 < k` the type uses `n - 1` components (0 for a single recording:
@@ -26,7 +26,7 @@
 #' @return An object of class `last_frame_pca`: a list with `models` (one per
 #'   type: `mean`, `rotation`, `sdev`, `cumvar`, `n`), `k`, `k_used` (named
 #'   integer), `dofs` and `n_unlabelled`.
-#' @seealso [cumulative_variance()], [classify()], [predict.last_frame_pca()]
+#' @seealso `cumulative_variance()`, [classify()], [predict.last_frame_pca()]
 #' @export
 #' @examples
 #' set.seed(1)
@@ -35,7 +35,7 @@
 #'                                     subject = rep(paste0("s", 1:6), each = 2)))
 #' fit <- fit_last_frame_pca(g, k = 2)
 #' fit
-#' cumulative_variance(fit)[, 1:5]
+#' summary(fit)
 fit_last_frame_pca <- function(x, k = 5, grasps = NULL) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
@@ -114,7 +114,7 @@ pca_of_frames <- function(frames) {
 #'   `pc1` ... `pc<p>`, the cumulative fraction of variance explained by the
 #'   first 1 ... p principal components of the type's last frames (`NA` for a
 #'   type with one recording or no variance).
-#' @export
+#' @noRd
 #' @examples
 #' set.seed(2)
 #' recs <- lapply(1:8, function(i) matrix(rnorm(5 * 16), 5, 16))

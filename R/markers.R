@@ -68,7 +68,7 @@ hand_marker_set <- function() {
 #' little-finger base knuckles. Like the set in the paper it has no marker on
 #' the middle and ring fingers, whose motion must then be inferred.
 #'
-#' @return A character vector of six marker names from [hand_marker_set()].
+#' @return A character vector of six marker names from `hand_marker_set()`.
 #' @export
 #' @examples
 #' handpicked_markers()
@@ -79,12 +79,12 @@ handpicked_markers <- function() {
 #' Virtual marker positions from joint angles
 #'
 #' Runs [forward_kinematics()] and places each marker of `markers` on the
-#' skeleton (see [hand_marker_set()]). Positions are in mm, relative to the
+#' skeleton (see `hand_marker_set()`). Positions are in mm, relative to the
 #' root link.
 #'
 #' @param x A frames x DoF matrix of joint angles, or a [grasps()] object.
 #' @param skeleton A `hand_skeleton` (default [hand_skeleton()]).
-#' @param markers The marker set: a data frame like [hand_marker_set()], or
+#' @param markers The marker set: a data frame like `hand_marker_set()`, or
 #'   marker names (rows of `hand_marker_set()`). By default the 13 hand
 #'   markers; the forearm markers are constant in the root frame and are only
 #'   included when asked for by name or with `forearm = TRUE`.

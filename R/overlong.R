@@ -48,20 +48,18 @@ print.overlong_rule <- function(x, ...) {
 #'   recording of one grasp type. Missing values are an error.
 #' @param rule An [overlong_rule()].
 #' @return A logical vector as long as `n_frames`, `TRUE` = remove; names are
-#'   kept. [overlong_threshold()] gives the frame count above which recordings
+#'   kept. `overlong_threshold()` gives the frame count above which recordings
 #'   are removed.
 #' @examples
 #' n <- c(40, 42, 38, 45, 41, 39, 44, 43, 110)
 #' find_overlong(n)
-#' overlong_threshold(n)
 #' @export
 find_overlong <- function(n_frames, rule = overlong_rule()) {
   call <- rlang::caller_env()
   n_frames > overlong_threshold_impl(n_frames, rule, call)
 }
 
-#' @rdname find_overlong
-#' @export
+#' @noRd
 overlong_threshold <- function(n_frames, rule = overlong_rule()) {
   overlong_threshold_impl(n_frames, rule, rlang::caller_env())
 }

@@ -11,8 +11,8 @@
 #' by the model's mean warping function \eqn{\bar w}, normalised to \[0, 1\]
 #' and mapped onto the recording's frames `1..n`, and evaluated there by
 #' linear interpolation. Each DoF is then projected onto the model's FPCs
-#' ([fpca_project()]); the residual norm per DoF is the L2 norm of the warped
-#' curve minus its projection ([fpca_residual_norm()]), and `distance` is
+#' (`fpca_project()`); the residual norm per DoF is the L2 norm of the warped
+#' curve minus its projection (`fpca_residual_norm()`), and `distance` is
 #' the square root of the sum over DoFs of the squared residual norms
 #' (eq. 4.4 over the whole hand).
 #'

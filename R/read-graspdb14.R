@@ -73,7 +73,7 @@ graspdb14_nominal_rate <- 60
 #' dir <- system.file("extdata", "graspdb14", package = "handmotion")
 #' g <- read_graspdb14(dir)
 #' g
-#' grasp_meta(g)[, c("id", "grasp", "object", "scenario", "file_rate")]
+#' g$meta[, c("id", "grasp", "object", "scenario", "file_rate")]
 #' one <- read_graspdb14(file.path(dir, "01_11_ex03-rad-001-grasp-su01.txt"))
 #' one$rate
 read_graspdb14 <- function(path, recursive = FALSE, pattern = "\\.txt$", datatype = NULL,

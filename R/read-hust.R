@@ -61,7 +61,7 @@ hust_manifest_name <- "manifest.csv"
 #' dir <- system.file("extdata", "hust", package = "handmotion")
 #' g <- read_hust(dir)
 #' g
-#' grasp_meta(g)
+#' g$meta
 read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = NA,
                       rate = NULL, unit = NULL, file_pattern = "\\.(csv|txt)$",
                       recursive = FALSE, truncated = c("error", "drop")) {

@@ -11,7 +11,7 @@
 #' @return A data frame with one row per run: `segment` (running number),
 #'   `state` (0 or 1), `start` and `end` (frames, inclusive), `n_frames`.
 #' @seealso [segment_by_switch()]
-#' @export
+#' @noRd
 #' @examples
 #' switch_segments(c(1, 1, 1, 0, 0, 1, 1, 0))
 switch_segments <- function(switch) {
@@ -60,7 +60,7 @@ check_switch <- function(switch, n = NULL, call = rlang::caller_env()) {
 #'   `end_frame` and, when the parent has time stamps, `start_time_s`
 #'   (seconds since the parent's first frame). Each segment keeps the matching
 #'   slices of the `"switch"` and `"time"` attributes.
-#' @seealso [switch_segments()], [read_graspdb14()]
+#' @seealso `switch_segments()`, [read_graspdb14()]
 #' @export
 #' @examples
 #' g <- read_graspdb14(system.file("extdata", "graspdb14", "00_calib-rad-su01.txt",

@@ -72,7 +72,7 @@
 #' g <- simulate_grasps(subjects = 3, grasps = c("Medium Wrap", "Tripod"), seed = 1)
 #' g
 #' summary(g)
-#' head(grasp_meta(g))
+#' head(g$meta)
 simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 3, rate = 50, seed = 1,
                             overlong = TRUE, params = simulator_params()) {
   call <- rlang::caller_env()

@@ -5,42 +5,104 @@
 
 #' The thesis' chapter-5 tables, ours beside the published values
 #'
-#' Each function returns a data frame ready for `knitr::kable()`, one row per
-#' grasp type, with our values and the thesis' published value (prefixed
-#' `thesis_`) side by side where one exists (see [thesis_results]).
+#' `thesis_table(id, ...)` returns one of the tables of chapter 5 of Jeppsson
+#' (2017) as a data frame ready for `knitr::kable()`, one row per grasp type,
+#' with our values and the thesis' published value (prefixed `thesis_`) side by
+#' side where one exists (see [thesis_results]).
 #'
-#' * `table_5_1()`: warping target length, warping method (DTW or the linear
-#'   fallback) and the DoFs whose mixture fell back to a single Gaussian, plus
-#'   how many recordings were used and removed.
-#' * `table_5_2()`: variance explained (percent) by two FPCs per DoF, summarised
-#'   over DoFs: min, median, mean and max.
-#' * `table_5_3()`: mean FPCA distance x 100 / T (rows = model, columns = true
-#'   type); `table_5_3_claims()` checks the counts section 5.2 states about it.
-#' * `table_5_6()` / `table_5_8()`: per true type, the correctly classified
-#'   recordings (the confusion-matrix diagonal), the total and the recall, for
-#'   the FPCA and the last-frame PCA classifier; an optional held-out
+#' * `"5.1"` (`models`): warping target length, warping method (DTW or the
+#'   linear fallback) and the DoFs whose mixture fell back to a single
+#'   Gaussian, plus how many recordings were used and removed.
+#' * `"5.2"` (`models`): variance explained (percent) by two FPCs per DoF,
+#'   summarised over DoFs: min, median, mean and max.
+#' * `"5.3"` (`classification`, optional `x`): mean FPCA distance x 100 / T
+#'   (rows = model, columns = true type); `"5.3 claims"` checks the counts
+#'   section 5.2 states about it (attribute `most_attracting`: the model that is
+#'   closest for the most types).
+#' * `"5.6"` / `"5.8"` (`confusion`, optional `held_out`): per true type, the
+#'   correctly classified recordings (the confusion-matrix diagonal), the total
+#'   and the recall, for the FPCA and the last-frame PCA classifier; a held-out
 #'   (leave-one-subject-out) confusion matrix adds its recall beside.
-#' * `table_5_7()`: cumulative variance explained by the first PCs of
-#'   last-frame PCA per type.
+#' * `"5.7"` (`fit`, optional `pcs`): cumulative variance explained by the
+#'   first PCs of last-frame PCA per type.
 #'
-#' @param models A [fit_grasp_models()] result.
+#' The numbered functions `table_5_1()` ... `table_5_8()` and
+#' `table_5_3_claims()` of earlier versions are deprecated aliases.
+#'
+#' @param id Which table: `"5.1"`, `"5.2"`, `"5.3"`, `"5.3 claims"`, `"5.6"`,
+#'   `"5.7"` or `"5.8"`.
+#' @param ... The table's inputs, named as listed above: `models` (a
+#'   [fit_grasp_models()] result), `classification` (a [classify()] result of
+#'   the FPCA classifier) and `x`, `confusion` (a [grasp_confusion()] or
+#'   [classify()] result) and `held_out` (a [grasp_confusion()] of a held-out
+#'   evaluation, [evaluate_loso()]; its recall is added as `recall_held_out`),
+#'   `fit` (a [fit_last_frame_pca()] result) and `pcs` (which cumulative
+#'   proportions to show; default the first five, as the thesis classifies
+#'   with five PCs).
 #' @return A data frame.
-#' @name thesis_tables
+#' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = c(9, 22), objects = 2, trials = 2, seed = 1)
 #' ms <- fit_grasp_models(g, seed = 1)
-#' table_5_1(ms)
-#' table_5_2(ms)
+#' thesis_table("5.1", models = ms)
+#' thesis_table("5.2", models = ms)
 #' cl <- classify(ms, g)
-#' table_5_3(cl)
-#' table_5_6(as_grasp_confusion(cl))
+#' thesis_table("5.3", classification = cl)
+#' thesis_table("5.6", confusion = as_grasp_confusion(cl))
 #' lf <- fit_last_frame_pca(g, k = 2)
-#' table_5_7(lf, pcs = 1:3)
-NULL
+#' thesis_table("5.7", fit = lf, pcs = 1:3)
+thesis_table <- function(id = c("5.1", "5.2", "5.3", "5.3 claims", "5.6", "5.7", "5.8"), ...) {
+  call <- rlang::caller_env()
+  if (is.numeric(id)) id <- format(id, nsmall = 1)
+  id <- check_choice(id, arg = "id", call = call)
+  build <- switch(id,
+    "5.1" = thesis_table_5_1, "5.2" = thesis_table_5_2, "5.3" = thesis_table_5_3,
+    "5.3 claims" = thesis_table_5_3_claims, "5.6" = thesis_table_5_6,
+    "5.7" = thesis_table_5_7, "5.8" = thesis_table_5_8)
+  args <- list(...)
+  known <- names(formals(build))
+  if (length(args) && (is.null(names(args)) || any(!nzchar(names(args))) ||
+                       any(!names(args) %in% known))) {
+    hm_abort(c("Table {id} takes {.arg {known}}, named.",
+               x = "Got: {.val {names(args) %||% rep('(unnamed)', length(args))}}."),
+             "bad_input", argument = "...", call = call)
+  }
+  do.call(build, args)
+}
 
-#' @rdname thesis_tables
+# Deprecated numbered aliases (0.1.0): each says once per session what to call instead.
+#' @rdname handmotion-deprecated
 #' @export
-table_5_1 <- function(models) {
+table_5_1 <- function(models) deprecated_alias("table_5_1()", 'thesis_table("5.1", models = )', thesis_table_5_1(models))
+#' @rdname handmotion-deprecated
+#' @export
+table_5_2 <- function(models) deprecated_alias("table_5_2()", 'thesis_table("5.2", models = )', thesis_table_5_2(models))
+#' @rdname handmotion-deprecated
+#' @export
+table_5_3 <- function(classification, x = NULL) {
+  deprecated_alias("table_5_3()", 'thesis_table("5.3", classification = )', thesis_table_5_3(classification, x))
+}
+#' @rdname handmotion-deprecated
+#' @export
+table_5_3_claims <- function(classification, x = NULL) {
+  deprecated_alias("table_5_3_claims()", 'thesis_table("5.3 claims", classification = )',
+                   thesis_table_5_3_claims(classification, x))
+}
+#' @rdname handmotion-deprecated
+#' @export
+table_5_6 <- function(confusion, held_out = NULL) {
+  deprecated_alias("table_5_6()", 'thesis_table("5.6", confusion = )', thesis_table_5_6(confusion, held_out))
+}
+#' @rdname handmotion-deprecated
+#' @export
+table_5_7 <- function(fit, pcs = 1:5) deprecated_alias("table_5_7()", 'thesis_table("5.7", fit = )', thesis_table_5_7(fit, pcs))
+#' @rdname handmotion-deprecated
+#' @export
+table_5_8 <- function(confusion, held_out = NULL) {
+  deprecated_alias("table_5_8()", 'thesis_table("5.8", confusion = )', thesis_table_5_8(confusion, held_out))
+}
+
+thesis_table_5_1 <- function(models) {
   s <- model_summary(models)
   out <- data.frame(grasp_id = s$grasp_id, grasp = s$grasp, n_used = s$n_used,
                     n_overlong = s$n_overlong, n_degenerate = s$n_degenerate,
@@ -52,9 +114,7 @@ table_5_1 <- function(models) {
            em_failed_dofs = "thesis_em_failed_dofs"))
 }
 
-#' @rdname thesis_tables
-#' @export
-table_5_2 <- function(models) {
+thesis_table_5_2 <- function(models) {
   s <- model_summary(models)
   out <- data.frame(grasp_id = s$grasp_id, grasp = s$grasp, min = s$min_var,
                     median = s$median_var, mean = s$mean_var, max = s$max_var)
@@ -67,12 +127,7 @@ table_5_2 <- function(models) {
         "thesis_mean", "diff_mean", "max", "thesis_max")]
 }
 
-#' @rdname thesis_tables
-#' @param classification A [classify()] result with `method = "fpca"` (or
-#'   `grasp_models`, then `x` is classified first).
-#' @param x A labelled [grasps()] object, when `classification` is models.
-#' @export
-table_5_3 <- function(classification, x = NULL) {
+thesis_table_5_3 <- function(classification, x = NULL) {
   tab <- distance_table(classification, x)
   out <- as.data.frame(unclass(tab), stringsAsFactors = FALSE, check.names = FALSE)
   ids <- match(colnames(tab), feix_levels())
@@ -81,33 +136,22 @@ table_5_3 <- function(classification, x = NULL) {
         stringsAsFactors = FALSE)
 }
 
-#' @rdname thesis_tables
-#' @export
-table_5_3_claims <- function(classification, x = NULL) {
+thesis_table_5_3_claims <- function(classification, x = NULL) {
   tab <- distance_table(classification, x)
   mins <- distance_minima(tab)
   th <- handmotion::thesis_results$table_5_3_claims
   ours <- as.integer(unlist(mins[th$claim]))
-  data.frame(claim = th$claim, description = th$description, ours = ours, thesis = th$thesis,
-             stringsAsFactors = FALSE)
+  out <- data.frame(claim = th$claim, description = th$description, ours = ours, thesis = th$thesis,
+                    stringsAsFactors = FALSE)
+  attr(out, "most_attracting") <- mins$most_attracting
+  out
 }
 
-#' @rdname thesis_tables
-#' @param confusion A [grasp_confusion()] (or [classify()] result) of the
-#'   in-sample classification.
-#' @param held_out Optional [grasp_confusion()] of a held-out evaluation
-#'   ([evaluate_loso()]); its recall is added as `recall_loso`.
-#' @export
-table_5_6 <- function(confusion, held_out = NULL) {
+thesis_table_5_6 <- function(confusion, held_out = NULL) {
   diagonal_table(confusion, held_out, handmotion::thesis_results$table_5_6_diagonal)
 }
 
-#' @rdname thesis_tables
-#' @param fit A [fit_last_frame_pca()] result.
-#' @param pcs Which cumulative proportions to show (default the first five: the
-#'   thesis classifies with five PCs).
-#' @export
-table_5_7 <- function(fit, pcs = 1:5) {
+thesis_table_5_7 <- function(fit, pcs = 1:5) {
   cv <- cumulative_variance(fit)
   cols <- paste0("pc", pcs)
   th <- handmotion::thesis_results$table_5_7
@@ -120,9 +164,7 @@ table_5_7 <- function(fit, pcs = 1:5) {
   out
 }
 
-#' @rdname thesis_tables
-#' @export
-table_5_8 <- function(confusion, held_out = NULL) {
+thesis_table_5_8 <- function(confusion, held_out = NULL) {
   diagonal_table(confusion, held_out, handmotion::thesis_results$table_5_8_diagonal)
 }
 
@@ -142,7 +184,7 @@ diagonal_table <- function(confusion, held_out, thesis) {
     hc <- vapply(types, function(t) if (t %in% rownames(h) && t %in% colnames(h)) h[t, t] else NA_real_,
                  numeric(1))
     ht <- vapply(types, function(t) if (t %in% colnames(h)) sum(h[, t]) else NA_real_, numeric(1))
-    out$recall_loso <- ifelse(ht > 0, hc / ht, NA_real_)
+    out$recall_held_out <- ifelse(ht > 0, hc / ht, NA_real_)
   }
   ref <- thesis[c("grasp_id", "correct", "total")]
   ref$recall <- ref$correct / ref$total

@@ -33,7 +33,7 @@
 #' dir <- tempfile("hust-")
 #' write_hust(g, dir)
 #' list.files(dir)
-#' all.equal(recordings(read_hust(dir)), recordings(g))
+#' all.equal(read_hust(dir)$recordings, g$recordings)
 write_hust <- function(x, dir, file_names = NULL, sep = ",", header = FALSE, digits = 15L,
                        manifest = "manifest.csv", overwrite = FALSE) {
   call <- rlang::caller_env()

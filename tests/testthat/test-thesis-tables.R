@@ -23,7 +23,7 @@ thesis_rows <- function(tab, ids) tab[match(ids, tab$grasp_id), , drop = FALSE]
 
 test_that("table_5_1 lays our warping and fallbacks beside the thesis'", {
   d <- small_design()
-  t51 <- table_5_1(d$ms)
+  t51 <- thesis_table("5.1", models = d$ms)
   expect_s3_class(t51, "data.frame")
   expect_named(t51, c("grasp_id", "grasp", "n_used", "n_overlong", "n_degenerate", "target_frames",
                       "warping", "em_fallback_dofs", "thesis_target_frames", "thesis_warping",
@@ -42,7 +42,7 @@ test_that("table_5_1 lays our warping and fallbacks beside the thesis'", {
 
 test_that("table_5_2 summarises variance explained over DoFs, ours beside the thesis'", {
   d <- small_design()
-  t52 <- table_5_2(d$ms)
+  t52 <- thesis_table("5.2", models = d$ms)
   expect_named(t52, c("grasp_id", "grasp", "min", "thesis_min", "median", "thesis_median", "mean",
                       "thesis_mean", "diff_mean", "max", "thesis_max"))
   expect_equal(nrow(t52), 3L)
@@ -61,15 +61,15 @@ test_that("table_5_2 summarises variance explained over DoFs, ours beside the th
 
 test_that("table_5_3 is the distance table with ids as columns, and its claims count its minima", {
   d <- small_design()
-  t53 <- table_5_3(d$cl)
+  t53 <- thesis_table("5.3", classification = d$cl)
   expect_named(t53, c("model_id", "model", "3", "9", "17"))
   expect_equal(t53$model_id, c(3L, 9L, 17L))
   dt <- distance_table(d$cl)
   expect_equal(unname(as.matrix(t53[c("3", "9", "17")])), unname(unclass(dt)))
   # a model passed with its data gives the same table
-  expect_equal(table_5_3(d$ms, d$g), t53)
+  expect_equal(thesis_table("5.3", classification = d$ms, x = d$g), t53)
 
-  claims <- table_5_3_claims(d$cl)
+  claims <- thesis_table("5.3 claims", classification = d$cl)
   expect_named(claims, c("claim", "description", "ours", "thesis"))
   expect_equal(claims$claim, thesis_results$table_5_3_claims$claim)
   expect_equal(claims$thesis, thesis_results$table_5_3_claims$thesis)
@@ -82,7 +82,7 @@ test_that("table_5_3 is the distance table with ids as columns, and its claims c
 
 test_that("tables 5.6 and 5.8 hold the confusion diagonal, with the held-out recall when given", {
   d <- small_design()
-  t56 <- table_5_6(d$cl)
+  t56 <- thesis_table("5.6", confusion = d$cl)
   expect_named(t56, c("grasp_id", "grasp", "correct", "total", "recall", "thesis_correct",
                       "thesis_total", "thesis_recall"))
   p <- d$cl$predictions
@@ -95,13 +95,13 @@ test_that("tables 5.6 and 5.8 hold the confusion diagonal, with the held-out rec
   expect_equal(t56$thesis_correct, th$correct)
   expect_equal(t56$thesis_recall, th$correct / th$total)
 
-  t58 <- table_5_8(d$cl_lf, held_out = d$ev$confusion)
-  expect_named(t58, c("grasp_id", "grasp", "correct", "total", "recall", "recall_loso",
+  t58 <- thesis_table("5.8", confusion = d$cl_lf, held_out = d$ev$confusion)
+  expect_named(t58, c("grasp_id", "grasp", "correct", "total", "recall", "recall_held_out",
                       "thesis_correct", "thesis_total", "thesis_recall"))
   held <- d$ev$predictions
   held_ok <- as.character(held$truth) == as.character(held$predicted)
   held_ok[is.na(held_ok)] <- FALSE
-  expect_equal(t58$recall_loso,
+  expect_equal(t58$recall_held_out,
                as.numeric(tapply(held_ok, factor(as.character(held$truth), levels = t58$grasp), mean)))
   th8 <- thesis_rows(thesis_results$table_5_8_diagonal, t58$grasp_id)
   expect_equal(t58$thesis_total, th8$total)
@@ -109,7 +109,7 @@ test_that("tables 5.6 and 5.8 hold the confusion diagonal, with the held-out rec
 
 test_that("table_5_7 interleaves our cumulative variance with the thesis'", {
   d <- small_design()
-  t57 <- table_5_7(d$lf, pcs = 1:3)
+  t57 <- thesis_table("5.7", fit = d$lf, pcs = 1:3)
   expect_named(t57, c("grasp_id", "grasp", "pc1", "thesis_pc1", "pc2", "thesis_pc2", "pc3", "thesis_pc3"))
   cv <- cumulative_variance(d$lf)
   expect_equal(t57$pc3, cv$pc3[match(t57$grasp_id, cv$grasp_id)])
@@ -118,15 +118,28 @@ test_that("table_5_7 interleaves our cumulative variance with the thesis'", {
 })
 
 test_that("table functions reject the wrong objects with a classed error", {
-  expect_error(table_5_1(list()), class = "handmotion_error_bad_input")
-  expect_error(table_5_2("models"), class = "handmotion_error_bad_input")
-  expect_error(table_5_7(list()), class = "handmotion_error_bad_input")
+  expect_error(thesis_table("5.1", models = list()), class = "handmotion_error_bad_input")
+  expect_error(thesis_table("5.2", models = "models"), class = "handmotion_error_bad_input")
+  expect_error(thesis_table("5.7", fit = list()), class = "handmotion_error_bad_input")
 })
 
 test_that("printed tables are stable", {
   d <- small_design()
-  t51 <- table_5_1(d$ms)
+  t51 <- thesis_table("5.1", models = d$ms)
   expect_snapshot(print(t51[c("grasp", "target_frames", "thesis_target_frames", "warping", "thesis_warping")],
                         row.names = FALSE))
-  expect_snapshot(print(table_5_3_claims(d$cl)[c("claim", "thesis")], row.names = FALSE))
+  expect_snapshot(print(thesis_table("5.3 claims", classification = d$cl)[c("claim", "thesis")], row.names = FALSE))
+})
+
+test_that("thesis_table() refuses unknown tables and arguments; the numbered names still work, once warned", {
+  d <- small_design()
+  expect_error(thesis_table("5.9", models = d$ms), class = "handmotion_error_bad_input")
+  expect_error(thesis_table("5.1", d$ms), class = "handmotion_error_bad_input")
+  expect_error(thesis_table("5.1", model = d$ms), class = "handmotion_error_bad_input")
+  rm(list = ls(deprecation_state), envir = deprecation_state)
+  expect_warning(old <- table_5_1(d$ms), class = "handmotion_warning_deprecated")
+  expect_identical(old, thesis_table("5.1", models = d$ms))
+  expect_no_warning(table_5_1(d$ms))   # once per session
+  expect_identical(attr(thesis_table("5.3 claims", classification = d$cl), "most_attracting"),
+                   distance_minima(distance_table(d$cl))$most_attracting)
 })

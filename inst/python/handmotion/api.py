@@ -192,7 +192,7 @@ def classify(models, x, method="fpca", **kwargs):
     Returns a dict with ``predictions`` (DataFrame), ``confusion`` (DataFrame, rows =
     predicted model, columns = true type), ``accuracy`` (float), ``metrics`` (DataFrame
     of R's ``summary()``) and ``classification`` (a handle on the R result, for
-    :func:`table_5_3` and :func:`table_5_6`).
+    :func:`thesis_table`).
     """
     if method not in ("fpca", "last_frame"):
         raise BadInputError(f"method must be 'fpca' or 'last_frame', not {method!r}")
@@ -215,7 +215,7 @@ def classify(models, x, method="fpca", **kwargs):
 
 def fit_last_frame_pca(x, k=5, **kwargs):
     """Per-type PCA of the recordings' last frames (the thesis' baseline); a handle for
-    :func:`classify` and :func:`table_5_7`."""
+    :func:`classify` and :func:`thesis_table`."""
     return RHandle(call("fit_last_frame_pca", _as_grasps(x), k=_check_count(k, "k"), **kwargs))
 
 
@@ -238,23 +238,35 @@ def evaluate_loso(x, method="fpca", folds=None, seed=1, **kwargs):
             "evaluation": RHandle(res)}
 
 
-def _table(name):
-    def fn(*args, **kwargs):
-        return r_to_py(call(name, *args, **kwargs))
+def thesis_table(id, **kwargs):
+    """One of the thesis' chapter-5 tables as a pandas DataFrame, ours beside the published values.
+
+    ``id`` is ``"5.1"``, ``"5.2"``, ``"5.3"``, ``"5.3 claims"``, ``"5.6"``, ``"5.7"`` or ``"5.8"``;
+    the table's inputs are named as in R's ``thesis_table()``: ``models`` (from
+    :func:`fit_grasp_models`), ``classification`` (``classify(...)["classification"]``),
+    ``confusion`` and ``held_out``, ``fit`` (from :func:`fit_last_frame_pca`) and ``pcs``.
+    """
+    return r_to_py(call("thesis_table", str(id), **kwargs))
+
+
+def _deprecated_table(name, id, arg):
+    def fn(first, *args, **kwargs):
+        warnings.warn(f"{name}() is deprecated; use thesis_table({id!r}, {arg}=...)", DeprecationWarning,
+                      stacklevel=2)
+        extra = dict(zip({"5.3": ["x"], "5.6": ["held_out"], "5.8": ["held_out"], "5.7": ["pcs"]}.get(id, []), args))
+        return thesis_table(id, **{arg: first}, **extra, **kwargs)
 
     fn.__name__ = name
-    fn.__doc__ = (f"The thesis' {name.replace('table_', 'Table ').replace('_', '.')} as a pandas DataFrame, "
-                  "with the published value beside ours where one exists. Arguments as in R's "
-                  f"``{name}()``.")
+    fn.__doc__ = f"Deprecated: use ``thesis_table({id!r}, {arg}=...)``."
     return fn
 
 
-table_5_1 = _table("table_5_1")
-table_5_2 = _table("table_5_2")
-table_5_3 = _table("table_5_3")
-table_5_6 = _table("table_5_6")
-table_5_7 = _table("table_5_7")
-table_5_8 = _table("table_5_8")
+table_5_1 = _deprecated_table("table_5_1", "5.1", "models")
+table_5_2 = _deprecated_table("table_5_2", "5.2", "models")
+table_5_3 = _deprecated_table("table_5_3", "5.3", "classification")
+table_5_6 = _deprecated_table("table_5_6", "5.6", "confusion")
+table_5_7 = _deprecated_table("table_5_7", "5.7", "fit")
+table_5_8 = _deprecated_table("table_5_8", "5.8", "confusion")
 
 
 # ---------------------------------------------------------------- hand-over

@@ -61,18 +61,21 @@ def test_generate_needs_models(hm):
 
 
 def test_tables_and_held_out(hm, models, small):
-    t1 = hm.table_5_1(models)
+    t1 = hm.thesis_table("5.1", models=models)
     assert {"grasp", "target_frames", "thesis_target_frames"}.issubset(t1.columns)
     assert len(t1) == 3
-    t2 = hm.table_5_2(models)
+    t2 = hm.thesis_table("5.2", models=models)
     assert {"mean", "thesis_mean"}.issubset(t2.columns)
     res = hm.classify(models, small, method="fpca")
-    t3 = hm.table_5_3(res["classification"])
+    t3 = hm.thesis_table("5.3", classification=res["classification"])
     assert t3.shape[0] == 3
-    t6 = hm.table_5_6(res["classification"])
+    t6 = hm.thesis_table("5.6", confusion=res["classification"])
     assert {"correct", "thesis_correct", "recall"}.issubset(t6.columns)
     lf = hm.fit_last_frame_pca(small, k=2)
-    t7 = hm.table_5_7(lf, pcs=[1, 2])
+    t7 = hm.thesis_table("5.7", fit=lf, pcs=[1, 2])
+    with pytest.warns(DeprecationWarning):
+        old = hm.table_5_7(lf, pcs=[1, 2])
+    assert old.equals(t7)
     assert list(t7.columns)[:4] == ["grasp_id", "grasp", "pc1", "thesis_pc1"]
     ev = hm.evaluate_loso(small, method="last_frame", fit_args={"k": 2})
     assert 0 <= ev["accuracy"]["held_out"] <= 1
