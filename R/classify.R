@@ -35,13 +35,14 @@
 #' projection fails gives a column of `NA` distances, recorded in `$failures`
 #' with a warning; a recording with no finite distance gets `NA` as prediction.
 #'
-#' @param models Fitted models (`grasp_models` or `last_frame_pca`), or a
-#'   `grasps` training set.
+#' @param models Fitted models: a [fit_grasp_models()] result (FPCA distance)
+#'   or a [fit_last_frame_pca()] result. A `grasps` object is refused with a
+#'   hint: fitting is a separate, visible step (for a held-out estimate see
+#'   [evaluate_loso()], which fits on training subjects only).
 #' @param x A [grasps()] object to classify.
 #' @param method `"fpca"` or `"last_frame"`. Inferred from `models` when it is
 #'   a fitted object; giving a method that contradicts it is an error.
-#' @param ... Arguments passed to [fit_grasp_models()] or [fit_last_frame_pca()]
-#'   when `models` is a `grasps` training set.
+#' @param ... Not used; an error if given.
 #' @return An object of class `grasp_classification`: a list with
 #'   `predictions` (data frame: `id`, `subject`, `truth`, `predicted`,
 #'   `distance` to the chosen model), `distances` (numeric matrix, recordings x
@@ -54,14 +55,25 @@
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' cl <- classify(g, g, method = "last_frame", k = 2)
+#' lf <- fit_last_frame_pca(g, k = 2)
+#' cl <- classify(lf, g)
 #' cl
 #' as_grasp_confusion(cl)
 classify <- function(models, x, method = c("fpca", "last_frame"), ...) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
+  rlang::check_dots_empty(error = function(cnd) {
+    hm_abort(c("{.fn classify} takes fitted models and the recordings, nothing more.",
+               i = "Give fitting arguments to {.fn fit_grasp_models} or {.fn fit_last_frame_pca}."),
+             "bad_input", argument = "...", call = call)
+  })
+  if (inherits(models, "grasps")) {
+    hm_abort(c("{.arg models} must be fitted models, not a {.cls grasps} object.",
+               i = "Fit first: {.code classify(fit_grasp_models(train), x)} or {.code classify(fit_last_frame_pca(train), x)}.",
+               i = "{.fn evaluate_loso} fits on training subjects and classifies the held-out ones."),
+             "bad_input", argument = "models", call = call)
+  }
   method <- resolve_method(models, method, missing(method), call = call)
-  if (inherits(models, "grasps")) models <- fit_classifier(models, method, list(...))
   res <- classifier_distances(models, x, method, call = call)
   new_classification(res$distances, x$meta, method, res$target_length, res$failures)
 }
@@ -69,13 +81,13 @@ classify <- function(models, x, method = c("fpca", "last_frame"), ...) {
 resolve_method <- function(models, method, defaulted, call = rlang::caller_env()) {
   implied <- if (inherits(models, "last_frame_pca")) "last_frame"
              else if (inherits(models, "grasp_models")) "fpca" else NA_character_
-  if (is.na(implied) && !inherits(models, "grasps")) {
-    hm_abort("{.arg models} must be a {.cls grasp_models}, {.cls last_frame_pca} or {.cls grasps} object, not {.obj_type_friendly {models}}.",
+  if (is.na(implied)) {
+    hm_abort("{.arg models} must be a {.cls grasp_models} or {.cls last_frame_pca} object, not {.obj_type_friendly {models}}.",
              "bad_input", argument = "models", call = call)
   }
-  if (defaulted) return(if (is.na(implied)) "fpca" else implied)
+  if (defaulted) return(implied)
   method <- check_choice(method, c("fpca", "last_frame"), arg = "method", call = call)
-  if (!is.na(implied) && method != implied) {
+  if (method != implied) {
     hm_abort("{.arg method} is {.val {method}} but {.arg models} is a {.cls {class(models)[1]}} ({.val {implied}}) fit.",
              "bad_input", argument = "method", call = call)
   }
@@ -193,7 +205,8 @@ print.grasp_classification <- function(x, ...) {
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' cl <- classify(g, g, method = "last_frame", k = 2)
+#' lf <- fit_last_frame_pca(g, k = 2)
+#' cl <- classify(lf, g)
 #' summary(cl)
 #' head(as.data.frame(cl))
 #' ggplot2::autoplot(cl)

@@ -184,10 +184,10 @@ def generate(models, grasp=None, n=1, seed=None, as_array=False, **kwargs):
 def classify(models, x, method="fpca", **kwargs):
     """Classify recordings by distance to each model (``"fpca"``) or by last-frame PCA (``"last_frame"``).
 
-    ``models`` is a :class:`GraspModels` (for ``"fpca"``) or a :class:`Grasps`
-    training set (models are fitted on it first, with ``k`` etc. in ``kwargs``).
-    For ``"last_frame"`` with a :class:`GraspModels`, the last-frame PCA models are
-    fitted on ``x`` itself, which is what the thesis did (in-sample).
+    ``models`` are fitted models: a :class:`GraspModels` from :func:`fit_grasp_models`
+    (``method="fpca"``) or a handle from :func:`fit_last_frame_pca` (``"last_frame"``).
+    Nothing is fitted here: a :class:`Grasps` is refused (fit first; for a held-out
+    estimate use :func:`evaluate_loso`).
 
     Returns a dict with ``predictions`` (DataFrame), ``confusion`` (DataFrame, rows =
     predicted model, columns = true type), ``accuracy`` (float), ``metrics`` (DataFrame
@@ -196,11 +196,11 @@ def classify(models, x, method="fpca", **kwargs):
     """
     if method not in ("fpca", "last_frame"):
         raise BadInputError(f"method must be 'fpca' or 'last_frame', not {method!r}")
+    if isinstance(models, Grasps):
+        raise BadInputError("models must be fitted: fit_grasp_models(train) or fit_last_frame_pca(train); "
+                            "evaluate_loso() fits on training subjects and classifies the held-out ones")
     g = _as_grasps(x)
     ro = r()
-    if method == "last_frame" and isinstance(models, GraspModels):
-        # last-frame PCA has its own per-type models; like the thesis, fit them on x itself
-        models = g
     res = call("classify", models, g, method=method, **kwargs)
     conf = call("as_grasp_confusion", res)
     table = ro.r["as.data.frame.matrix"](ro.r["unclass"](conf.rx2("table")))

@@ -44,7 +44,8 @@ def test_generate_identical_to_r(hm, ro, models):
 
 
 def test_classify(hm, models, small):
-    res = hm.classify(models, small, method="last_frame")
+    lf = hm.fit_last_frame_pca(small, k=2)
+    res = hm.classify(lf, small, method="last_frame")
     assert 0 <= res["accuracy"] <= 1
     conf = res["confusion"]
     assert conf.shape == (3, 3)
@@ -53,6 +54,11 @@ def test_classify(hm, models, small):
     assert 0 <= res2["accuracy"] <= 1
     with pytest.raises(hm.BadInputError):
         hm.classify(models, small, method="nope")
+    # fitting is never implicit: a Grasps is refused, and a model of the other kind too
+    with pytest.raises(hm.BadInputError):
+        hm.classify(small, small, method="last_frame")
+    with pytest.raises(hm.BadInputError):
+        hm.classify(models, small, method="last_frame")
 
 
 def test_generate_needs_models(hm):
