@@ -86,8 +86,8 @@ fit_frame_pca_model <- function(x, d = 3, k = 2, align_signs = FALSE, nbasis = 1
     hm_abort("The frame-PCA model needs at least {max(2, k + 1)} aligned recordings, not {n}.",
              "too_few_recordings", call = call)
   }
-  ids <- value_or(dimnames(W)[[1]], paste0("r", seq_len(n)))
-  dofs <- value_or(dimnames(W)[[3]], paste0("dof", seq_len(p)))
+  ids <- dimnames(W)[[1]] %||% paste0("r", seq_len(n))
+  dofs <- dimnames(W)[[3]] %||% paste0("dof", seq_len(p))
   per_frame <- frame_pcas(W, d)
   raw_flips <- sign_flip_frames(per_frame$loadings)
   loadings <- per_frame$loadings

@@ -168,9 +168,9 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
     target_length = L, argvals = argvals,
     n_input = prep$n_input, n_used = n, ids = prep$ids,
     removed = prep$removed,
-    warping = list(method = aln$method, fallback_reason = value_or(aln$fallback_reason, NA_character_),
-                   iterations = value_or(aln$iterations, NA_integer_),
-                   converged = value_or(aln$converged, NA), engine = engines$align),
+    warping = list(method = aln$method, fallback_reason = (aln$fallback_reason %||% NA_character_),
+                   iterations = (aln$iterations %||% NA_integer_),
+                   converged = (aln$converged %||% NA), engine = engines$align),
     fpca = fpca, basis = basis, var_explained = var_explained, scores = scores, gmm = gmm,
     warp = list(fpca = warp_fit, mean = as.numeric(warp_fit$mean),
                 components = matrix(warp_fit$components, L), scores = matrix(warp_fit$scores, n),
@@ -224,7 +224,7 @@ prepare_alignment <- function(x, settings, engines, call) {
   }
   if (identical(aln$method, "linear") && !identical(settings$warping, "linear")) {
     fallbacks <- add_fallback(fallbacks, "warping", NA_character_,
-                              paste("linear warping:", value_or(aln$fallback_reason, "unspecified")))
+                              paste("linear warping:", (aln$fallback_reason %||% "unspecified")))
   }
   deg <- aln$degenerate
   if (!is.null(deg) && nrow(deg) > 0L) {
@@ -389,6 +389,12 @@ select_one_type <- function(x, grasp, call) {
                "too_few_recordings", argument = "grasp", call = call)
     }
   }
+  unlabelled <- is.na(x$meta$grasp)
+  if (any(unlabelled)) {
+    hm_abort(c("{sum(unlabelled)} of the {length(x)} recording{?s} in {.arg x} ha{?s/ve} no grasp type label.",
+               i = "A model is fitted to the recordings of one labelled type; first unlabelled: {.val {x$meta$id[unlabelled][1]}}."),
+             "no_labels", argument = "x", call = call)
+  }
   types <- unique(as.character(x$meta$grasp))
   if (length(types) > 1L) {
     hm_abort(c("{.arg x} holds {length(types)} grasp types; {.fn fit_grasp_model} fits one.",
@@ -398,9 +404,6 @@ select_one_type <- function(x, grasp, call) {
   }
   x
 }
-
-# `a`, or `b` when `a` is NULL (a missing optional field of an alignment).
-value_or <- function(a, b) if (is.null(a)) b else a
 
 #' @export
 print.grasp_model <- function(x, ...) {

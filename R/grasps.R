@@ -54,9 +54,23 @@ grasps <- function(recordings, meta = NULL, dofs = NULL, rate = 50, unit = "deg"
   }
   check_rate(rate, call = call)
   unit <- check_unit(unit, call = call)
-  ids <- if (!is.null(meta) && "id" %in% names(meta)) as.character(meta$id) else NULL
-  if (is.null(ids)) ids <- names(recordings)
-  if (is.null(ids) || anyNA(ids) || any(ids == "")) ids <- paste0("r", seq_along(recordings))
+  # ids: meta$id, else the names of `recordings`, else r1, r2, ...; a missing
+  # or empty id among given ones is an error (renaming them all would lose
+  # the ids that were there)
+  from <- if (!is.null(meta) && "id" %in% names(meta)) "meta$id" else if (!is.null(names(recordings))) "names(recordings)" else NULL
+  ids <- switch(from %||% "none", "meta$id" = as.character(meta$id),
+                "names(recordings)" = names(recordings), NULL)
+  if (!is.null(ids) && length(ids) == length(recordings) && (anyNA(ids) || any(ids == ""))) {
+    if (from == "names(recordings)" && all(is.na(ids) | ids == "")) {
+      ids <- NULL
+    } else {
+      bad <- which(is.na(ids) | ids == "")
+      hm_abort(c("Recording id{?s} {from} must not be missing or empty.",
+                 x = "Missing at position{?s} {bad}."),
+               "bad_input", argument = if (from == "meta$id") "meta" else "recordings", call = call)
+    }
+  }
+  if (is.null(ids)) ids <- paste0("r", seq_along(recordings))
   recordings <- lapply(seq_along(recordings), function(i) {
     as_recording_matrix(recordings[[i]], ids[i], call = call)
   })

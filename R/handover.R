@@ -84,6 +84,8 @@ fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth =
     hm_abort(c("Marker{?s} {.val {setdiff(markers, hand)}} ride{?s/} on the root link and {?is/are} constant there.",
                i = "Use hand markers for hand-over."), "bad_markers", argument = "markers", call = call)
   }
+  ridge <- check_number(ridge, "ridge", min = 0, min_open = TRUE, call = call)
+  eps <- check_number(eps, "eps", min = 0, min_open = TRUE, call = call)
   model <- handover_build(ref_all, do.call(rbind, reference$recordings), markers,
                           ncomp = ncomp, k = k, smooth = smooth, filter_size = filter_size,
                           method = method, ridge = ridge, eps = eps, rate = reference$rate,
@@ -252,7 +254,7 @@ lwr_predict_r <- function(ref_x, ref_y, query, k, ridge, eps, block = 256L) {
 #'   frames x (3 * m) matrix of recorded marker positions relative to the
 #'   root link (one recording), or a list of such matrices. Matrix columns
 #'   named `<marker>.x`, `.y`, `.z` may come in any order and extra markers
-#'   are ignored; unnamed columns must follow the order of `model$markers`.
+#'   are ignored; unnamed columns are an error (their order cannot be checked).
 #' @param ... Unused.
 #' @details **Occlusion.** A marker with any missing (`NA`/`NaN`) coordinate
 #'   in a frame is dropped from that frame's distance and regression, which
@@ -339,12 +341,12 @@ as_query_markers <- function(m, cols, i, call) {
                "bad_markers", argument = "query", recording = i, call = call)
     }
     m <- m[, cols, drop = FALSE]
-  } else if (ncol(m) != length(cols)) {
-    hm_abort(c("Query {i} has {ncol(m)} column{?s}; the model's {length(cols) / 3} marker{?s} need {length(cols)}.",
-               i = "Give 3 columns (x, y, z) per marker, in the order of {.code model$markers}, or name them."),
-             "bad_markers", argument = "query", recording = i, call = call)
   } else {
-    colnames(m) <- cols
+    # unnamed columns cannot be checked: in another order than the model's
+    # they would give a plausible but wrong hand
+    hm_abort(c("Query {i} has unnamed columns; name them {.val {utils::head(cols, 3)}}, ... (x, y, z per marker).",
+               i = "{.fn markers_from_angles} returns named marker columns."),
+             "bad_markers", argument = "query", recording = i, call = call)
   }
   if (nrow(m) == 0L) {
     hm_abort("Query {i} has no frames.", "bad_markers", argument = "query", recording = i, call = call)

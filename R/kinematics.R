@@ -258,7 +258,15 @@ fk_input <- function(x, unit, call) {
     recs <- list(x = x)
     if (is.null(unit)) unit <- "deg"
   }
-  if (!unit %in% c("deg", "rad")) {
+  if (anyNA(dofs) || any(!nzchar(dofs)) || anyDuplicated(dofs)) {
+    # two columns named alike would drive one joint twice (the hand posed
+    # millimetres off without a word)
+    dup <- unique(dofs[duplicated(dofs) & !is.na(dofs)])
+    hm_abort(c("The DoF names of {.arg x} must be unique and non-empty.",
+               x = if (length(dup)) "Repeated: {.val {dup}}." else "Some names are empty or NA."),
+             "bad_input", argument = "x", call = call)
+  }
+  if (!is.character(unit) || length(unit) != 1L || !unit %in% c("deg", "rad")) {
     hm_abort(c("Cannot pose a hand from angles in unit {.val {unit}}.",
                i = "Forward kinematics needs degrees or radians; raw sensor counts must be calibrated first."),
              "bad_input", argument = "unit", call = call)

@@ -137,6 +137,17 @@ read_graspdb14 <- function(path, recursive = FALSE, pattern = "\\.txt$", datatyp
 read_graspdb14_file <- function(file, truncated = "error", call = rlang::caller_env()) {
   info <- parse_graspdb14_name(file, call = call)
   content <- parse_graspdb14_content(file, truncated = truncated, call = call)
+  # raw CyberGlove counts are whole numbers: a "raw" file with fractional
+  # values holds something else (radians under the wrong name)
+  if (identical(info$datatype, "raw")) {
+    frac <- which(abs(content$angles - round(content$angles)) > 1e-8, arr.ind = TRUE)
+    if (nrow(frac)) {
+      abort_bad_file(c("{.file {file}} is named as raw sensor counts but holds fractional values.",
+                       i = "First at data row {frac[1, 1]}, sensor {colnames(content$angles)[frac[1, 2]]}: {.val {content$angles[frac[1, 1], frac[1, 2]]}}.",
+                       i = "Radians belong in a file named {.val -rad-}."),
+                     "bad_value", file = file, call = call)
+    }
+  }
   list(info = info, content = content, file = file)
 }
 
@@ -238,6 +249,15 @@ parse_graspdb14_content <- function(file, truncated = "error", call = rlang::cal
   if (length(bad_t)) {
     abort_bad_file("Impossible date or time in {.file {file}}, line {line_no[bad_t[1]]}: {.val {paste(m[bad_t[1], 1:6], collapse = ' ')}}.",
                    "bad_value", file = file, line = line_no[bad_t[1]], call = call)
+  }
+  # time must move forward: a stamp at or before its predecessor would give a
+  # negative or zero duration and a wrong sampling rate
+  back <- which(diff(stamp) <= 0)
+  if (length(back)) {
+    k <- back[1] + 1L
+    abort_bad_file(c("Time stamps do not increase in {.file {file}}: line {line_no[k]} is {if (stamp[k] == stamp[k - 1L]) 'the same time as' else 'earlier than'} line {line_no[k - 1L]}.",
+                     i = "{length(back)} such line{?s} in the file."),
+                   "bad_value", file = file, line = line_no[k], call = call)
   }
   elapsed <- stamp - stamp[1]
   n <- nrow(m)

@@ -35,6 +35,7 @@ write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate 
                       scale = 1, ...) {
   call <- rlang::caller_env()
   check_skeleton(skeleton, call = call)
+  scale <- check_number(scale, "scale", min = 0, min_open = TRUE, call = call)
   dots <- list(...)
   if (inherits(x, "grasps")) {
     if (is.character(recording)) recording <- match(recording, x$meta$id)

@@ -53,6 +53,8 @@ write_graspdb14 <- function(x, dir, file_names = NULL, start_time = "2014-01-01 
                i = "Convert the angles to radians first (unit {.val rad})."),
              "bad_input", argument = "x", call = call)
   }
+  # decimals of radians: fewer than 3 round by up to 0.05 degrees and more
+  digits <- check_whole(digits, "digits", min = 3, max = 10, call = call)
   start <- as_utc_time(start_time, call = call)
   if (is.null(file_names)) file_names <- graspdb14_file_names(x, call = call)
   if (length(file_names) != length(x) || anyDuplicated(file_names)) {
@@ -87,8 +89,18 @@ graspdb14_lines <- function(rec, start, rate, unit, digits, id, time = NULL, swi
                             call = rlang::caller_env()) {
   n <- nrow(rec)
   if (is.null(time) || length(time) != n) time <- (seq_len(n) - 1) / rate
+  # what read_graspdb14() would refuse is refused here, naming the recording
+  if (anyNA(time) || any(!is.finite(time)) || (n > 1L && any(diff(time) <= 0))) {
+    hm_abort(c("Recording {.val {id}} has time stamps that are missing or do not increase.",
+               i = "Its {.code time} attribute must be finite and strictly increasing (seconds from the start)."),
+             "bad_recording", recording = id, call = call)
+  }
   sw <- switch
   if (is.null(sw) || length(sw) != n) sw <- rep(1L, n)
+  if (anyNA(sw) || any(!sw %in% c(0, 1))) {
+    hm_abort("Recording {.val {id}} has a {.code switch} attribute with values other than 0 and 1.",
+             "bad_recording", recording = id, call = call)
+  }
   # round the absolute time to the written precision before splitting it,
   # so that 59.999996 s becomes the next minute rather than "60.00000"
   t <- round(start + time, 5)

@@ -46,7 +46,10 @@ write_hust <- function(x, dir, file_names = NULL, sep = ",", header = FALSE, dig
                  "Convert GraspDB14 recordings with {.fn graspdb14_to_hust} first." else NULL),
              "bad_input", argument = "x", call = call)
   }
-  if (!sep %in% c(",", ";")) {
+  # fewer significant digits would round angles by whole degrees (the file
+  # would read back as other grasps); more than 17 add nothing to a double
+  digits <- check_whole(digits, "digits", min = 6, max = 17, call = call)
+  if (!is.character(sep) || length(sep) != 1L || !sep %in% c(",", ";")) {
     hm_abort("{.arg sep} must be {.val ,} or {.val ;}, not {.val {sep}}.", "bad_input",
              argument = "sep", call = call)
   }

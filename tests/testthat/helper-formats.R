@@ -31,3 +31,13 @@ hust_fixture <- function(n_rec = 3, n_frames = 12) {
                                  object = c("ball", "pen", "cup", "box", "can")[seq_len(n_rec)],
                                  trial = seq_len(n_rec)))
 }
+
+# Two short GraspDB14 recordings (23 sensors, radians, 60 Hz) that
+# write_graspdb14() can name and read_graspdb14() reads back.
+graspdb14_fixture_grasps <- function() {
+  recs <- withr::with_seed(3, lapply(c(12, 10), function(k) matrix(stats::runif(k * 23, -1.6, 1.6), k, 23)))
+  grasps(recs, meta = data.frame(id = c("a", "b"), grasp = c(11, 11), subject = c("su03", "su04"),
+                                 object = c("Tennis ball (64 mm diameter)", "Tennis ball (64 mm diameter)"),
+                                 trial = c(4, 7)),
+         dofs = cyberglove_sensors$name, rate = 60, unit = "rad")
+}

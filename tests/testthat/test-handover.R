@@ -62,8 +62,9 @@ test_that("a marker matrix query gives the same result as the grasps query; colu
   # extra named markers (e.g. the full set) are ignored
   all13 <- markers_from_angles(g1)[[1]]
   expect_equal(reconstruct(fit, all13)$recordings[[1]], b$recordings[[1]])
-  # unnamed columns are taken in model order
-  expect_equal(reconstruct(fit, unname(mk))$recordings[[1]], b$recordings[[1]])
+  # unnamed columns are refused: in another order they would give a wrong hand
+  expect_error(reconstruct(fit, unname(mk)), class = "handmotion_error_bad_markers")
+  expect_error(reconstruct(fit, unname(mk[, rev(seq_len(ncol(mk)))])), class = "handmotion_error_bad_markers")
 })
 
 test_that("wrong marker sets are refused with classed errors", {

@@ -22,13 +22,13 @@ test_that("write_hust then read_hust round trips a simulated set", {
 test_that("semicolon files with a header, fewer digits, custom names", {
   g <- hust_fixture(2)
   dir <- withr::local_tempdir()
-  paths <- write_hust(g, dir, sep = ";", header = TRUE, digits = 4, file_names = c("a.txt", "b.txt"))
+  paths <- write_hust(g, dir, sep = ";", header = TRUE, digits = 6, file_names = c("a.txt", "b.txt"))
   lines <- readLines(paths[1])
   expect_identical(lines[1], paste(hust_dofs$name, collapse = ";"))
   expect_match(lines[2], "^[0-9]+,[0-9]+;")
   h <- read_hust(dir)
   expect_identical(h$meta$id, g$meta$id)
-  expect_equal(unname(h$recordings[[2]]), unname(signif(g$recordings[[2]], 4)))
+  expect_equal(unname(h$recordings[[2]]), unname(signif(g$recordings[[2]], 6)))
 })
 
 test_that("DoFs in another order are written in the HUST order", {

@@ -1,0 +1,98 @@
+# Bad input that used to give a silent wrong answer or a file the readers
+# reject: each is now a classed error naming the offending argument,
+# recording or line. (issue "Robust at scale": fix the class, not the example)
+
+test_that("forward kinematics refuses duplicated DoF names", {
+  x <- matrix(10, 2, 16, dimnames = list(NULL, hust_dofs$name))
+  colnames(x)[6] <- colnames(x)[5]
+  expect_error(forward_kinematics(x, hand_skeleton()), class = "handmotion_error_bad_input")
+  expect_error(forward_kinematics(x, hand_skeleton()), "Repeated")
+  expect_error(forward_kinematics(x[, 1:16], hand_skeleton(), unit = c("deg", "rad")),
+               class = "handmotion_error_bad_input")
+})
+
+test_that("grasps() refuses missing ids instead of renaming every recording", {
+  r <- list(matrix(1, 3, 2), matrix(2, 3, 2))
+  expect_error(grasps(r, meta = data.frame(id = c("a", NA)), dofs = c("u", "v")),
+               class = "handmotion_error_bad_input")
+  expect_error(grasps(stats::setNames(r, c("a", "")), dofs = c("u", "v")),
+               class = "handmotion_error_bad_input")
+  # no ids at all still get r1, r2, ...
+  expect_identical(grasps(r, dofs = c("u", "v"))$meta$id, c("r1", "r2"))
+})
+
+test_that("a model is not fitted to unlabelled recordings", {
+  g <- simulate_grasps(subjects = 2, grasps = 9, objects = 2, trials = 2, seed = 1)
+  g$meta$grasp[] <- NA
+  expect_error(fit_grasp_model(g), class = "handmotion_error_no_labels")
+  g2 <- simulate_grasps(subjects = 2, grasps = 9, objects = 2, trials = 2, seed = 1)
+  g2$meta$grasp[1] <- NA
+  expect_error(fit_grasp_model(g2), class = "handmotion_error_bad_input")
+})
+
+test_that("writers refuse what their readers would refuse", {
+  g <- simulate_grasps(subjects = 1, grasps = 9, objects = 1, trials = 1, seed = 1)
+  dir <- withr::local_tempdir()
+  for (d in c(-1, 0, 2.5, 5, 18)) {
+    expect_error(write_hust(g, dir, digits = d, overwrite = TRUE), class = "handmotion_error_bad_input")
+  }
+  expect_error(write_hust(g, dir, sep = c(",", ";")), class = "handmotion_error_bad_input")
+  gd <- graspdb14_fixture_grasps()
+  for (d in c(-1, 0, 2, 11)) {
+    expect_error(write_graspdb14(gd, dir, digits = d, overwrite = TRUE), class = "handmotion_error_bad_input")
+  }
+  bad <- gd
+  attr(bad$recordings[[1]], "switch") <- rep(2L, nrow(bad$recordings[[1]]))
+  expect_error(write_graspdb14(bad, dir, overwrite = TRUE), class = "handmotion_error_bad_recording")
+  bad <- gd
+  tm <- (seq_len(nrow(bad$recordings[[1]])) - 1) / 60
+  tm[3] <- NA
+  attr(bad$recordings[[1]], "time") <- tm
+  expect_error(write_graspdb14(bad, dir, overwrite = TRUE), class = "handmotion_error_bad_recording")
+  attr(bad$recordings[[1]], "time") <- rev(sort(stats::na.omit(c(tm, 1))))
+  expect_error(write_graspdb14(bad, dir, overwrite = TRUE), class = "handmotion_error_bad_recording")
+  f <- withr::local_tempfile(fileext = ".bvh")
+  for (s in list(NaN, 0, -1, Inf, "a")) {
+    expect_error(write_bvh(g, f, scale = s), class = "handmotion_error_bad_input")
+  }
+})
+
+test_that("GraspDB14 files whose time stamps do not move forward are refused, naming the line", {
+  dir <- withr::local_tempdir()
+  gd <- graspdb14_fixture_grasps()
+  path <- write_graspdb14(gd[1], dir)
+  lines <- readLines(path)
+  swap <- lines
+  swap[c(4, 5)] <- lines[c(5, 4)]          # backwards
+  writeLines(swap, path)
+  cnd <- tryCatch(read_graspdb14(path), handmotion_error = function(e) e)
+  expect_s3_class(cnd, "handmotion_error_bad_file")
+  expect_identical(cnd$line, 5L)
+  same <- lines
+  same[5] <- sub("^(\\S+ \\S+ \\S+ \\S+ \\S+ \\S+)", sub("^((\\S+ ){5}\\S+).*", "\\1", lines[4]), lines[5])
+  writeLines(same, path)                    # repeated
+  expect_error(read_graspdb14(path), class = "handmotion_error_bad_value")
+  # in a directory read the bad file is reported and the good ones are read
+  writeLines(lines, file.path(dir, basename(sub("su", "su9", path))))
+  out <- suppressWarnings(read_graspdb14(dir))
+  expect_length(out, 1L)
+  expect_identical(nrow(read_failures(out)), 1L)
+})
+
+test_that("a file named raw that holds radians is refused", {
+  dir <- withr::local_tempdir()
+  gd <- graspdb14_fixture_grasps()
+  path <- write_graspdb14(gd[1], dir)
+  raw_name <- file.path(dir, sub("-rad-", "-raw-", basename(path)))
+  file.rename(path, raw_name)
+  expect_error(read_graspdb14(raw_name), class = "handmotion_error_bad_value")
+  expect_error(read_graspdb14(raw_name), "fractional")
+})
+
+test_that("hand-over refuses a non-positive ridge or eps", {
+  g <- simulate_grasps(subjects = 2, grasps = 1:2, objects = 1, trials = 1, seed = 1, overlong = FALSE)
+  for (r in list(0, -1, NA, "a")) {
+    expect_error(fit_handover(g, markers = 3, ridge = r), class = "handmotion_error_bad_input")
+    expect_error(fit_handover(g, markers = 3, eps = r), class = "handmotion_error_bad_input")
+  }
+})
