@@ -91,10 +91,11 @@ check_seed <- function(seed, arg = "seed", call = rlang::caller_env()) {
 # A numeric matrix (a data frame or, with `vector`, a numeric vector taken as
 # one column or one row), with at least `min_rows` x `min_cols` cells and, with
 # `finite`, only finite values; returned as a double matrix. `what` says what
-# the rows and columns are, for the message; a non-finite cell is named.
+# the rows and columns are, for the message; a non-finite cell is named by
+# `row_name` and `col_name` ("curve 3, point 7").
 as_numeric_matrix <- function(x, arg, what = "", finite = TRUE, vector = c("column", "row", "none"),
-                              min_rows = 1L, min_cols = 1L, ncol = NULL,
-                              call = rlang::caller_env()) {
+                              min_rows = 1L, min_cols = 1L, ncol = NULL, row_name = "row",
+                              col_name = "column", call = rlang::caller_env()) {
   vector <- vector[1]
   if (inherits(x, "fdata")) x <- x$data
   if (is.data.frame(x)) x <- as.matrix(x)
@@ -117,7 +118,7 @@ as_numeric_matrix <- function(x, arg, what = "", finite = TRUE, vector = c("colu
     bad <- which(!is.finite(x), arr.ind = TRUE)
     if (nrow(bad) > 0L) {
       hm_abort(c("{.arg {arg}} has {nrow(bad)} non-finite value{?s}.",
-                 x = "First at row {bad[1, 1]}, column {bad[1, 2]}."),
+                 x = "First at {row_name} {bad[1, 1]}, {col_name} {bad[1, 2]}."),
                "bad_input", argument = arg, recording = bad[1, 1], call = call)
     }
   }

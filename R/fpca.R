@@ -106,21 +106,8 @@ fpca_curves <- function(Y, argvals, arg = "Y", call = rlang::caller_env()) {
     rangeval <- Y$rangeval
     Y <- Y$data
   }
-  if (is.data.frame(Y)) Y <- as.matrix(Y)
-  if (!is.numeric(Y) || !is.matrix(Y)) {
-    hm_abort("{.arg {arg}} must be a numeric matrix with one curve per row or an {.cls fdata} object.",
-             "bad_input", argument = arg, call = call)
-  }
-  if (ncol(Y) < 2L || nrow(Y) < 1L) {
-    hm_abort("{.arg {arg}} must hold at least one curve of at least 2 points, not {nrow(Y)} x {ncol(Y)}.",
-             "bad_input", argument = arg, call = call)
-  }
-  bad <- which(!is.finite(Y), arr.ind = TRUE)
-  if (nrow(bad) > 0L) {
-    hm_abort(c("{.arg {arg}} has {nrow(bad)} non-finite value{?s}.",
-               x = "First at curve {bad[1, 1]}, point {bad[1, 2]}."),
-             "bad_input", argument = arg, recording = bad[1, 1], call = call)
-  }
+  Y <- as_numeric_matrix(Y, arg, " (one curve per row, at least 2 points)", vector = "none",
+                         min_cols = 2L, row_name = "curve", col_name = "point", call = call)
   L <- ncol(Y)
   if (is.null(argvals)) argvals <- seq(0, 1, length.out = L)
   if (!is.numeric(argvals) || length(argvals) != L || any(!is.finite(argvals)) ||
@@ -367,20 +354,10 @@ check_fpca_fit <- function(fit, arg = "fit", call = rlang::caller_env()) {
 
 fpca_new_curves <- function(fit, Ynew, call) {
   check_fpca_fit(fit, call = call)
-  L <- length(fit$mean)
-  if (inherits(Ynew, "fdata")) Ynew <- Ynew$data
-  if (is.null(dim(Ynew)) && is.numeric(Ynew) && length(Ynew) == L) Ynew <- matrix(Ynew, 1L)
-  if (is.data.frame(Ynew)) Ynew <- as.matrix(Ynew)
-  if (!is.numeric(Ynew) || !is.matrix(Ynew) || ncol(Ynew) != L) {
-    hm_abort("{.arg Ynew} must be a numeric matrix of curves with {L} columns (the fit's grid).",
-             "bad_input", argument = "Ynew", call = call)
-  }
-  bad <- which(!is.finite(Ynew), arr.ind = TRUE)
-  if (nrow(bad) > 0L) {
-    hm_abort("{.arg Ynew} has a non-finite value at curve {bad[1, 1]}, point {bad[1, 2]}.",
-             "bad_input", argument = "Ynew", recording = bad[1, 1], call = call)
-  }
-  unname(Ynew)
+  # a single curve may come as a plain vector (one row)
+  unname(as_numeric_matrix(Ynew, "Ynew", " of curves on the fit's grid", vector = "row",
+                           ncol = length(fit$mean), row_name = "curve", col_name = "point",
+                           call = call))
 }
 
 #' @export
