@@ -204,10 +204,9 @@ check_mapping <- function(mapping, skeleton, call) {
 #'   `"last"`.
 #' @param unit Angle unit of a matrix `x` (`"deg"` or `"rad"`); a `grasps`
 #'   object carries its own.
-#' @return For a matrix or a one-recording `grasps`, an array
-#'   `[frames, joints, 3]` (mm) with dimnames `list(NULL, joint names,
-#'   c("x", "y", "z"))`; for a larger `grasps`, a list of such arrays named by
-#'   recording id. Each array has an attribute `"fk"`: a list with `mode`, the
+#' @return For a matrix, an array `[frames, joints, 3]` (mm) with dimnames
+#'   `list(NULL, joint names, c("x", "y", "z"))`; for a `grasps` object, a list
+#'   of such arrays named by recording id (also for a set of one). Each array has an attribute `"fk"`: a list with `mode`, the
 #'   `mapping` rows applied, `deactivated` and `ignored` DoFs.
 #' @seealso [hand_pose()] to draw the result, [write_bvh()].
 #' @export
@@ -233,7 +232,9 @@ forward_kinematics <- function(x, skeleton = hand_skeleton(), mapping = NULL,
     fk_run(plan, rec, input$factor)
   })
   names(out) <- names(input$recordings)
-  if (length(out) == 1L) out[[1]] else out
+  # one class in, one class out: a matrix gives an array, a grasps set a list
+  # (of one or more), whatever its length
+  if (inherits(x, "grasps")) out else out[[1]]
 }
 
 fk_input <- function(x, unit, call) {

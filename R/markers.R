@@ -105,7 +105,6 @@ markers_from_angles <- function(x, skeleton = hand_skeleton(), markers = NULL,
   ms <- resolve_marker_set(markers, forearm = forearm, call = call)
   if (inherits(x, "grasps")) {
     pos <- forward_kinematics(x, skeleton = skeleton, ...)
-    if (length(x) == 1L) pos <- list(pos)   # FK returns a bare array for one recording
     out <- lapply(pos, place_markers, ms = ms, call = call)
     names(out) <- x$meta$id
     return(out)

@@ -47,7 +47,6 @@ test_that("per-frame PCA recovers a planted rank-2 posture model", {
 })
 
 test_that("without smoothing flips change nothing; with it the repair helps (thesis 5.1.2)", {
-  skip_if_not(exists("simulate_grasps", mode = "function"))
   g <- simulate_grasps(subjects = 6, grasps = 3, seed = 1)
   raw0 <- fit_frame_pca_model(g, nbasis = NULL, warping = "linear")
   fix0 <- fit_frame_pca_model(g, nbasis = NULL, warping = "linear", align_signs = TRUE)

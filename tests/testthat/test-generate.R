@@ -116,7 +116,6 @@ test_that("a model set generates each requested type with n grasps", {
 })
 
 test_that("generated grasps from simulated data have the type's length and plausible angles", {
-  skip_if_not(exists("simulate_grasps", mode = "function"))
   g <- simulate_grasps(subjects = 5, grasps = 17, seed = 2)
   m <- fit_grasp_model(g, seed = 1)
   new <- generate(m, n = 200, seed = 1)

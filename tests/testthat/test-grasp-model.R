@@ -172,7 +172,6 @@ test_that("print and summary list what was removed and what fell back", {
 })
 
 test_that("simulated grasps fit with DTW and explain most of the variance", {
-  skip_if_not(exists("simulate_grasps", mode = "function"))
   g <- simulate_grasps(subjects = 5, grasps = 3, seed = 1)
   m <- fit_grasp_model(g, seed = 1)
   expect_identical(m$grasp, "Medium Wrap")

@@ -88,7 +88,6 @@ test_that("progress is reported through progressr, once per type", {
 })
 
 test_that("simulated data: all types present fit, with their target lengths", {
-  skip_if_not(exists("simulate_grasps", mode = "function"))
   g <- simulate_grasps(subjects = 4, grasps = c(1, 9, 22), seed = 1)
   ms <- fit_grasp_models(g, seed = 1)
   expect_named(ms, c("Large Diameter", "Palmar Pinch", "Parallel Extension"))

@@ -121,20 +121,17 @@ def hand_skeleton():
 def forward_kinematics(x, skeleton=None, mode="plain", deactivate=None, **kwargs):
     """3-D joint positions (mm) over time.
 
-    Returns a numpy array frames x joints x 3 for one recording (a 2-D array or a
-    :class:`Grasps` of one), or a list of such arrays for a larger set; the joint
-    names are in the ``joints`` attribute of the returned array's first axis order
-    (see :func:`joint_names`).
+    Returns a numpy array frames x joints x 3 for a 2-D array ``x``, and a list of
+    such arrays (one per recording, also for a set of one) for a :class:`Grasps`;
+    the joints follow :func:`joint_names`.
     """
+    single = isinstance(x, np.ndarray) and x.ndim == 2
     g = _as_grasps(x)
     kw = dict(mode=mode, deactivate=deactivate, **kwargs)
     if skeleton is not None:
         kw["skeleton"] = skeleton
-    res = call("forward_kinematics", g, **kw)
-    ro = r()
-    if "list" in list(ro.r["class"](res)):
-        return [r_array(a) for a in res]
-    return r_array(res)
+    res = [r_array(a) for a in call("forward_kinematics", g, **kw)]
+    return res[0] if single else res
 
 
 def joint_names(skeleton=None):

@@ -68,7 +68,10 @@ def test_skeleton_fk_and_bvh(hm, small, tmp_path):
     sk = hm.hand_skeleton()
     joints = sk.joints
     assert "root" in joints["name"].tolist()
-    pos = hm.forward_kinematics(small[0])
+    one = hm.forward_kinematics(small[0])          # a Grasps of one: still a list
+    assert isinstance(one, list) and len(one) == 1
+    pos = hm.forward_kinematics(small.recordings[0])  # a 2-D array: an array
+    np.testing.assert_array_equal(pos, one[0])
     assert pos.ndim == 3 and pos.shape[0] == small.recordings[0].shape[0] and pos.shape[2] == 3
     assert pos.shape[1] == len(hm.joint_names())
     many = hm.forward_kinematics(small[:2])
