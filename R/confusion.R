@@ -63,9 +63,24 @@ new_confusion <- function(truth, predicted, levels = NULL, call = rlang::caller_
   keep <- !miss_truth & !miss_pred
   tab <- table(Prediction = factor(pred_chr[keep], levels = levels),
                Truth = factor(truth_chr[keep], levels = levels))
-  structure(list(table = tab, levels = levels, n = sum(keep),
-                 n_missing_truth = sum(miss_truth), n_missing_predicted = sum(miss_pred)),
-            class = "grasp_confusion")
+  new_grasp_confusion(tab, n_missing_truth = sum(miss_truth), n_missing_predicted = sum(miss_pred))
+}
+
+# The one constructor of class "grasp_confusion", from a square table of
+# counts (rows = prediction, columns = truth, same levels).
+new_grasp_confusion <- function(table, n_missing_truth = 0L, n_missing_predicted = 0L) {
+  validate_grasp_confusion(structure(
+    list(table = table, levels = rownames(table), n = sum(table),
+         n_missing_truth = as.integer(n_missing_truth),
+         n_missing_predicted = as.integer(n_missing_predicted)),
+    class = "grasp_confusion"))
+}
+
+validate_grasp_confusion <- function(x) {
+  tab <- x$table
+  stopifnot(is.table(tab), nrow(tab) == ncol(tab), identical(rownames(tab), colnames(tab)),
+            identical(names(dimnames(tab)), c("Prediction", "Truth")), all(tab >= 0))
+  x
 }
 
 # Union of the classes seen, in Feix order when all are Feix names (so the
@@ -123,9 +138,7 @@ as_grasp_confusion.matrix <- function(x, ...) {
              argument = "x", call = call)
   }
   lev <- rownames(x) %||% colnames(x) %||% as.character(seq_len(nrow(x)))
-  tab <- as.table(matrix(as.integer(x), nrow(x), dimnames = list(Prediction = lev, Truth = lev)))
-  structure(list(table = tab, levels = lev, n = sum(tab), n_missing_truth = 0L,
-                 n_missing_predicted = 0L), class = "grasp_confusion")
+  new_grasp_confusion(as.table(matrix(as.integer(x), nrow(x), dimnames = list(Prediction = lev, Truth = lev))))
 }
 
 feix_order <- function(types) {

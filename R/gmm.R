@@ -163,11 +163,29 @@ gmm_new <- function(weights, means, covs, X, iterations, converged, fallback, re
   cn <- colnames(X)
   means <- matrix(means, k, d, dimnames = list(NULL, cn))
   covs <- array(covs, c(d, d, k), dimnames = list(cn, cn, NULL))
-  structure(list(weights = as.numeric(weights), means = means, covs = covs,
-                 loglik = gmm_loglik_params(weights, means, covs, X),
-                 iterations = as.integer(iterations), converged = converged, fallback = fallback,
-                 reason = reason, engine = engine, n = nrow(X), colnames = cn),
-            class = "gmm_fit")
+  new_gmm_fit(weights, means, covs, loglik = gmm_loglik_params(weights, means, covs, X),
+              iterations = iterations, converged = converged, fallback = fallback,
+              reason = reason, engine = engine, n = nrow(X))
+}
+
+# The one constructor of class "gmm_fit" (the EM result, its fallbacks, and
+# the point mass of a constant DoF all go through it).
+new_gmm_fit <- function(weights, means, covs, loglik, iterations, converged, fallback, reason,
+                        engine, n, point_mass = FALSE) {
+  validate_gmm_fit(structure(
+    list(weights = as.numeric(weights), means = means, covs = covs, loglik = loglik,
+         iterations = as.integer(iterations), converged = converged, fallback = fallback,
+         reason = reason, engine = engine, n = n, colnames = colnames(means),
+         point_mass = point_mass),
+    class = "gmm_fit"))
+}
+
+validate_gmm_fit <- function(x) {
+  k <- length(x$weights)
+  d <- ncol(x$means)
+  stopifnot(k >= 1L, nrow(x$means) == k, identical(dim(x$covs), c(d, d, k)),
+            all(x$weights >= 0), abs(sum(x$weights) - 1) < 1e-8)
+  x
 }
 
 # The thesis' fallback: one Gaussian with the sample mean and covariance.

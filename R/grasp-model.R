@@ -312,16 +312,15 @@ gmm_model_max_iter <- 5000L
 # A mixture on the FPC scores, or a point mass at zero for a constant DoF.
 fit_mixture <- function(fpca, k, engine, max_iter = gmm_model_max_iter) {
   S <- as.matrix(fpca$scores)
-  if (isTRUE(fpca$constant)) return(point_mass_gmm(ncol(S), engine))
+  if (isTRUE(fpca$constant)) return(point_mass_gmm(ncol(S), engine, n = nrow(S)))
   if (is.null(max_iter)) max_iter <- gmm_model_max_iter # settings from before the cap existed
   gmm_fit(S, k = k, engine = engine, max_iter = max_iter)
 }
 
-point_mass_gmm <- function(d, engine) {
-  structure(list(weights = 1, means = matrix(0, 1, d), covs = array(0, c(d, d, 1)),
-                 loglik = NA_real_, iterations = 0L, converged = FALSE, fallback = TRUE,
-                 reason = "constant: point mass at zero", engine = engine, point_mass = TRUE),
-            class = "gmm_fit")
+point_mass_gmm <- function(d, engine, n = NA_integer_) {
+  new_gmm_fit(weights = 1, means = matrix(0, 1, d), covs = array(0, c(d, d, 1)),
+              loglik = NA_real_, iterations = 0L, converged = FALSE, fallback = TRUE,
+              reason = "constant: point mass at zero", engine = engine, n = n, point_mass = TRUE)
 }
 
 gmm_reason <- function(fit) {
