@@ -46,10 +46,12 @@ fit6_1024 <- fit_handover(ref, markers = fit6$markers, k = 1024)
 row("reconstruct, 6 markers, k = 1024", time_it(function() reconstruct(fit6_1024, mk6), reps = 1))
 row("reconstruct from a grasps (incl. FK)", time_it(function() reconstruct(fit6, test), reps = 1))
 
-# the R reference engine of the same regression, for the ratio
+# the R transcription of the same regression (tests/testthat/helper-handover-reference.R), for the ratio
+ref_env <- new.env(parent = asNamespace("handmotion"))
+sys.source("tests/testthat/helper-handover-reference.R", envir = ref_env)
 q <- do.call(rbind, mk6)
 t_c <- time_it(function() lwr_predict(fit6$ref_x, fit6$ref_scores, q, 256, 1e-3, 1e-6))
-t_r <- time_it(function() lwr_predict(fit6$ref_x, fit6$ref_scores, q, 256, 1e-3, 1e-6, engine = "r"),
+t_r <- time_it(function() ref_env$lwr_predict_r(fit6$ref_x, fit6$ref_scores, q, 256, 1e-3, 1e-6),
                reps = 1)
 cat(sprintf("LWR core, C engine vs R reference engine: %.2f s vs %.2f s CPU (speed-up %.1fx)\n",
             t_c[["cpu"]], t_r[["cpu"]], t_r[["cpu"]] / t_c[["cpu"]]))

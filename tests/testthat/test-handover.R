@@ -246,7 +246,7 @@ test_that("the C regression engine agrees with the R reference engine", {
   q <- do.call(rbind, q)
   for (k in c(20, 256, nrow(fit$ref_x))) {
     a <- lwr_predict(fit$ref_x, fit$ref_scores, q, k, fit$ridge, fit$eps)
-    b <- lwr_predict(fit$ref_x, fit$ref_scores, q, k, fit$ridge, fit$eps, engine = "r")
+    b <- lwr_predict_r(fit$ref_x, fit$ref_scores, q, k, fit$ridge, fit$eps)
     expect_equal(a, b, tolerance = 1e-8)
   }
   # a local model whose neighbours all coincide is rescued by the ridge

@@ -1,0 +1,132 @@
+# Reading BVH files (those write_bvh() writes, and most others), and the
+# joint positions their motion implies, to check an export against
+# forward_kinematics().
+
+#' Read a BVH file
+#'
+#' A small parser for the BVH files [write_bvh()] writes (and most others):
+#' the joint tree with offsets and channels, and the motion table.
+#'
+#' @param file Path to a `.bvh` file.
+#' @return A list: `joints` (data frame `name`, `parent`, `end_site`; end
+#'   sites are named `<parent>_End`), `offsets` (matrix, one row per joint),
+#'   `channels` (list of channel names per joint), `frames` (number of
+#'   frames), `frame_time` (seconds) and `motion` (frames x channels matrix,
+#'   columns named `joint:channel`).
+#' @export
+#' @examples
+#' rec <- matrix(0, 3, 16, dimnames = list(NULL, hust_dofs$name))
+#' f <- write_bvh(rec, tempfile(fileext = ".bvh"))
+#' str(read_bvh(f)$joints)
+read_bvh <- function(file) {
+  call <- rlang::caller_env()
+  if (!is.character(file) || length(file) != 1L || !file.exists(file)) {
+    hm_abort("BVH file {.file {file}} does not exist.", "bad_file", file = file, argument = "file", call = call)
+  }
+  lines <- readLines(file, warn = FALSE)
+  bad <- function(msg, line, .envir = parent.frame()) {
+    env <- list2env(list(bvh_line = line, bvh_file = file), parent = .envir)
+    hm_abort(c(msg, i = "In {.file {bvh_file}}, line {bvh_line}."), "bad_file", file = file, line = line,
+             call = call, .envir = env)
+  }
+  mline <- grep("^\\s*MOTION\\s*$", lines)
+  if (!length(grep("^\\s*HIERARCHY", lines)) || !length(mline)) {
+    bad("Not a BVH file: it needs a HIERARCHY and a MOTION section.", 1L)
+  }
+  toks <- strsplit(trimws(lines[seq_len(mline[1] - 1L)]), "\\s+")
+  tok <- unlist(toks)
+  tline <- rep(seq_along(toks), lengths(toks))
+  keep <- nzchar(tok)
+  tok <- tok[keep]
+  tline <- tline[keep]
+  names <- character(0)
+  parent <- integer(0)
+  end_site <- logical(0)
+  offsets <- list()
+  channels <- list()
+  stack <- integer(0)
+  i <- 1L
+  while (i <= length(tok)) {
+    t <- tok[i]
+    if (t %in% c("ROOT", "JOINT") || (t == "End" && identical(tok[i + 1L], "Site"))) {
+      is_end <- t == "End"
+      nm <- if (is_end) paste0(names[stack[length(stack)]], "_End") else tok[i + 1L]
+      names <- c(names, nm)
+      parent <- c(parent, if (length(stack)) stack[length(stack)] else NA_integer_)
+      end_site <- c(end_site, is_end)
+      offsets[[length(names)]] <- c(NA_real_, NA_real_, NA_real_)
+      channels[[length(names)]] <- character(0)
+      if (!identical(tok[i + 2L], "{")) bad("Expected an opening brace after {t} {.val {nm}}.", tline[i])
+      stack <- c(stack, length(names))
+      i <- i + 3L
+    } else if (t == "OFFSET") {
+      v <- suppressWarnings(as.numeric(tok[i + 1:3]))
+      if (anyNA(v) || !length(stack)) bad("OFFSET needs three numbers inside a joint.", tline[i])
+      offsets[[stack[length(stack)]]] <- v
+      i <- i + 4L
+    } else if (t == "CHANNELS") {
+      k <- suppressWarnings(as.integer(tok[i + 1L]))
+      if (is.na(k) || !length(stack)) bad("CHANNELS needs a count inside a joint.", tline[i])
+      channels[[stack[length(stack)]]] <- tok[i + 1L + seq_len(k)]
+      i <- i + 2L + k
+    } else if (t == "}") {
+      if (!length(stack)) bad("Unbalanced closing brace.", tline[i])
+      stack <- stack[-length(stack)]
+      i <- i + 1L
+    } else if (t == "HIERARCHY") {
+      i <- i + 1L
+    } else {
+      bad("Unexpected token {.val {t}} in the HIERARCHY.", tline[i])
+    }
+  }
+  if (length(stack)) bad("The HIERARCHY has unclosed braces.", mline[1])
+  frames_line <- mline[1] + 1L
+  ft_line <- mline[1] + 2L
+  nfr <- suppressWarnings(as.integer(sub("^\\s*Frames:\\s*", "", lines[frames_line])))
+  ft <- suppressWarnings(as.numeric(sub("^\\s*Frame Time:\\s*", "", lines[ft_line])))
+  if (is.na(nfr) || !grepl("Frames:", lines[frames_line])) bad("Expected {.val Frames: n}.", frames_line)
+  if (is.na(ft) || !grepl("Frame Time:", lines[ft_line])) bad("Expected {.val Frame Time: t}.", ft_line)
+  body <- lines[-seq_len(ft_line)]
+  body <- body[nzchar(trimws(body))]
+  nch <- sum(lengths(channels))
+  vals <- suppressWarnings(as.numeric(unlist(strsplit(trimws(body), "\\s+"))))
+  if (length(body) != nfr || length(vals) != nfr * nch || anyNA(vals)) {
+    bad("The MOTION section should hold {nfr} line{?s} of {nch} number{?s}.", ft_line + 1L)
+  }
+  motion <- matrix(vals, nfr, nch, byrow = TRUE)
+  colnames(motion) <- unlist(Map(function(n, ch) if (length(ch)) paste0(n, ":", ch) else character(0),
+                                 names, channels))
+  off <- do.call(rbind, offsets)
+  dimnames(off) <- list(names, c("x", "y", "z"))
+  names(channels) <- names
+  list(joints = data.frame(name = names, parent = names[parent], end_site = end_site,
+                           stringsAsFactors = FALSE),
+       offsets = off, channels = channels, frames = nfr, frame_time = ft, motion = motion)
+}
+
+# World positions of every BVH joint over the frames (frames x joints x 3),
+# for checking an export against forward_kinematics().
+bvh_positions <- function(bvh) {
+  j <- bvh$joints
+  n <- bvh$frames
+  pidx <- match(j$parent, j$name)
+  M <- vector("list", nrow(j))
+  out <- array(0, c(n, nrow(j), 3), dimnames = list(NULL, j$name, c("x", "y", "z")))
+  for (i in seq_len(nrow(j))) {
+    p <- pidx[i]
+    pos <- if (is.na(p)) matrix(0, n, 3) else out[, p, ] + M[[p]] %*% kronecker(bvh$offsets[i, ], diag(3))
+    ch <- bvh$channels[[i]]
+    if (is.na(p)) {
+      tr <- match(c("Xposition", "Yposition", "Zposition"), ch)
+      if (!anyNA(tr)) pos <- pos + bvh$motion[, paste0(j$name[i], ":", ch[tr]), drop = FALSE]
+    }
+    out[, i, ] <- pos
+    R <- if (is.na(p)) rot_batch("x", rep(0, n)) else M[[p]]
+    for (a in ch[grepl("rotation$", ch)]) {
+      ax <- tolower(substr(a, 1, 1))
+      R <- bmul(R, rot_batch(ax, bvh$motion[, paste0(j$name[i], ":", a)] * pi / 180))
+    }
+    M[[i]] <- R
+  }
+  out
+}
