@@ -14,13 +14,25 @@
 #' usable recordings) is recorded in `attr(, "failed")` instead of stopping
 #' the others.
 #'
+#' **Interrupt and resume.** With `cache`, each type's model is saved to that
+#' folder as soon as it is fitted (by the worker that fitted it, so the folder
+#' must be reachable from every worker of a cluster). A later call with the
+#' same data, arguments, seed and package version loads the saved types and
+#' fits only the others: a long fit interrupted with Ctrl-C (which reaches the
+#' compiled loops) resumes where it stopped, and the result is identical to an
+#' uninterrupted fit. The file of a type is named after the type and a hash of
+#' its inputs, so changed inputs never load a stale model.
+#'
 #' @param x A [grasps()] object with labelled recordings.
 #' @param grasps The grasp types to fit (names or ids 1-33); every type
 #'   present in `x` by default.
 #' @param ... Passed to [fit_grasp_model()] (`ncomp`, `warp_ncomp`, `k`,
 #'   `engine`, `overlong`, `max_stall`, `keep_data`).
 #' @param seed Seed of the per-type RNG streams; the same seed gives identical
-#'   models under any plan. `NULL` draws the streams from the current RNG.
+#'   models under any plan. `NULL` draws the streams from the current RNG (and
+#'   cannot be combined with `cache`).
+#' @param cache Optional folder for resumable fits (see Details); created if
+#'   needed.
 #' @return An object of class `grasp_models`: a named list of `grasp_model`
 #'   objects (names = grasp type), with attributes `failed` (data frame:
 #'   `grasp`, `message`, `class`) and `seed`.
@@ -32,7 +44,7 @@
 #' ms <- fit_grasp_models(g, seed = 1)
 #' ms
 #' summary(ms)
-fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1) {
+fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   present <- levels(droplevels(x$meta$grasp))
@@ -61,13 +73,26 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1) {
              "bad_input", argument = "...", call = call)
   }
   seed <- check_seed(seed, call = call)
-  future_seed <- if (is.null(seed)) TRUE else seed
-  p <- progressr::progressor(along = types)
   # future's seeding switches the session to L'Ecuyer-CMRG; give the caller back their RNG
   old_rng <- save_rng()
   on.exit(restore_rng(old_rng), add = TRUE)
-  fits <- future.apply::future_lapply(parts, fit_one_type, args = args, progress = p,
-                                      future.seed = future_seed)
+  # one stream per type, fixed by the seed and the type's place in the set,
+  # so a resumed fit gives every type the stream of a full fit
+  streams <- if (is.null(seed)) NULL else element_streams(seed, length(types))
+  paths <- cache_paths(cache, parts, args, streams, call)
+  fits <- vector("list", length(types))
+  names(fits) <- types
+  cached <- if (is.null(paths)) rep(FALSE, length(types)) else file.exists(paths)
+  fits[cached] <- lapply(paths[cached], readRDS)
+  todo <- which(!cached)
+  p <- progressr::progressor(steps = length(todo))
+  if (length(todo)) {
+    # (a top-level function and only each type's own data go to the workers)
+    fits[todo] <- future.apply::future_mapply(
+      fit_one_type, parts[todo], (paths %||% rep(NA_character_, length(types)))[todo],
+      MoreArgs = list(args = args, progress = p), SIMPLIFY = FALSE, USE.NAMES = FALSE,
+      future.seed = if (is.null(streams)) TRUE else streams[todo])
+  }
   failed <- vapply(fits, inherits, logical(1), what = "error")
   fail_df <- data.frame(
     grasp = types[failed],
@@ -83,11 +108,38 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1) {
 
 # One type's fit for a worker. A top-level function, so the closure shipped to
 # workers does not drag the caller's frame (the whole data set) along.
-fit_one_type <- function(part, args, progress) {
+fit_one_type <- function(part, save_to, args, progress) {
   res <- tryCatch(do.call(fit_grasp_model, c(list(part), args)),
                   handmotion_error = function(e) e)
+  # saved at once (not after the whole set), so an interrupted fit keeps it;
+  # written to a temporary name first so a half-written file never loads
+  if (!is.null(save_to) && !is.na(save_to) && inherits(res, "grasp_model")) {
+    tmp <- paste0(save_to, ".part")
+    saveRDS(res, tmp)
+    file.rename(tmp, save_to)
+  }
   progress(as.character(part$meta$grasp[1]))
   res
+}
+
+# The cache file of each type, or NULL without a cache: <type>-<hash>.rds,
+# the hash over everything the fit depends on.
+cache_paths <- function(cache, parts, args, streams, call) {
+  if (is.null(cache)) return(NULL)
+  cache <- check_string(cache, "cache", call = call)
+  if (is.null(streams)) {
+    hm_abort("A {.arg cache} needs a {.arg seed}: with {.code seed = NULL} a resumed fit could not repeat the interrupted one.",
+             "bad_input", argument = "cache", call = call)
+  }
+  if (!dir.exists(cache) && !dir.create(cache, recursive = TRUE, showWarnings = FALSE)) {
+    hm_abort("Cannot create the cache folder {.file {cache}}.", "bad_input", argument = "cache", call = call)
+  }
+  version <- as.character(utils::packageVersion("handmotion"))
+  keys <- vapply(seq_along(parts), function(i) {
+    pt <- parts[[i]]
+    rlang::hash(list(pt$recordings, pt$meta, pt$dofs, pt$rate, pt$unit, args, streams[[i]], version))
+  }, character(1))
+  file.path(cache, paste0(gsub("[^A-Za-z0-9]+", "-", names(parts)), "-", keys, ".rds"))
 }
 
 new_grasp_models <- function(models, failed = NULL, seed = NULL) {

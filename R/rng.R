@@ -21,6 +21,24 @@ restore_rng <- function(old) {
 
 # Evaluate `expr` with the RNG seeded (in the caller's RNG kind), restoring the
 # global RNG state and kind afterwards. A NULL seed evaluates `expr` as is.
+# The RNG stream of each of `n` elements for a seed: the L'Ecuyer-CMRG
+# sub-streams future_lapply(future.seed = seed) derives, computed here so a
+# resumed fit (fit_grasp_models(cache = )) gives every remaining type the
+# stream it has in a full run. The caller's RNG is left as it was.
+element_streams <- function(seed, n) {
+  old <- save_rng()
+  on.exit(restore_rng(old))
+  RNGkind("L'Ecuyer-CMRG")
+  set.seed(seed)
+  s <- get(".Random.seed", envir = globalenv())
+  out <- vector("list", n)
+  for (i in seq_len(n)) {
+    out[[i]] <- parallel::nextRNGSubStream(s)
+    s <- parallel::nextRNGStream(s)
+  }
+  out
+}
+
 # A seed that is not NULL or one whole number is a classed error naming the
 # caller (the user-facing function).
 with_seed <- function(seed, expr) {

@@ -106,3 +106,32 @@ test_that("fitting leaves the caller's RNG kind and stream untouched", {
   expect_identical(RNGkind(), kind)
   expect_identical(.Random.seed, state)
 })
+
+test_that("a cached fit resumes: only missing types are refitted, and the result is the uncached one", {
+  g <- simulate_grasps(subjects = 4, grasps = c(1, 9, 17), objects = 2, trials = 2, seed = 2)
+  cache <- withr::local_tempdir()
+  full <- fit_grasp_models(g, seed = 5)
+  first <- fit_grasp_models(g, seed = 5, cache = cache)
+  files <- list.files(cache, full.names = TRUE)
+  expect_length(files, 3L)
+  strip <- function(ms) lapply(unclass(ms), function(m) m[setdiff(names(m), "timing")])
+  expect_identical(strip(first), strip(full))
+  # an "interrupted" fit: one type's file is missing
+  gone <- names(full)[2]
+  stem <- gsub("[^A-Za-z0-9]+", "-", gone)
+  expect_true(file.remove(files[startsWith(basename(files), paste0(stem, "-"))]))
+  fitted <- character()
+  real <- fit_grasp_model
+  local_mocked_internal("fit_grasp_model", function(x, ...) {
+    fitted <<- c(fitted, as.character(x$meta$grasp[1]))
+    real(x, ...)
+  })
+  resumed <- fit_grasp_models(g, seed = 5, cache = cache)
+  expect_identical(fitted, gone)
+  expect_identical(strip(resumed), strip(full))
+  # other inputs never load a stale model
+  fitted <- character()
+  other <- fit_grasp_models(g, seed = 6, cache = cache)
+  expect_setequal(fitted, names(full))
+  expect_error(fit_grasp_models(g, seed = NULL, cache = cache), class = "handmotion_error_bad_input")
+})
