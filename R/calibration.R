@@ -43,7 +43,7 @@
 #'   calibration target: `target`, `ours`, `thesis`, `tolerance`, `worst`
 #'   (largest absolute difference, for per-type targets) and `ok`), and
 #'   `held_out` (data frame of held-out and in-sample accuracies, or `NULL`).
-#' @seealso [simulator_params()], [thesis_tables]
+#' @seealso [simulator_params()], [thesis_table()]
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 3, grasps = c(9, 22), objects = 2, trials = 2)

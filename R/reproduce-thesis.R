@@ -10,7 +10,7 @@
 #' HUST-like default data ([simulate_grasps()]), fits the 33 grasp models
 #' ([fit_grasp_models()]), generates grasps, classifies with both schemes, and
 #' shows every table (5.1-5.3, 5.6-5.8, with the thesis' published values
-#' beside ours, see [thesis_tables]) and figure (5.1-5.6, the temporal
+#' beside ours, see [thesis_table()]) and figure (5.1-5.6, the temporal
 #' comparisons of Tables 5.4 and 5.5, Appendix A) with a short note on each
 #' difference. Beyond the thesis, both classifiers are also evaluated on
 #' held-out subjects ([evaluate_loso()]).
@@ -43,7 +43,7 @@
 #'   At least two are needed for classification.
 #' @param quiet Render without knitr's progress output.
 #' @return The path of the HTML report, invisibly.
-#' @seealso [thesis_tables], [thesis_results]
+#' @seealso [thesis_table()], [thesis_results]
 #' @export
 #' @examples
 #' \donttest{
