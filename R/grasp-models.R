@@ -14,6 +14,15 @@
 #' usable recordings) is recorded in `attr(, "failed")` instead of stopping
 #' the others.
 #'
+#' **Clusters and schedulers.** Any future plan works unchanged and gives the
+#' same models for the same seed (tested under sequential, multicore,
+#' multisession, PSOCK cluster and batchtools plans): several machines with
+#' `future::plan(future::cluster, workers = c("host1", "host2"))`, or a
+#' scheduler with future.batchtools and the shipped SLURM template,
+#' `future::plan(future.batchtools::batchtools_slurm, template =
+#' system.file("templates", "slurm.tmpl", package = "handmotion"))` (one job
+#' per grasp type). Workers need handmotion installed.
+#'
 #' **Interrupt and resume.** With `cache`, each type's model is saved to that
 #' folder as soon as it is fitted (by the worker that fitted it, so the folder
 #' must be reachable from every worker of a cluster). A later call with the

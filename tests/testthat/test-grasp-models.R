@@ -75,6 +75,27 @@ test_that("the same seed gives identical models whatever the future plan", {
   skip_if_not(length(installed) == 1L && installed, "handmotion is not installed for workers")
   future::plan(future::multisession, workers = 2)
   expect_identical(strip_timing(fit_grasp_models(g, seed = 7)), strip_timing(seq_fit))
+  # a real cluster: two PSOCK workers on this machine, as on other hosts
+  cl <- parallel::makePSOCKcluster(2L)
+  on.exit(parallel::stopCluster(cl), add = TRUE)
+  future::plan(future::cluster, workers = cl)
+  expect_identical(strip_timing(fit_grasp_models(g, seed = 7)), strip_timing(seq_fit))
+  # a scheduler: batchtools jobs (run locally here; the shipped SLURM template
+  # is for a cluster's scheduler)
+  skip_if_not_installed("future.batchtools")
+  withr::local_dir(withr::local_tempdir())
+  future::plan(future.batchtools::batchtools_local)
+  expect_identical(strip_timing(fit_grasp_models(g, seed = 7)), strip_timing(seq_fit))
+})
+
+test_that("the SLURM template is shipped and fills in with batchtools' fields", {
+  tmpl <- system.file("templates", "slurm.tmpl", package = "handmotion")
+  expect_true(nzchar(tmpl))
+  text <- readLines(tmpl)
+  expect_true(any(grepl("doJobCollection", text)))
+  fields <- unlist(regmatches(text, gregexpr("(?<=<%= )[^ ]+", text, perl = TRUE)))
+  expect_true(all(c("job.name", "log.file", "uri") %in% fields))
+  expect_true(any(grepl("resources$walltime", text, fixed = TRUE)))
 })
 
 test_that("progress is reported through progressr, once per type", {
