@@ -34,11 +34,19 @@ generics::generate
 #' A batch is drawn in one native pass per model (scores, warps and the
 #' recording matrices), so large batches are cheap: on the 2-core reference
 #' machine some 150,000-200,000 grasps a second for batches of 1,000 to
-#' 100,000 (`bench/bench-generate.R`). For batches of several megabytes the
-#' R heap is pre-sized once, which spares R's collector repeated full passes;
-#' this changes no result. The random stream is used in a fixed order (all
-#' FPC scores, then all warp scores, model by model), so a seed always gives
-#' the same grasps.
+#' 100,000 (`bench/bench-generate.R`). The random stream is used in a fixed
+#' order (all FPC scores, then all warp scores, model by model), so a seed
+#' always gives the same grasps.
+#'
+#' **Streaming.** More grasps than memory holds are generated in chunks with
+#' `callback`: each chunk of at most `chunk` grasps (per type for a model set)
+#' is passed to `callback(chunk, i)` (the chunk a `grasps` object, `i` its
+#' number) and dropped, so memory stays at one chunk; write each to files
+#' with [write_hust()] or [write_bvh()], or keep a summary. Ids run on across
+#' chunks (`gen1`, ... `genN`). The chunks are drawn one after another from
+#' one random stream, so a seed gives the same chunks every time (not the
+#' same grasps as one batch of `n`). At most 10 million grasps per call
+#' without a callback.
 #'
 #' @param x A `grasp_model` ([fit_grasp_model()]) or `grasp_models`
 #'   ([fit_grasp_models()]).
@@ -49,11 +57,15 @@ generics::generate
 #'   `NULL` the current RNG stream is used.
 #' @param warp If `TRUE` (default) apply the sampled time warp; if `FALSE`
 #'   return the curves on the model's template grid (`L` frames).
+#' @param chunk With `callback`, the number of grasps per chunk (per type).
+#' @param callback Optional function `(chunk, i)` called with each chunk (see
+#'   Streaming); its return values are discarded.
 #' @param ... Unused.
 #' @return A [grasps()] object with metadata `grasp` = the type, `subject` =
 #'   `NA`, `source` = `"generated"`, ids `"gen1"`, `"gen2"`, ... and the warp
 #'   score in column `warp_score`. The sampled FPC scores are attached as
-#'   attribute `"scores"` (array grasps x DoF x FPC).
+#'   attribute `"scores"` (array grasps x DoF x FPC). With `callback`,
+#'   invisibly the number of grasps generated and chunks passed.
 #' @seealso [simulate.grasp_model()] for the same through [stats::simulate()].
 #' @export
 #' @examples
@@ -61,29 +73,49 @@ generics::generate
 #' m <- fit_grasp_model(g, seed = 1)
 #' new <- generate(m, n = 5, seed = 2)
 #' new
-generate.grasp_model <- function(x, n = 1, seed = NULL, warp = TRUE, ...) {
-  call <- rlang::caller_env()
-  n <- check_whole(n, "n", max = max_grasps_per_call, call = call)
-  warp <- check_flag(warp, "warp", call = call)
-  seed <- check_seed(seed, call = call)
-  validate_sampler(x, call)
-  with_seed(seed, generate_batch(x, n, warp = warp, call = call))
+generate.grasp_model <- function(x, n = 1, seed = NULL, warp = TRUE, chunk = 10000,
+                                 callback = NULL, ...) {
+  generate_models(list(x), n, seed, warp, chunk, callback, call = rlang::caller_env())
 }
 
 #' @rdname generate.grasp_model
 #' @export
-generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = NULL, warp = TRUE, ...) {
+generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = NULL, warp = TRUE,
+                                  chunk = 10000, callback = NULL, ...) {
   call <- rlang::caller_env()
-  n <- check_whole(n, "n", max = max_grasps_per_call, call = call)
+  generate_models(select_models(x, grasp, call), n, seed, warp, chunk, callback, call = call)
+}
+
+# The one generation path of both methods: checks, then one batch (the
+# models draw in turn from one RNG stream, then one assembly), or chunks
+# handed to a callback.
+generate_models <- function(models, n, seed, warp, chunk, callback, call) {
+  streaming <- !is.null(callback)
+  n <- check_whole(n, "n", max = if (streaming) 1e12 else max_grasps_per_call, call = call)
   warp <- check_flag(warp, "warp", call = call)
   seed <- check_seed(seed, call = call)
-  models <- select_models(x, grasp, call)
   for (m in models) validate_sampler(m, call)
+  if (!streaming) {
+    return(with_seed(seed, assemble_generated(models, lapply(models, draw_batch, n = n, warp = warp,
+                                                             call = call))))
+  }
+  if (!is.function(callback)) {
+    hm_abort("{.arg callback} must be a function of a chunk and its number.", "bad_input",
+             argument = "callback", call = call)
+  }
+  chunk <- check_whole(chunk, "chunk", max = max_grasps_per_call, call = call)
+  sizes <- c(rep(chunk, n %/% chunk), if (n %% chunk) n %% chunk)
   with_seed(seed, {
-    # the models draw in turn from one RNG stream, then one assembly
-    parts <- lapply(models, draw_batch, n = n, warp = warp, call = call)
-    assemble_generated(models, parts)
+    done <- 0
+    for (i in seq_along(sizes)) {
+      out <- assemble_generated(models, lapply(models, draw_batch, n = sizes[i], warp = warp, call = call),
+                                first_id = done + 1)
+      done <- done + length(out)
+      callback(out, i)
+      out <- NULL
+    }
   })
+  invisible(list(n = n * length(models), chunks = length(sizes)))
 }
 
 #' Simulate grasps from a fitted model
@@ -216,11 +248,12 @@ split_rows <- function(vals, n_new) {
 # gen1..genN, the metadata built column by column (no per-recording R work,
 # no data.frame() or rbind()), and the grasps object by new_grasps() without
 # re-validating what the kernel guarantees.
-assemble_generated <- function(models, parts) {
+assemble_generated <- function(models, parts, first_id = 1) {
   first <- models[[1]]
   counts <- vapply(parts, function(pt) length(pt$n_frames), integer(1))
   N <- sum(counts)
-  ids <- paste0("gen", seq_len(N))
+  ids <- if (first_id - 1 + N < .Machine$integer.max) paste0("gen", as.integer(first_id - 1) + seq_len(N))
+         else paste0("gen", format(first_id - 1 + seq_len(N), scientific = FALSE, trim = TRUE))
   recs <- if (length(parts) == 1L) parts[[1]]$recordings else
     unlist(lapply(parts, `[[`, "recordings"), recursive = FALSE)
   names(recs) <- ids
@@ -258,6 +291,4 @@ stack_scores <- function(parts, N, ids, model) {
 }
 
 # One batch from one model as a grasps object.
-generate_batch <- function(model, n, warp = TRUE, call = rlang::caller_env()) {
-  assemble_generated(list(model), list(draw_batch(model, n, warp, call = call)))
-}
+

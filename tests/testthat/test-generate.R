@@ -217,3 +217,32 @@ test_that("generate() refuses bad counts, flags and seeds with classed errors", 
   expect_error(generate(m, n = 2, seed = "a"), class = "handmotion_error_bad_input")
   expect_error(generate(m, n = 2, warp = NA), class = "handmotion_error_bad_input")
 })
+
+test_that("generation streams in chunks through a callback, holding one chunk at a time", {
+  m <- planted_model()
+  seen <- list()
+  res <- generate(m, n = 25, seed = 3, chunk = 10, callback = function(chunk, i) {
+    seen[[i]] <<- list(n = length(chunk), ids = chunk$meta$id, class = class(chunk))
+    "ignored"
+  })
+  expect_equal(res$n, 25)
+  expect_identical(res$chunks, 3L)
+  expect_identical(vapply(seen, `[[`, integer(1), "n"), c(10L, 10L, 5L))
+  expect_identical(unlist(lapply(seen, `[[`, "ids")), paste0("gen", 1:25))   # ids run on
+  expect_identical(seen[[1]]$class, "grasps")
+  # the same seed gives the same chunks; the chunks are drawn one after another
+  again <- list()
+  generate(m, n = 25, seed = 3, chunk = 10, callback = function(chunk, i) again[[i]] <<- chunk)
+  first <- generate(m, n = 10, seed = 3)
+  expect_equal(again[[1]]$recordings, first$recordings)
+  # a model set: chunk grasps per type
+  ms <- fit_grasp_models(grasps(unname(c(planted_grasps(n = 20, p = 2, grasp = "Ring", seed = 1)$recordings,
+                                         planted_grasps(n = 20, p = 2, grasp = "Tripod", seed = 2)$recordings)),
+                                meta = data.frame(grasp = rep(c("Ring", "Tripod"), each = 20)),
+                                dofs = c("d1", "d2")), warping = "linear", seed = 1)
+  sizes <- integer()
+  generate(ms, n = 7, chunk = 3, seed = 1, callback = function(chunk, i) sizes[i] <<- length(chunk))
+  expect_identical(sizes, c(6L, 6L, 2L))
+  expect_error(generate(m, n = 5, callback = "f"), class = "handmotion_error_bad_input")
+  expect_error(generate(m, n = 5, chunk = 0, callback = identity), class = "handmotion_error_bad_input")
+})
