@@ -248,7 +248,7 @@ as.data.frame.grasp_classification <- function(x, row.names = NULL, optional = F
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' distance_table(classify(g, g, method = "last_frame", k = 2))
+#' distance_table(classify(fit_last_frame_pca(g, k = 2), g))
 distance_table <- function(models, x = NULL) {
   call <- rlang::caller_env()
   cl <- if (inherits(models, "grasp_classification")) models else {
