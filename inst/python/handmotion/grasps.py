@@ -231,6 +231,8 @@ class Grasps:
 
 
 def _default_dofs(p):
-    hust = ["CMC1", "ABD1", "MCP1", "IP1", "MCP2", "PIP2", "DIP2", "MCP3", "PIP3", "DIP3",
-            "MCP4", "PIP4", "DIP4", "MCP5", "PIP5", "DIP5"]
-    return hust if p == 16 else [f"dof{i + 1}" for i in range(p)]
+    """The DoF names R gives p unnamed columns (R's resolve_dofs(): the 16 HUST DoFs, else dof1..dofp),
+    asked from R so the list is written down once."""
+    from ._bridge import r
+    ro = r()
+    return [str(d) for d in ro.r("function(p) handmotion:::resolve_dofs(NULL, list(matrix(0, 1, p)))")(int(p))]
