@@ -63,12 +63,18 @@ static void chol_solve(const double *l, int d, double *b, int q) {
 }
 
 SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SEXP eps_) {
+  /* every argument checked here too: a wrong type or size is an R error, not a crash */
+  if (!isReal(ref_x) || !isMatrix(ref_x) || !isReal(ref_y) || !isMatrix(ref_y) ||
+      !isReal(query) || !isMatrix(query))
+    error("lwr: reference markers, reference scores and query must be double matrices");
   const int N = nrows(ref_x), d = ncols(ref_x), q = ncols(ref_y), n = nrows(query);
   if (nrows(ref_y) != N || ncols(query) != d) error("lwr: dimension mismatch");
+  if (N < 1 || d < 1) error("lwr: empty reference");
   int k = asInteger(k_);
   if (k > N) k = N;
   if (k < 1) error("lwr: k must be positive");
   const double ridge = asReal(ridge_), eps = asReal(eps_);
+  if (!(ridge > 0) || !R_FINITE(ridge) || !(eps > 0) || !R_FINITE(eps)) error("lwr: ridge and eps must be positive");
   const double *X = REAL(ref_x), *Y = REAL(ref_y), *Q = REAL(query);
   SEXP out = PROTECT(allocMatrix(REALSXP, n, q));
   double *O = REAL(out);

@@ -254,3 +254,14 @@ test_that("the C regression engine agrees with the R reference engine", {
   y <- matrix(seq_len(30), 30, 1)
   expect_equal(drop(lwr_predict(flat, y, matrix(2, 1, 3), 30, 1e-3, 1e-6)), 15.5, tolerance = 1e-6)
 })
+
+test_that("the native local regression checks its arguments itself (no crash on bad input)", {
+  x <- matrix(stats::rnorm(60), 20, 3)
+  y <- matrix(stats::rnorm(40), 20, 2)
+  q <- matrix(stats::rnorm(6), 2, 3)
+  expect_equal(dim(lwr_predict(x, y, q, 5L, 1e-3, 1e-6)), c(2L, 2L))
+  expect_error(.Call(hm_lwr_predict, x, y, matrix(1L, 2, 3), 5L, 1e-3, 1e-6), "double matrices")
+  expect_error(.Call(hm_lwr_predict, x, y[1:5, ], q, 5L, 1e-3, 1e-6), "dimension mismatch")
+  expect_error(.Call(hm_lwr_predict, x, y, q, 5L, 0, 1e-6), "positive")
+  expect_error(.Call(hm_lwr_predict, x, y, q, 5L, 1e-3, NaN), "positive")
+})
