@@ -74,9 +74,7 @@ Rscript -e '
 # install (a hash of the package files is kept in the installed package), so a
 # second `make test` does not recompile the C code.
 if [ "${HANDMOTION_SKIP_INSTALL:-0}" != "1" ]; then
-  hash=$(find DESCRIPTION NAMESPACE R src inst data vignettes -type f \
-           ! -name '*.o' ! -name '*.so' ! -path '*__pycache__*' ! -path '*.pytest_cache*' -print0 \
-         | sort -z | xargs -0 sha1sum | sha1sum | cut -d' ' -f1)
+  hash=$(bash tools/source-hash.sh)
   installed=$(Rscript -e 'd <- system.file(package = "handmotion"); f <- file.path(d, "source-hash"); if (nzchar(d) && file.exists(f)) cat(readLines(f))' 2>/dev/null || true)
   if [ "$hash" = "$installed" ]; then
     echo "setup: handmotion is installed and up to date"
