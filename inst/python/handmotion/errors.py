@@ -6,7 +6,16 @@ can catch a bad file apart from a bad argument without parsing text.
 """
 
 
-class HandmotionError(Exception):
+class _RCondition:
+    """What an R condition carries into Python: its message and its class vector."""
+
+    def __init__(self, message, r_class=None):
+        super().__init__(message)
+        self.r_message = message
+        self.r_class = list(r_class or [])
+
+
+class HandmotionError(_RCondition, Exception):
     """Base class: an error from handmotion (R or the Python front end).
 
     Attributes
@@ -17,11 +26,6 @@ class HandmotionError(Exception):
         The R condition's class vector, e.g. ``["handmotion_error_bad_file",
         "handmotion_error", "rlang_error", "error", "condition"]``.
     """
-
-    def __init__(self, message, r_class=None):
-        super().__init__(message)
-        self.r_message = message
-        self.r_class = list(r_class or [])
 
 
 class BadInputError(HandmotionError, ValueError):
@@ -83,7 +87,7 @@ def from_r_condition(message, r_class):
     return RError(message, r_class)
 
 
-class HandmotionWarning(UserWarning):
+class HandmotionWarning(_RCondition, UserWarning):
     """A warning raised in R by handmotion (or any other R warning), carrying its R class.
 
     Attributes
@@ -92,11 +96,6 @@ class HandmotionWarning(UserWarning):
         The R condition's class vector, e.g. ``["handmotion_warning_read_failures",
         "handmotion_warning", "rlang_warning", "warning", "condition"]``.
     """
-
-    def __init__(self, message, r_class=None):
-        super().__init__(message)
-        self.r_message = message
-        self.r_class = list(r_class or [])
 
 
 def from_r_warning(message, r_class):
