@@ -18,7 +18,8 @@ check_whole <- function(x, arg, min = 1, max = Inf, allow_null = FALSE,
     hm_abort("{.arg {arg}} must be {what}, not {describe_value(x)}.",
              "bad_input", argument = arg, call = call)
   }
-  as.integer(x)
+  # an integer where R's integers reach (callers index with it), else a whole double
+  if (abs(x) <= .Machine$integer.max) as.integer(x) else as.double(x)
 }
 
 # A single finite number in [min, max] (or (min, max] with `min_open`).
