@@ -18,8 +18,10 @@
 #'   `as_grasps(as.data.frame(g))` gives `g` back.
 #'
 #' @param x Recordings (see above).
-#' @param ... For matrices and lists: `meta`, `dofs`, `rate`, `unit` as in
-#'   [grasps()]. For a long data frame: `rate` and `unit`.
+#' @param meta,dofs For a list (or matrix): metadata and DoF names, as in
+#'   [grasps()].
+#' @param rate,unit Sampling rate (Hz) and angle unit, as in [grasps()].
+#' @param ... For a matrix: `meta`, `dofs`, `rate`, `unit`. Unused otherwise.
 #' @return A [grasps()] object.
 #' @export
 #' @examples
