@@ -29,31 +29,16 @@ clamp_to_limits <- function(x, skeleton = hand_skeleton(), mapping = NULL, unit 
   call <- rlang::caller_env()
   check_skeleton(skeleton, call = call)
   input <- fk_input(x, unit, call)
-  if (is.null(mapping)) mapping <- default_joint_map_impl(input$dofs, call)
-  mapping <- check_mapping(mapping, skeleton, call)
-  mapping$col <- match(dof_key(mapping$dof), dof_key(input$dofs))
-  # a turn about the parent's axis (the thumb's opposition) has no limits in the skeleton
-  used <- mapping[!is.na(mapping$col) & !is.na(mapping$axis) & mapping$sign * mapping$scale != 0 &
-                    mapping$frame == "joint", , drop = FALSE]
-  lim <- as.matrix(skeleton$joints[match(used$joint, skeleton$joints$name), skeleton_limit_cols])
-  lo <- lim[cbind(seq_len(nrow(used)), match(paste0("rot", used$axis, "_min"), skeleton_limit_cols))]
-  hi <- lim[cbind(seq_len(nrow(used)), match(paste0("rot", used$axis, "_max"), skeleton_limit_cols))]
-  # "0 0" declares no range (e.g. th-mcp's z, which TI-AA/ABD1 drive): leave
-  # those DoFs as they are and list them as unclamped rather than zero them
-  declared <- !(lo == 0 & hi == 0)
-  used <- used[declared, , drop = FALSE]
-  lo <- lo[declared]
-  hi <- hi[declared]
-  mult <- used$sign * used$scale * input$factor
-  counts <- stats::setNames(integer(nrow(used)), input$dofs[used$col])
+  lim <- dof_limits(input$dofs, input$factor, skeleton, mapping, call)
+  counts <- stats::setNames(integer(nrow(lim)), lim$dof)
   clamp_one <- function(rec) {
-    for (k in seq_len(nrow(used))) {
-      v <- rec[, used$col[k]] * mult[k]
-      out <- pmin(pmax(v, lo[k]), hi[k])
+    for (k in seq_len(nrow(lim))) {
+      v <- rec[, lim$col[k]]
+      out <- pmin(pmax(v, lim$lo[k]), lim$hi[k])
       changed <- out != v
       if (any(changed)) {
         counts[k] <<- counts[k] + sum(changed)
-        rec[changed, used$col[k]] <- out[changed] / mult[k]
+        rec[changed, lim$col[k]] <- out[changed]
       }
     }
     rec
@@ -66,6 +51,32 @@ clamp_to_limits <- function(x, skeleton = hand_skeleton(), mapping = NULL, unit 
   }
   attr(res, "clamped") <- sum(counts)
   attr(res, "clamped_by_dof") <- counts
-  attr(res, "unclamped") <- setdiff(input$dofs, used$dof)
+  attr(res, "unclamped") <- setdiff(input$dofs, lim$dof)
   res
+}
+
+# The range each DoF may take, in the DoF's own unit and sign: the limits of
+# the joint axis the mapping applies it to (`sign * scale * angle` in
+# degrees), converted back. One row per limited DoF: `dof`, `col` (its column
+# in `dofs`), `lo`, `hi`. DoFs without an axis, a turn about the parent's axis
+# (the thumb's opposition: no limits in the skeleton) and axes declared "0 0"
+# (no range) are left out. Used to clamp, to count violations and to keep
+# generated grasps inside the hand (generate(limits = TRUE)).
+dof_limits <- function(dofs, factor = 1, skeleton = hand_skeleton(), mapping = NULL,
+                       call = rlang::caller_env()) {
+  if (is.null(mapping)) mapping <- default_joint_map_impl(dofs, call)
+  mapping <- check_mapping(mapping, skeleton, call)
+  mapping$col <- match(dof_key(mapping$dof), dof_key(dofs))
+  used <- mapping[!is.na(mapping$col) & !is.na(mapping$axis) & mapping$sign * mapping$scale != 0 &
+                    mapping$frame == "joint", , drop = FALSE]
+  lim <- as.matrix(skeleton$joints[match(used$joint, skeleton$joints$name), skeleton_limit_cols])
+  rows <- seq_len(nrow(used))
+  lo <- lim[cbind(rows, match(paste0("rot", used$axis, "_min"), skeleton_limit_cols))]
+  hi <- lim[cbind(rows, match(paste0("rot", used$axis, "_max"), skeleton_limit_cols))]
+  declared <- !(lo == 0 & hi == 0)
+  mult <- (used$sign * used$scale * factor)[declared]
+  a <- lo[declared] / mult
+  b <- hi[declared] / mult
+  data.frame(dof = dofs[used$col[declared]], col = used$col[declared],
+             lo = pmin(a, b), hi = pmax(a, b), stringsAsFactors = FALSE)
 }

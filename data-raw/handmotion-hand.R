@@ -42,7 +42,8 @@ joint_names <- list(th = c("tmc", "mcp", "ip", "tip"),
 lim <- function(x = c(0, 0), y = c(0, 0), z = c(0, 0)) c(x, y, z)
 limits <- list(
   root = lim(x = c(-70, 80), z = c(-30, 20)),            # wrist extension/flexion, ulnar/radial deviation
-  `th-tmc` = lim(x = c(-20, 50), z = c(-30, 70)),  # flexion incl. opposition `th-mcp` = lim(x = c(-10, 50), z = c(-15, 15)),
+  `th-tmc` = lim(x = c(-20, 50), z = c(-30, 70)),       # flexion incl. opposition
+  `th-mcp` = lim(x = c(-10, 50), z = c(-15, 15)),
   `th-ip` = lim(x = c(-20, 80)), `th-tip` = lim(),
   cmc = lim(), `rf-cmc` = lim(x = c(0, 10)), `lf-cmc` = lim(x = c(0, 20)),   # palmar arch
   mcp = lim(x = c(-30, 90)), pip = lim(x = c(0, 100)), dip = lim(x = c(-10, 90)), tip = lim(),
@@ -66,6 +67,12 @@ for (f in names(buchholz)) {
   }
 }
 j <- do.call(rbind, rows)
+# every declared limit must reach a joint: a name lost in a comment or
+# misspelt would silently leave a joint on the generic limits of its kind
+kinds <- unique(sub("^.*-", "", j$name))
+unused <- setdiff(names(limits), c(j$name, kinds, paste0(j$name, "_z")))
+if (length(unused)) stop("limits declared for no joint: ", paste(unused, collapse = ", "))
+stopifnot("th-mcp" %in% names(limits))
 lims <- t(vapply(j$name, function(nm) {
   kind <- sub("^.*-", "", nm)
   l <- if (is.null(limits[[nm]])) limits[[kind]] else limits[[nm]]

@@ -1,6 +1,7 @@
 test_that("angles outside the limits are clamped and counted, the rest untouched", {
   s <- hand_skeleton()
   x <- matrix(30, 4, 16, dimnames = list(NULL, hust_dofs$name))
+  x[, "ABD1"] <- 10        # thumb MCP abduction: -15..15
   x[1, "PIP2"] <- 150      # PIP limit 0..100
   x[2, "PIP2"] <- -20
   x[3, "MCP5"] <- -60      # MCP limit -30..90
@@ -23,8 +24,8 @@ test_that("clamping respects the mapping's sign and the unit", {
   expect_equal(unname(out[, "I-PIPJ"]), c(-100, 0) * pi / 180)
   expect_equal(attr(out, "clamped"), 2L)
   # discarded sensors, the thumb's opposition (a turn about the hand's axis)
-  # and TI-AA (th-mcp declares no z range) have no limits to clamp to
-  expect_setequal(attr(out, "unclamped"), c("I-AA", "P-Arch", "T-TMCJ", "TI-AA"))
+  # have no limits to clamp to (TI-AA has th-mcp's abduction range)
+  expect_setequal(attr(out, "unclamped"), c("I-AA", "P-Arch", "T-TMCJ"))
 })
 
 test_that("grasps in, grasps out", {
@@ -41,4 +42,35 @@ test_that("grasps in, grasps out", {
   expect_equal(attr(out, "clamped_by_dof")[["PIP2"]], n_out)
   # idempotent
   expect_equal(attr(clamp_to_limits(out), "clamped"), 0L)
+})
+
+test_that("every joint axis a default joint map drives has its own declared range", {
+  # a limit lost in data-raw (th-mcp's once sat inside a comment) leaves a
+  # driven axis on generic or empty limits; this catches it for both maps
+  skel <- hand_skeleton()
+  for (map in list(hust_joint_map(), graspdb14_joint_map())) {
+    used <- map[!is.na(map$axis) & map$frame == "joint" & map$sign * map$scale != 0, ]
+    j <- as.matrix(skel$joints[match(used$joint, skel$joints$name), skeleton_limit_cols])
+    lo <- j[cbind(seq_len(nrow(j)), match(paste0("rot", used$axis, "_min"), colnames(j)))]
+    hi <- j[cbind(seq_len(nrow(j)), match(paste0("rot", used$axis, "_max"), colnames(j)))]
+    expect_true(all(hi > lo), info = paste(used$joint[!(hi > lo)], used$axis[!(hi > lo)]))
+  }
+  # the thumb MCP is not a finger MCP: its flexion range is the thumb's
+  th <- skel$joints[skel$joints$name == "th-mcp", ]
+  fi <- skel$joints[skel$joints$name == "if-mcp", ]
+  expect_false(th$rotx_max == fi$rotx_max && th$rotx_min == fi$rotx_min)
+})
+
+test_that("dof_limits() gives each limited DoF its range in its own unit and sign", {
+  lim <- dof_limits(hust_dofs$name)
+  expect_true(all(lim$lo < lim$hi))
+  expect_true("ABD1" %in% lim$dof) # thumb MCP abduction is limited now
+  rad <- dof_limits(hust_dofs$name, factor = 180 / pi)
+  expect_equal(rad$lo, lim$lo * pi / 180)
+  # clamp_to_limits() keeps every limited DoF inside exactly these ranges
+  rec <- matrix(500, 3, 16, dimnames = list(NULL, hust_dofs$name))
+  rec[2, ] <- -500
+  out <- clamp_to_limits(rec)
+  expect_equal(unname(out[1, lim$col]), lim$hi)
+  expect_equal(unname(out[2, lim$col]), lim$lo)
 })
