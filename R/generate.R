@@ -48,6 +48,24 @@ generics::generate
 #' same grasps as one batch of `n`). At most 10 million grasps per call
 #' without a callback.
 #'
+#' **Dependence.** A model fitted with `dependence = "copula"` draws all FPC
+#' scores of all DoFs and the warp scores jointly from its Gaussian copula
+#' (see [fit_grasp_model()]), so the fingers move together as in the
+#' recordings; the thesis' model draws each DoF on its own.
+#'
+#' **Joint limits.** With `limits = TRUE` every DoF whose recordings respect
+#' the default hand's joint limits ([hand_skeleton()], mapped by
+#' [default_joint_map()]; the ranges of the model's `limits` table, where
+#' `enforced` is `TRUE`: at most 10% of the training frames outside) is kept
+#' inside its range by a smooth map on the template curve: the identity
+#' inside the range less a margin of 5% of its width, and beyond that an
+#' exponential approach to the limit whose slope is 1 where it starts. Unlike
+#' a hard clip it leaves no kink in the motion, and values well inside the
+#' range are unchanged. A DoF that the recordings themselves leave in more
+#' than 10% of frames is measured differently from the skeleton's axis (on
+#' HUST-like data, `ABD1`) and is left alone. [evaluate_generation()]
+#' reports the share of frames outside the limits beside the recordings'.
+#'
 #' @param x A `grasp_model` ([fit_grasp_model()]) or `grasp_models`
 #'   ([fit_grasp_models()]).
 #' @param n Number of grasps to generate (per grasp type for a model set).
@@ -57,6 +75,10 @@ generics::generate
 #'   `NULL` the current RNG stream is used.
 #' @param warp If `TRUE` (default) apply the sampled time warp; if `FALSE`
 #'   return the curves on the model's template grid (`L` frames).
+#' @param limits Keep generated angles inside the hand's joint limits?
+#'   `NULL` (default) means `TRUE` for a model fitted with
+#'   `dependence = "copula"` and `FALSE` for the thesis' independent model
+#'   (which generates exactly as the thesis did). See Joint limits.
 #' @param chunk With `callback`, the number of grasps per chunk (per type).
 #' @param callback Optional function `(chunk, i)` called with each chunk (see
 #'   Streaming); its return values are discarded.
@@ -73,31 +95,32 @@ generics::generate
 #' m <- fit_grasp_model(g, seed = 1)
 #' new <- generate(m, n = 5, seed = 2)
 #' new
-generate.grasp_model <- function(x, n = 1, seed = NULL, warp = TRUE, chunk = 10000,
+generate.grasp_model <- function(x, n = 1, seed = NULL, warp = TRUE, limits = NULL, chunk = 10000,
                                  callback = NULL, ...) {
-  generate_models(list(x), n, seed, warp, chunk, callback, call = rlang::caller_env())
+  generate_models(list(x), n, seed, warp, limits, chunk, callback, call = rlang::caller_env())
 }
 
 #' @rdname generate.grasp_model
 #' @export
 generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = NULL, warp = TRUE,
-                                  chunk = 10000, callback = NULL, ...) {
+                                  limits = NULL, chunk = 10000, callback = NULL, ...) {
   call <- rlang::caller_env()
-  generate_models(select_models(x, grasp, call), n, seed, warp, chunk, callback, call = call)
+  generate_models(select_models(x, grasp, call), n, seed, warp, limits, chunk, callback, call = call)
 }
 
 # The one generation path of both methods: checks, then one batch (the
 # models draw in turn from one RNG stream, then one assembly), or chunks
 # handed to a callback.
-generate_models <- function(models, n, seed, warp, chunk, callback, call) {
+generate_models <- function(models, n, seed, warp, limits, chunk, callback, call) {
   streaming <- !is.null(callback)
   n <- check_whole(n, "n", max = if (streaming) 1e12 else max_grasps_per_call, call = call)
   warp <- check_flag(warp, "warp", call = call)
+  if (!is.null(limits)) limits <- check_flag(limits, "limits", call = call)
   seed <- check_seed(seed, call = call)
   for (m in models) validate_sampler(m, call)
+  draw <- function(m, n) draw_batch(m, n, warp = warp, limits = limits, call = call)
   if (!streaming) {
-    return(with_seed(seed, assemble_generated(models, lapply(models, draw_batch, n = n, warp = warp,
-                                                             call = call))))
+    return(with_seed(seed, assemble_generated(models, lapply(models, draw, n = n))))
   }
   if (!is.function(callback)) {
     hm_abort("{.arg callback} must be a function of a chunk and its number.", "bad_input",
@@ -108,8 +131,7 @@ generate_models <- function(models, n, seed, warp, chunk, callback, call) {
   with_seed(seed, {
     done <- 0
     for (i in seq_along(sizes)) {
-      out <- assemble_generated(models, lapply(models, draw_batch, n = sizes[i], warp = warp, call = call),
-                                first_id = done + 1)
+      out <- assemble_generated(models, lapply(models, draw, n = sizes[i]), first_id = done + 1)
       done <- done + length(out)
       callback(out, i)
       out <- NULL
@@ -177,19 +199,41 @@ stack_mixtures <- function(gmms, d) {
 # beta (n x warp_ncomp), alpha (n x p x ncomp)).
 # The kernel's own checks (lengths, the frame bound) come back as classed
 # errors naming the model.
-draw_batch <- function(model, n, warp = TRUE, call = rlang::caller_env()) {
+draw_batch <- function(model, n, warp = TRUE, limits = NULL, call = rlang::caller_env()) {
   smp <- model$sampler %||% build_sampler(model)
+  # the copula model draws its scores here, the independent one in the kernel
+  scores <- if (identical(model$dependence$type, "copula")) draw_copula_scores(model, n)
+  lim <- generation_limits(model, limits %||% identical(model$dependence$type, "copula"))
   tryCatch(
     .Call(hm_generate_batch, as.integer(n), smp$dofs, smp$warp, model$basis$mean,
           model$basis$components, as.numeric(model$warp$mean),
           matrix(as.numeric(model$warp$components), model$target_length), isTRUE(warp),
-          model$dofs),
+          model$dofs, scores$alpha, scores$beta, lim$lo, lim$hi, generation_limit_margin),
     error = function(e) {
       msg <- conditionMessage(e)
       hm_abort(c("The model of {.val {model$grasp}} cannot generate.", x = "{msg}"),
                "bad_model", argument = "x", grasp = model$grasp, call = call)
     })
 }
+
+# The per-DoF limits the kernel keeps a model's draws inside: the enforced
+# rows of model$limits (recorded_limits()), NA elsewhere and when off.
+generation_limits <- function(model, on) {
+  p <- length(model$dofs)
+  lo <- hi <- rep(NA_real_, p)
+  lim <- model$limits
+  if (isTRUE(on) && !is.null(lim) && nrow(lim)) {
+    lim <- lim[lim$enforced, , drop = FALSE]
+    j <- match(lim$dof, model$dofs)
+    lo[j] <- lim$lo
+    hi[j] <- lim$hi
+  }
+  list(lo = lo, hi = hi)
+}
+
+# The smooth limit map starts this share of a DoF's range inside each limit
+# (src/generate-kernel.c, soft_limit()): 5 degrees of a 0-100 degree PIP.
+generation_limit_margin <- 0.05
 
 # Limits of one call: the number of grasps one generate() call returns (a
 # larger set is drawn in several calls), and the frames of one draw (checked

@@ -61,6 +61,24 @@
 #' @param keep_data Keep the warped curves and warping functions in the model
 #'   (needed by [autoplot.grasp_model()] for the data layers). Set to `FALSE`
 #'   to keep models small.
+#' @param dependence How the DoFs are joined. `"independent"` (default) is
+#'   the thesis' model: each DoF's FPC scores and the warp scores are drawn
+#'   from their own mixtures, so fingers do not move together (the thesis'
+#'   own verdict, its chapter 6); [reproduce_thesis()] uses it. `"copula"`
+#'   keeps every one of those marginal distributions and joins all FPC scores
+#'   of all DoFs and the warp scores by a Gaussian copula: the correlation of
+#'   their normal scores (from ranks), shrunk towards the identity by the
+#'   analytic rule of Schafer and Strimmer (2005). Generated hands then move
+#'   their fingers together as the recorded ones do
+#'   ([evaluate_generation()] measures it), and [generate()] keeps them
+#'   inside the joint limits by default.
+#' @param mixture_guard `"bic"` keeps a `k`-component mixture only if every
+#'   component holds at least `max(2 (d + 1), 0.05 n)` of the `n` recordings
+#'   and its BIC beats one Gaussian's; otherwise one Gaussian replaces it
+#'   (listed in `fallbacks` as `"mixture_guard"`). It removes the slivers
+#'   fitted to two or three outlying recordings (the thesis' Figure 5.6).
+#'   `"none"` fits the thesis' mixtures as they come. `NULL` (default):
+#'   `"bic"` for the copula model, `"none"` for the independent one.
 #' @return An object of class `grasp_model`: a list with `grasp`, `grasp_id`,
 #'   `dofs`, `rate`, `unit`, `target_length`, `argvals`, `n_input`, `n_used`,
 #'   `ids` (recordings used), `removed` (data frame: `id`, `n_frames`, `reason`,
@@ -70,7 +88,11 @@
 #'   (n x p x ncomp array), `gmm` (one `gmm_fit()` per DoF), `warp` (the warp
 #'   FPCA, scores and mixture), `fallbacks` (data frame: `step`, `dof`,
 #'   `reason`), `settings`, `engine`, `timing` (seconds per step) and, with
-#'   `keep_data`, `data` (warped array n x L x p, warps n x L, frame counts).
+#'   `keep_data`, `data` (warped array n x L x p, warps n x L, frame counts),
+#'   `dependence` (`type` and, for the copula, `copula`: its score columns,
+#'   correlation `cor`, `shrinkage` and tabulated marginal quantiles) and
+#'   `limits` (the joint limits per DoF, the share of recorded frames outside
+#'   them, and whether generation enforces them).
 #' @seealso [fit_grasp_models()] for every type at once, [generate()] and
 #'   [project()] to use a model, [autoplot.grasp_model()] to look at it.
 #' @export
@@ -79,10 +101,14 @@
 #' m <- fit_grasp_model(g, seed = 1)
 #' m
 #' summary(m)
+#' # fingers that move together
+#' mc <- fit_grasp_model(g, seed = 1, dependence = "copula")
+#' mc
 fit_grasp_model <- function(x, grasp = NULL, ncomp = 2, warp_ncomp = 1, k = 2,
                             engine = c("fast", "reference"), overlong = overlong_rule(),
                             warping = c("dtw", "linear"), max_stall = 0.25, seed = NULL,
-                            keep_data = TRUE) {
+                            keep_data = TRUE, dependence = c("independent", "copula"),
+                            mixture_guard = NULL) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   check_whole(ncomp, "ncomp", max = 50, call = call)
@@ -90,10 +116,14 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = 2, warp_ncomp = 1, k = 2,
   check_whole(k, "k", max = 50, call = call)
   engines <- resolve_engines(engine, call)
   warping <- check_choice(warping, arg = "warping", call = call)
+  dependence <- check_choice(dependence, arg = "dependence", call = call)
+  mixture_guard <- mixture_guard %||% if (dependence == "independent") "none" else "bic"
+  mixture_guard <- check_choice(mixture_guard, c("none", "bic"), arg = "mixture_guard", call = call)
   x <- select_one_type(x, grasp, call)
   settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
                    k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,
-                   keep_data = keep_data, gmm_max_iter = gmm_model_max_iter)
+                   keep_data = keep_data, gmm_max_iter = gmm_model_max_iter,
+                   dependence = dependence, mixture_guard = mixture_guard)
   with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))
 }
 
@@ -140,17 +170,25 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
 
   gmm <- vector("list", p)
   names(gmm) <- dofs
+  guard <- settings$mixture_guard %||% "none"
   for (j in seq_len(p)) {
-    gmm[[j]] <- fit_mixture(fpca[[j]], settings$k, engines$gmm, settings$gmm_max_iter)
+    gmm[[j]] <- fit_mixture(fpca[[j]], settings$k, engines$gmm, settings$gmm_max_iter, guard)
     if (isTRUE(gmm[[j]]$fallback) && !isTRUE(fpca[[j]]$constant)) {
       fallbacks <- add_fallback(fallbacks, "mixture", dofs[j],
                                 paste("single Gaussian:", gmm_reason(gmm[[j]])))
     }
+    if (!is.null(gmm[[j]]$guard)) {
+      fallbacks <- add_fallback(fallbacks, "mixture_guard", dofs[j], paste("single Gaussian:", gmm[[j]]$guard))
+    }
   }
-  warp_gmm <- fit_mixture(warp_fit, settings$k, engines$gmm, settings$gmm_max_iter)
+  warp_gmm <- fit_mixture(warp_fit, settings$k, engines$gmm, settings$gmm_max_iter, guard)
   if (isTRUE(warp_gmm$fallback) && !isTRUE(warp_fit$constant)) {
     fallbacks <- add_fallback(fallbacks, "warp_mixture", NA_character_,
                               paste("single Gaussian:", gmm_reason(warp_gmm)))
+  }
+  if (!is.null(warp_gmm$guard)) {
+    fallbacks <- add_fallback(fallbacks, "warp_mixture_guard", NA_character_,
+                              paste("single Gaussian:", warp_gmm$guard))
   }
   t_gmm <- proc.time()[["elapsed"]]
 
@@ -181,6 +219,9 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
                total = t_gmm - t0)
   )
   model$sampler <- build_sampler(model)
+  model$dependence <- list(type = settings$dependence,
+                           copula = if (settings$dependence == "copula") fit_score_copula(model))
+  model$limits <- recorded_limits(x[prep$ids], dofs)
   if (isTRUE(settings$keep_data)) {
     model$data <- list(warped = aln$warped, warps = aln$warps,
                        n_frames = stats::setNames(x$meta$n_frames[match(prep$ids, x$meta$id)], prep$ids))
@@ -309,12 +350,42 @@ orient_warp_fpca <- function(fit) {
 # fallbacks left are real failures.
 gmm_model_max_iter <- 5000L
 
-# A mixture on the FPC scores, or a point mass at zero for a constant DoF.
-fit_mixture <- function(fpca, k, engine, max_iter = gmm_model_max_iter) {
+# A mixture on the FPC scores, or a point mass at zero for a constant DoF;
+# with guard = "bic", a mixture that does not describe the data (see
+# guard_mixture()) is replaced by one Gaussian, its reason in $guard.
+fit_mixture <- function(fpca, k, engine, max_iter = gmm_model_max_iter, guard = "none") {
   S <- as.matrix(fpca$scores)
   if (isTRUE(fpca$constant)) return(point_mass_gmm(ncol(S), engine, n = nrow(S)))
   if (is.null(max_iter)) max_iter <- gmm_model_max_iter # settings from before the cap existed
-  gmm_fit(S, k = k, engine = engine, max_iter = max_iter)
+  fit <- gmm_fit(S, k = k, engine = engine, max_iter = max_iter)
+  if (identical(guard, "bic")) guard_mixture(fit, S, engine) else fit
+}
+
+# The mixture guard (fit_grasp_model(mixture_guard = "bic")): a fit of k > 1
+# components is kept only if every component holds at least
+# max(2 (d + 1), 5% of n) recordings (its weight times n) and it has a lower
+# BIC than one Gaussian; otherwise one Gaussian (the maximum-likelihood fit)
+# replaces it, with the reason in $guard. Slivers fitted to two or three
+# outlying recordings (the thesis' Figure 5.6) fail the size rule; a second
+# component that only bends a unimodal cloud fails BIC.
+guard_mixture <- function(fit, S, engine) {
+  k <- length(fit$weights)
+  if (k < 2L || isTRUE(fit$fallback)) return(fit)
+  n <- nrow(S)
+  d <- ncol(S)
+  one <- gmm_fit(S, k = 1L, engine = engine)
+  min_size <- max(2 * (d + 1), 0.05 * n)
+  npar <- function(k) (k - 1) + k * d + k * d * (d + 1) / 2
+  bic_k <- -2 * fit$loglik + npar(k) * log(n)
+  bic_1 <- -2 * one$loglik + npar(1) * log(n)
+  reason <- if (min(fit$weights) * n < min_size) {
+    sprintf("smallest component holds %.1f recordings (< %.1f)", min(fit$weights) * n, min_size)
+  } else if (!is.finite(bic_k) || bic_k >= bic_1) {
+    sprintf("BIC prefers one Gaussian (%.1f vs %.1f for %d components)", bic_1, bic_k, k)
+  }
+  if (is.null(reason)) return(fit)
+  one$guard <- reason
+  one
 }
 
 point_mass_gmm <- function(d, engine, n = NA_integer_) {
@@ -421,6 +492,7 @@ print.grasp_model <- function(x, ...) {
                 x$settings$ncomp, min(ve, na.rm = TRUE), stats::median(ve, na.rm = TRUE),
                 max(ve, na.rm = TRUE)))
   }
+  cat("  ", format_dependence(x), "\n", sep = "")
   if (nrow(x$fallbacks) == 0L) {
     cat("  fallbacks: none\n")
   } else {
@@ -458,7 +530,24 @@ summary.grasp_model <- function(object, ...) {
   structure(out, class = c("summary_grasp_model", "data.frame"), grasp = object$grasp,
             removed = object$removed, fallbacks = object$fallbacks,
             n_used = object$n_used, n_input = object$n_input, target_length = object$target_length,
-            warping = object$warping$method)
+            warping = object$warping$method, dependence = format_dependence(object),
+            dependence_matrix = dependence_matrix(object))
+}
+
+# One line on how a model joins its DoFs and guards its mixtures.
+format_dependence <- function(model) {
+  guard <- model$settings$mixture_guard %||% "none"
+  n_guard <- sum(model$fallbacks$step %in% c("mixture_guard", "warp_mixture_guard"))
+  g <- if (guard == "none") "no mixture guard" else
+    sprintf("mixture guard %s (%d of %d mixtures one Gaussian)", guard, n_guard, length(model$dofs) + 1L)
+  if (!identical(model$dependence$type, "copula")) {
+    return(paste0("dependence: independent DoFs (the thesis' model); ", g))
+  }
+  R <- dependence_matrix(model)
+  r <- abs(R[upper.tri(R)])
+  cop <- model$dependence$copula
+  sprintf("dependence: Gaussian copula over %d scores (shrinkage %.2f), |r| between DoFs' FPC1 median %.2f, max %.2f; %s",
+          nrow(cop$columns), cop$shrinkage, stats::median(r), max(r), g)
 }
 
 #' @export
@@ -466,6 +555,7 @@ print.summary_grasp_model <- function(x, ...) {
   cat(sprintf("Grasp model %s: %d of %d recordings used, %d frames, %s warping\n",
               attr(x, "grasp"), attr(x, "n_used"), attr(x, "n_input"), attr(x, "target_length"),
               attr(x, "warping")))
+  cat(attr(x, "dependence") %||% "", "\n", sep = "")
   print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
   rm <- attr(x, "removed")
   if (nrow(rm)) {

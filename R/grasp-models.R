@@ -201,6 +201,10 @@ print.grasp_models <- function(x, ...) {
                 sum(s$n_em_fallback > 0), if (sum(s$n_em_fallback > 0) == 1) "" else "s"))
     cat(sprintf("  variance explained by the FPCs per DoF: min %.1f%%, mean %.1f%%\n",
                 min(s$min_var, na.rm = TRUE), mean(s$mean_var, na.rm = TRUE)))
+    dep <- table(s$dependence)
+    cat(sprintf("  dependence: %s; mixtures replaced by one Gaussian by the guard: %d\n",
+                paste0(names(dep), " (", dep, " type", ifelse(dep == 1, "", "s"), ")", collapse = ", "),
+                sum(s$n_guarded)))
   }
   f <- attr(x, "failed")
   if (!is.null(f) && nrow(f)) {
@@ -221,7 +225,8 @@ print.grasp_models <- function(x, ...) {
 #'   for a degenerate warp), `target_length`, `warping` (`"dtw"` or
 #'   `"linear"`), `em_fallback` (the DoFs whose mixture fell back to a single
 #'   Gaussian, e.g. `"MCP3, DIP4"`, empty when none), `n_em_fallback`,
-#'   `constant_dofs`, and `min_var`, `median_var`, `mean_var`, `max_var`: the
+#'   `constant_dofs`, `dependence` (`"independent"` or `"copula"`),
+#'   `n_guarded` (mixtures the mixture guard replaced by one Gaussian), and `min_var`, `median_var`, `mean_var`, `max_var`: the
 #'   percentage of variance explained by the FPCs of each DoF, summarised over
 #'   DoFs. Types that failed to fit are listed in `attr(, "failed")`.
 #' @export
@@ -241,6 +246,8 @@ summary.grasp_models <- function(object, ...) {
                target_length = m$target_length, warping = m$warping$method,
                em_fallback = paste(em, collapse = ", "), n_em_fallback = length(em),
                constant_dofs = paste(const, collapse = ", "),
+               dependence = m$dependence$type %||% "independent",
+               n_guarded = sum(fb$step %in% c("mixture_guard", "warp_mixture_guard")),
                min_var = stat(min), median_var = stat(stats::median), mean_var = stat(mean),
                max_var = stat(max), stringsAsFactors = FALSE)
   })
@@ -248,7 +255,8 @@ summary.grasp_models <- function(object, ...) {
     data.frame(grasp_id = integer(), grasp = character(), n_input = integer(), n_used = integer(),
                n_overlong = integer(), n_degenerate = integer(), target_length = integer(),
                warping = character(), em_fallback = character(), n_em_fallback = integer(),
-               constant_dofs = character(), min_var = numeric(), median_var = numeric(),
+               constant_dofs = character(), dependence = character(), n_guarded = integer(),
+               min_var = numeric(), median_var = numeric(),
                mean_var = numeric(), max_var = numeric(), stringsAsFactors = FALSE)
   rownames(out) <- NULL
   structure(out, class = c("summary_grasp_models", "data.frame"), failed = attr(object, "failed"))

@@ -80,3 +80,38 @@ dof_limits <- function(dofs, factor = 1, skeleton = hand_skeleton(), mapping = N
   data.frame(dof = dofs[used$col[declared]], col = used$col[declared],
              lo = pmin(a, b), hi = pmax(a, b), stringsAsFactors = FALSE)
 }
+
+# Share of recorded frames above which a DoF's limits are not enforced in
+# generation: such a DoF is evidently measured differently from the skeleton
+# axis it is mapped to (on HUST-like data, ABD1: the glove's thumb-index
+# abduction of 0-70 degrees against th-mcp's +-15 degree side-to-side range).
+limit_enforce_max_outside <- 0.1
+
+# The joint limits a model generates within (generate(limits = TRUE)): the
+# skeleton's ranges of its DoFs (dof_limits(), default hand and mapping), each
+# with the share of the training recordings' frames outside it and whether it
+# is enforced (that share at most limit_enforce_max_outside). DoFs no default
+# mapping knows give an empty table and a note.
+recorded_limits <- function(x, dofs) {
+  lim <- tryCatch(dof_limits(dofs, if (identical(x$unit, "rad")) 180 / pi else 1),
+                  handmotion_error = function(e) NULL)
+  if (is.null(lim) || !x$unit %in% c("deg", "rad")) {
+    return(data.frame(dof = character(), col = integer(), lo = numeric(), hi = numeric(),
+                      recorded_outside = numeric(), enforced = logical()))
+  }
+  X <- do.call(rbind, x$recordings)[, lim$col, drop = FALSE]
+  outside <- colMeans(sweep(X, 2, lim$lo, "<") | sweep(X, 2, lim$hi, ">"))
+  lim$recorded_outside <- unname(outside)
+  lim$enforced <- lim$recorded_outside <= limit_enforce_max_outside
+  lim
+}
+
+# Share of frames of a grasps object outside the limits of `lim` (a
+# recorded_limits() / dof_limits() table), per DoF and over all limited
+# values of all frames.
+limit_violations <- function(x, lim) {
+  if (!nrow(lim)) return(list(by_dof = stats::setNames(numeric(), character()), frames = NA_real_))
+  X <- do.call(rbind, x$recordings)[, match(lim$dof, x$dofs), drop = FALSE]
+  out <- sweep(X, 2, lim$lo, "<") | sweep(X, 2, lim$hi, ">")
+  list(by_dof = stats::setNames(colMeans(out), lim$dof), frames = mean(rowSums(out) > 0))
+}

@@ -16,9 +16,14 @@
 #'   density), with the training scores as points.
 #' * `type = "warps"`: the warping functions (original frame against template
 #'   frame) in grey, their mean in red.
+#' * `type = "dependence"`: the correlation between the DoFs' first FPC
+#'   scores the model generates with, as a heat map: the Gaussian copula's
+#'   for `dependence = "copula"`, the identity for the thesis' independent
+#'   model (see [fit_grasp_model()]).
 #'
 #' @param object A `grasp_model` from [fit_grasp_model()].
-#' @param type `"fpca"`, `"projection"`, `"mixture"` or `"warps"`.
+#' @param type `"fpca"`, `"projection"`, `"mixture"`, `"warps"` or
+#'   `"dependence"`.
 #' @param dof DoFs to show (names or indices); all by default.
 #' @param recording For `"projection"`: which recording (index or id) of the
 #'   training data, or of `newdata` when given.
@@ -34,7 +39,9 @@
 #' ggplot2::autoplot(m, dof = c("MCP2", "PIP2"))
 #' ggplot2::autoplot(m, type = "projection", dof = 1:4)
 #' ggplot2::autoplot(m, type = "mixture", dof = 1:4)
-autoplot.grasp_model <- function(object, type = c("fpca", "projection", "mixture", "warps"),
+#' mc <- fit_grasp_model(g, seed = 1, dependence = "copula")
+#' ggplot2::autoplot(mc, type = "dependence")
+autoplot.grasp_model <- function(object, type = c("fpca", "projection", "mixture", "warps", "dependence"),
                                  dof = NULL, recording = 1, newdata = NULL, max_recordings = 100, ...) {
   type <- check_choice(type, arg = "type", call = rlang::current_env())
   dofs <- plot_model_dofs(object, dof)
@@ -42,7 +49,26 @@ autoplot.grasp_model <- function(object, type = c("fpca", "projection", "mixture
     fpca = plot_model_fpca(object, dofs, max_recordings),
     projection = plot_model_projection(object, dofs, recording, newdata),
     mixture = plot_model_mixture(object, dofs),
-    warps = plot_model_warps(object, max_recordings))
+    warps = plot_model_warps(object, max_recordings),
+    dependence = plot_model_dependence(object, dofs))
+}
+
+plot_model_dependence <- function(object, dofs) {
+  R <- dependence_matrix(object)[dofs, dofs, drop = FALSE]
+  d <- data.frame(a = factor(rep(dofs, length(dofs)), levels = dofs),
+                  b = factor(rep(dofs, each = length(dofs)), levels = rev(dofs)), r = as.vector(R))
+  copula <- identical(object$dependence$type, "copula")
+  ggplot2::ggplot(d, ggplot2::aes(.data$a, .data$b, fill = .data$r)) +
+    ggplot2::geom_tile(colour = "white") +
+    ggplot2::scale_fill_gradient2(low = "#2166ac", mid = "white", high = "#b2182b", limits = c(-1, 1),
+                                  name = "r") +
+    ggplot2::coord_equal() +
+    ggplot2::labs(x = NULL, y = NULL,
+                  title = sprintf("%s: correlation between DoFs' first FPC scores", object$grasp),
+                  subtitle = if (copula) "Gaussian copula (dependence = \"copula\")"
+                             else "independent DoFs (the thesis' model)") +
+    ggplot2::theme_minimal(base_size = 11) +
+    ggplot2::theme(axis.text.x = ggplot2::element_text(angle = 90, vjust = 0.5, hjust = 1))
 }
 
 plot_model_dofs <- function(object, dof) {

@@ -109,8 +109,19 @@ static void sample_mixtures(mixtures m, int n, double *out, int *comp) {
   }
 }
 
+/* The smooth limit map of generate(limits = TRUE): the identity inside
+ * [lo + m, hi - m], and beyond it an exponential approach to the limit with
+ * slope 1 where it starts (continuous first derivative: no kink), so a
+ * value never leaves [lo, hi] and values well inside are untouched. */
+static double soft_limit(double v, double lo, double hi, double m) {
+  if (v > hi - m) return hi - m * exp(-(v - (hi - m)) / m);
+  if (v < lo + m) return lo + m * exp((v - (lo + m)) / m);
+  return v;
+}
+
 SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP comps,
-                       SEXP warp_mean, SEXP warp_comps, SEXP do_warp_, SEXP dofs) {
+                       SEXP warp_mean, SEXP warp_comps, SEXP do_warp_, SEXP dofs,
+                       SEXP alpha_in, SEXP beta_in, SEXP lim_lo, SEXP lim_hi, SEXP margin_) {
   const int n = asInteger(n_), do_warp = asLogical(do_warp_);
   if (n < 0 || n == NA_INTEGER) error("generate kernel: bad batch size");
   if (do_warp == NA_LOGICAL) error("generate kernel: warp must be TRUE or FALSE");
@@ -134,12 +145,27 @@ SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP com
   double *A = REAL(alpha), *B = REAL(beta);
   int *nn = INTEGER(n_new);
 
-  /* 1. all scores first: the RNG order of the R reference */
-  int *comp = (int *) R_alloc((size_t) n * p + 1, sizeof(int));
-  GetRNGstate();
-  sample_mixtures(md, n, A, comp);
-  sample_mixtures(mw, n, B, comp);
-  PutRNGstate();
+  /* 1. all scores first: the RNG order of the R reference; or the scores
+   * drawn in R (the copula model, R/dependence.R) */
+  if (alpha_in != R_NilValue || beta_in != R_NilValue) {
+    memcpy(A, real_of_length(alpha_in, (R_xlen_t) n * p * k, "drawn FPC scores (n x p x ncomp)"),
+           sizeof(double) * (size_t) n * p * k);
+    memcpy(B, real_of_length(beta_in, (R_xlen_t) n * kw, "drawn warp scores (n x warp_ncomp)"),
+           sizeof(double) * (size_t) n * kw);
+  } else {
+    int *comp = (int *) R_alloc((size_t) n * p + 1, sizeof(int));
+    GetRNGstate();
+    sample_mixtures(md, n, A, comp);
+    sample_mixtures(mw, n, B, comp);
+    PutRNGstate();
+  }
+  /* per-DoF limits of the smooth limit map (NA: none) */
+  const double *llo = real_of_length(lim_lo, p, "lower limits (p)");
+  const double *lhi = real_of_length(lim_hi, p, "upper limits (p)");
+  const double margin = asReal(margin_);
+  if (!(margin > 0 && margin < 0.5)) error("generate kernel: the limit margin must be in (0, 0.5)");
+  for (int j = 0; j < p; j++)
+    if (!ISNAN(llo[j]) && !(lhi[j] > llo[j])) error("generate kernel: limits of DoF %d are empty", j + 1);
 
   /* one shared, immutable dimnames list(NULL, dofs) for every matrix */
   SEXP dn = PROTECT(allocVector(VECSXP, 2));
@@ -186,6 +212,12 @@ SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP com
       }
       const double *mj = mu + (R_xlen_t) L * j;
       for (int s = 0; s < L; s++) cv[s] = cv[s] + mj[s];
+      /* limits on the template curve: the values at original frames are
+       * convex combinations of its neighbours, so they stay inside too */
+      if (!ISNAN(llo[j]) && !ISNAN(lhi[j])) {
+        const double m = margin * (lhi[j] - llo[j]);
+        for (int s = 0; s < L; s++) cv[s] = soft_limit(cv[s], llo[j], lhi[j], m);
+      }
     }
 
     SEXP rec = PROTECT(allocMatrix(REALSXP, m, p));

@@ -9,7 +9,8 @@ SEXP hm_dtw_pair(SEXP x, SEXP y, SEXP window); /* dtw.c */
 SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window, SEXP full); /* dtw.c */
 SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k, SEXP ridge, SEXP eps); /* handover-lwr.c */
 SEXP hm_generate_batch(SEXP n, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP comps,
-                       SEXP warp_mean, SEXP warp_comps, SEXP do_warp, SEXP dofs); /* generate-kernel.c */
+                       SEXP warp_mean, SEXP warp_comps, SEXP do_warp, SEXP dofs, SEXP alpha_in,
+                       SEXP beta_in, SEXP lim_lo, SEXP lim_hi, SEXP margin); /* generate-kernel.c */
 SEXP hm_gmm_em(SEXP P, SEXP labels, SEXP k, SEXP max_iter, SEXP tol, SEXP logdet0); /* gmm-em.c */
 SEXP hm_gmm_kmeans(SEXP Y, SEXP centres, SEXP iters); /* gmm-em.c */
 SEXP hm_shape_features(SEXP recs, SEXP k); /* dba-prep.c */
@@ -19,7 +20,7 @@ SEXP hm_stall_lengths(SEXP warps); /* dba-prep.c */
 static const R_CallMethodDef call_methods[] = {
   {"hm_dtw_pair", (DL_FUNC) &hm_dtw_pair, 3}, {"hm_dtw_batch", (DL_FUNC) &hm_dtw_batch, 4},
   {"hm_lwr_predict", (DL_FUNC) &hm_lwr_predict, 6},
-  {"hm_generate_batch", (DL_FUNC) &hm_generate_batch, 9},
+  {"hm_generate_batch", (DL_FUNC) &hm_generate_batch, 14},
   {"hm_gmm_em", (DL_FUNC) &hm_gmm_em, 6}, {"hm_gmm_kmeans", (DL_FUNC) &hm_gmm_kmeans, 3},
   {"hm_shape_features", (DL_FUNC) &hm_shape_features, 2},
   {"hm_linear_mean", (DL_FUNC) &hm_linear_mean, 3},

@@ -202,7 +202,23 @@ test_that("a model whose sampler was altered gets a classed error, not a crash",
   smp$dofs$k <- smp$dofs$k + 1L
   expect_error(.Call(hm_generate_batch, 3L, smp$dofs, smp$warp, m$basis$mean, m$basis$components,
                      as.numeric(m$warp$mean), matrix(as.numeric(m$warp$components), m$target_length),
-                     TRUE, m$dofs), "sampler cumw")
+                     TRUE, m$dofs, NULL, NULL, rep(NA_real_, length(m$dofs)), rep(NA_real_, length(m$dofs)), 0.05),
+               "sampler cumw")
+  # drawn scores and limits of the wrong size, or empty limits, are refused
+  p <- length(m$dofs)
+  nolim <- rep(NA_real_, p)
+  expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, m$basis$mean,
+                     m$basis$components, as.numeric(m$warp$mean),
+                     matrix(as.numeric(m$warp$components), m$target_length), TRUE, m$dofs,
+                     array(0, c(2, p, 2)), matrix(0, 3, 1), nolim, nolim, 0.05), "drawn FPC scores")
+  expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, m$basis$mean,
+                     m$basis$components, as.numeric(m$warp$mean),
+                     matrix(as.numeric(m$warp$components), m$target_length), TRUE, m$dofs,
+                     NULL, NULL, rep(1, p), rep(1, p), 0.05), "limits of DoF 1 are empty")
+  expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, m$basis$mean,
+                     m$basis$components, as.numeric(m$warp$mean),
+                     matrix(as.numeric(m$warp$components), m$target_length), TRUE, m$dofs,
+                     NULL, NULL, seq_len(p + 1), nolim, 0.05), "lower limits")
   # a warp far outside the data asks for more frames than one draw may have
   huge <- m
   huge$warp$mean <- huge$warp$mean * 1e6

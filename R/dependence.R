@@ -1,0 +1,156 @@
+# Dependence between DoFs: the Gaussian copula over the thesis' mixtures.
+#
+# The thesis' model (Jeppsson 2017, eq. 2.5) draws every DoF's FPC scores and
+# the warp score from their own mixtures, independently, so fingers do not
+# move together (its chapter 6). The copula model keeps every marginal the
+# thesis fits (each score's distribution is the marginal of its DoF's
+# mixture) and joins them by a Gaussian copula: a correlation matrix between
+# the normal scores of all FPC scores of all DoFs and the warp scores,
+# estimated from ranks (semi-parametric, so outlying recordings do not drive
+# it) and shrunk towards the identity by the analytic rule of Schafer and
+# Strimmer (2005), as the number of scores (p * ncomp + warp_ncomp = 33 on
+# HUST data) is not small against the ~200-270 recordings of a type.
+#
+# A draw: z ~ N(0, R), u = pnorm(z), each score = its marginal quantile at u.
+# The quantile functions are tabulated once at fit time on a grid of normal
+# scores, so a draw costs one matrix product and a linear interpolation per
+# score column.
+
+# The normal-score grid of the tabulated quantile functions. Beyond +-5 (a
+# probability of 3e-7) a draw takes the end of the table.
+copula_z_grid <- seq(-5, 5, length.out = 401L)
+
+# The copula of one fitted model's scores: list(columns (data frame of dof,
+# comp and whether it is the warp), cor (D x D, shrunk), shrinkage (lambda),
+# root (upper Cholesky factor of cor), z (grid) and quantiles (grid x D)).
+# Constant DoFs (point masses) carry no column.
+fit_score_copula <- function(model) {
+  cols <- score_columns(model)
+  S <- score_matrix(model, cols)
+  n <- nrow(S)
+  Z <- apply(S, 2, function(s) stats::qnorm(rank(s, ties.method = "average") / (n + 1)))
+  Z <- matrix(Z, n, nrow(cols))
+  shrunk <- shrink_correlation(Z)
+  q <- vapply(seq_len(nrow(cols)), function(a) {
+    g <- if (cols$warp[a]) model$warp$gmm else model$gmm[[cols$dof[a]]]
+    mixture_marginal_quantile(g, cols$comp[a], stats::pnorm(copula_z_grid))
+  }, numeric(length(copula_z_grid)))
+  list(columns = cols, cor = shrunk$cor, shrinkage = shrunk$lambda,
+       root = chol_psd(shrunk$cor), z = copula_z_grid,
+       quantiles = matrix(q, length(copula_z_grid), nrow(cols)), n = n)
+}
+
+# Which scores the copula joins: every FPC of every non-constant DoF, then
+# the warp FPCs (if the warps vary).
+score_columns <- function(model) {
+  k <- model$settings$ncomp
+  kw <- model$settings$warp_ncomp
+  live <- !vapply(model$fpca, function(f) isTRUE(f$constant), logical(1))
+  dofs <- model$dofs[live]
+  cols <- data.frame(dof = rep(dofs, each = k), comp = rep(seq_len(k), length(dofs)),
+                     warp = FALSE, stringsAsFactors = FALSE)
+  if (!isTRUE(model$warp$constant)) {
+    cols <- rbind(cols, data.frame(dof = NA_character_, comp = seq_len(kw), warp = TRUE,
+                                   stringsAsFactors = FALSE))
+  }
+  cols$name <- ifelse(cols$warp, paste0("warp.FPC", cols$comp), paste0(cols$dof, ".FPC", cols$comp))
+  cols
+}
+
+# The training scores as one n x D matrix in the order of `cols`.
+score_matrix <- function(model, cols) {
+  n <- model$n_used
+  S <- matrix(0, n, nrow(cols), dimnames = list(NULL, cols$name))
+  for (a in seq_len(nrow(cols))) {
+    S[, a] <- if (cols$warp[a]) model$warp$scores[, cols$comp[a]]
+              else model$scores[, cols$dof[a], cols$comp[a]]
+  }
+  S
+}
+
+# Correlation of the columns of Z shrunk towards the identity with the
+# analytic optimal intensity of Schafer & Strimmer (2005, target D):
+# lambda = sum_{i != j} Var(r_ij) / sum_{i != j} r_ij^2, clipped to [0, 1].
+shrink_correlation <- function(Z) {
+  n <- nrow(Z)
+  D <- ncol(Z)
+  if (D < 2L) return(list(cor = diag(D), lambda = 0))
+  X <- scale(Z)
+  X[!is.finite(X)] <- 0
+  R <- crossprod(X) / (n - 1)
+  # Var(r_ij) from the products w_kij = x_ki x_kj (their empirical variance)
+  W2 <- crossprod(X^2)                       # sum_k x_ki^2 x_kj^2
+  wbar <- crossprod(X) / n                   # mean_k w_kij
+  var_r <- n / (n - 1)^3 * (W2 - n * wbar^2)
+  off <- row(R) != col(R)
+  lambda <- sum(var_r[off]) / sum(R[off]^2)
+  lambda <- min(1, max(0, if (is.finite(lambda)) lambda else 1))
+  out <- (1 - lambda) * R
+  diag(out) <- 1
+  list(cor = out, lambda = lambda)
+}
+
+# Upper-triangular factor U with t(U) %*% U = S for a symmetric positive
+# semi-definite S (pivot-free Cholesky; an eigen root if S is singular).
+chol_psd <- function(S) {
+  U <- tryCatch(chol(S), error = function(e) NULL)
+  if (!is.null(U)) return(U)
+  e <- eigen(S, symmetric = TRUE)
+  t(e$vectors %*% diag(sqrt(pmax(e$values, 0)), nrow(S)))
+}
+
+# Quantiles of coordinate `a` of a Gaussian mixture (a mixture of normals in
+# one dimension) at probabilities u, by bisection on the mixture's CDF, all
+# probabilities at once.
+mixture_marginal_quantile <- function(g, a, u) {
+  w <- g$weights
+  m <- g$means[, a]
+  s <- sqrt(pmax(g$covs[a, a, ], 0))
+  if (all(s == 0)) return(rep(sum(w * m), length(u)))
+  s <- pmax(s, 1e-12 * max(s))
+  lo <- rep(min(m - 10 * s), length(u))
+  hi <- rep(max(m + 10 * s), length(u))
+  for (it in 1:60) {
+    mid <- (lo + hi) / 2
+    cdf <- colSums(w * stats::pnorm(outer(m, mid, function(mm, x) x - mm) / s))
+    below <- cdf < u
+    lo[below] <- mid[below]
+    hi[!below] <- mid[!below]
+  }
+  (lo + hi) / 2
+}
+
+# n draws of all scores from a copula model: list(alpha n x p x ncomp,
+# beta n x warp_ncomp), from the current RNG stream (one rnorm(n * D)).
+draw_copula_scores <- function(model, n) {
+  cop <- model$dependence$copula
+  k <- model$settings$ncomp
+  kw <- model$settings$warp_ncomp
+  alpha <- array(0, c(n, length(model$dofs), k))
+  beta <- matrix(0, n, kw)
+  D <- nrow(cop$columns)
+  if (D == 0L || n == 0L) return(list(alpha = alpha, beta = beta))
+  Z <- matrix(stats::rnorm(n * D), n, D) %*% cop$root
+  jdof <- match(cop$columns$dof, model$dofs)
+  for (a in seq_len(D)) {
+    v <- stats::approx(cop$z, cop$quantiles[, a], xout = Z[, a], rule = 2, ties = "ordered")$y
+    if (cop$columns$warp[a]) beta[, cop$columns$comp[a]] <- v
+    else alpha[, jdof[a], cop$columns$comp[a]] <- v
+  }
+  list(alpha = alpha, beta = beta)
+}
+
+# The correlation between DoFs' first FPC scores (p x p) a model carries:
+# the copula's for a copula model, zero off the diagonal for the thesis'
+# independent model. For print(), summary() and autoplot().
+dependence_matrix <- function(model) {
+  p <- length(model$dofs)
+  R <- diag(p)
+  dimnames(R) <- list(model$dofs, model$dofs)
+  cop <- model$dependence$copula
+  if (is.null(cop)) return(R)
+  first <- which(!cop$columns$warp & cop$columns$comp == 1L)
+  idx <- match(cop$columns$dof[first], model$dofs)
+  R[idx, idx] <- cop$cor[first, first]
+  R
+}

@@ -1,0 +1,332 @@
+# How natural are generated grasps? Each measure compares generated grasps
+# with held-out recordings of new subjects, always beside the same measure
+# for real recordings of the training subjects against the same held-out
+# recordings, at the same sample size: different people grasp differently,
+# so "as natural as recorded" means "no further from new subjects than the
+# training subjects themselves are".
+
+#' Measure how natural generated grasps are
+#'
+#' Generates grasps from each model set and compares them with held-out
+#' recordings (ideally of subjects the models never saw), each measure beside
+#' the same measure for real recordings of the training subjects against the
+#' same held-out recordings at the same sample size (the real-vs-real
+#' baseline). Per grasp type:
+#'
+#' * **discriminability** (`mmd`): the squared maximum mean discrepancy
+#'   (Gretton et al. 2012, unbiased estimate) with a Gaussian kernel between
+#'   the features of the two samples: the posture at 25%, 50%, 75% and 100%
+#'   of the motion and the log duration, each standardised by the held-out
+#'   recordings' spread; the kernel's bandwidth is the median distance
+#'   between held-out recordings, the same for both comparisons. Unlike a
+#'   test of means it sees the covariance: a sample whose fingers vary
+#'   independently is far from one whose fingers vary together. Its
+#'   permutation p-value (`mmd_p`, 200 permutations) is given too;
+#' * **dependence** (`posture_cor_gap`, `velocity_cor_gap`): the mean over
+#'   DoF pairs of `|r_held-out - r|`, where `r` is the correlation between two
+#'   DoFs' final angles across recordings, or between their velocity
+#'   profiles (the change over each tenth of the motion) within a recording,
+#'   averaged over recordings;
+#' * **recognisability** (`recognised`): the share classified as their own
+#'   type by linear discriminant analysis on the same features, trained on
+#'   the training recordings of all types (real recordings only, never the
+#'   model): for the generated grasps, and for the held-out recordings as the
+#'   baseline;
+#' * **plausibility** (`outside_limits`, `log_jerk`, `duration_ks`): the
+#'   share of frames with a DoF outside the hand's joint limits (the DoFs the
+#'   model's `limits` table enforces), the median over recordings of the log10
+#'   mean squared jerk (third derivative, per second cubed), and the
+#'   Kolmogorov-Smirnov distance of the durations from the held-out ones.
+#'   For the first two the baseline is the held-out recordings' own value
+#'   (the yardstick is "like real"), for the KS distance the training
+#'   recordings' distance.
+#'
+#' Every measure is averaged over `reps` repetitions (a fresh generated batch
+#' and a fresh subsample of training recordings each time). The `overall` rows
+#' give the median over types (pooled shares for `recognised` and
+#' `outside_limits`).
+#'
+#' @param models A `grasp_models` set ([fit_grasp_models()]) or a named list
+#'   of them to compare (e.g. `list(thesis = m1, copula = m2)`).
+#' @param held_out A [grasps()] object of held-out recordings of the modelled
+#'   types.
+#' @param training A [grasps()] object of the recordings the models were
+#'   fitted on (the baseline's real recordings and the classifier's training
+#'   data).
+#' @param n Generated grasps (and training recordings) per type and
+#'   repetition; by default the number of held-out recordings of each type.
+#' @param reps Repetitions averaged.
+#' @param seed Seed (the global RNG is restored afterwards).
+#' @return A data frame of class `generation_evaluation` with columns `model`,
+#'   `grasp` (a type, or `"overall"`), `family`, `metric`, `generated` (the
+#'   measure for generated grasps), `baseline` (for real recordings),
+#'   `better` (`"lower"` or `"higher"`) and `ratio` (`generated / baseline`).
+#'   Print it for the overall rows; [autoplot()] draws generated against
+#'   baseline for every type and measure.
+#' @seealso [fit_grasp_model()] (`dependence`), [generate()] (`limits`).
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 6, grasps = 1:2, objects = 2, trials = 2, seed = 1)
+#' train <- g[g$meta$subject <= "S04"]
+#' test <- g[g$meta$subject > "S04"]
+#' m <- fit_grasp_models(train, seed = 1, dependence = "copula")
+#' ev <- evaluate_generation(m, test, train, reps = 2)
+#' ev
+evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5, seed = 1) {
+  call <- rlang::caller_env()
+  sets <- if (inherits(models, "grasp_models")) list(model = models) else models
+  if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasp_models")) ||
+      is.null(names(sets)) || any(!nzchar(names(sets)))) {
+    hm_abort("{.arg models} must be a {.cls grasp_models} set or a named list of them.", "bad_input",
+             argument = "models", call = call)
+  }
+  check_grasps(held_out, arg = "held_out", call = call)
+  check_grasps(training, arg = "training", call = call)
+  reps <- check_whole(reps, "reps", max = 1000, call = call)
+  if (!is.null(n)) n <- check_whole(n, "n", min = 5, max = 1e5, call = call)
+  seed <- check_seed(seed, call = call)
+  types <- names(sets[[1]])
+  missing <- setdiff(types, as.character(unique(held_out$meta$grasp)))
+  if (length(missing)) {
+    hm_abort("{.arg held_out} has no recordings of {.val {missing}}.", "bad_input",
+             argument = "held_out", call = call)
+  }
+  with_seed(seed, evaluate_generation_impl(sets, held_out, training, types, n, reps))
+}
+
+evaluate_generation_impl <- function(sets, held_out, training, types, n, reps) {
+  lda <- fit_feature_lda(training)
+  rows <- list()
+  for (ty in types) {
+    ho <- held_out[held_out$meta$grasp == ty]
+    tr <- training[training$meta$grasp == ty]
+    n_ty <- min(n %||% length(ho), length(tr))
+    ref <- generation_reference(ho)
+    real <- lapply(seq_len(reps), function(r) tr[sample.int(length(tr), n_ty)])
+    base <- generation_measures(real, ref, lda, ty, sets[[1]][[ty]]$limits)
+    base$recognised <- mean(lda_class(lda, ref$features) == ty)
+    base$outside_limits <- limit_share(ho, sets[[1]][[ty]]$limits)
+    base$log_jerk <- ref$log_jerk
+    for (nm in names(sets)) {
+      m <- sets[[nm]][[ty]]
+      gen <- generate(m, n = n_ty * reps)
+      gen <- lapply(seq_len(reps), function(r) gen[(r - 1L) * n_ty + seq_len(n_ty)])
+      got <- generation_measures(gen, ref, lda, ty, m$limits)
+      rows[[length(rows) + 1L]] <- generation_rows(nm, ty, got, base)
+    }
+  }
+  out <- do.call(rbind, rows)
+  out <- rbind(out, generation_overall(out))
+  rownames(out) <- NULL
+  structure(out, class = c("generation_evaluation", "data.frame"))
+}
+
+# Which way is better, and the family, of every measure.
+generation_metrics <- data.frame(
+  metric = c("mmd", "mmd_p", "posture_cor_gap", "velocity_cor_gap", "recognised", "outside_limits",
+             "log_jerk", "duration_ks"),
+  family = c("discriminability", "discriminability", "dependence", "dependence", "recognisability",
+             "plausibility", "plausibility", "plausibility"),
+  better = c("lower", "higher", "lower", "lower", "higher", "lower", "closer", "lower"),
+  stringsAsFactors = FALSE)
+
+generation_rows <- function(model, type, got, base) {
+  mt <- generation_metrics
+  data.frame(model = model, grasp = type, family = mt$family, metric = mt$metric,
+             generated = unlist(got[mt$metric]), baseline = unlist(base[mt$metric]),
+             better = mt$better, ratio = unlist(got[mt$metric]) / unlist(base[mt$metric]),
+             stringsAsFactors = FALSE)
+}
+
+# Median over types per model and measure (the shares of recognised grasps
+# and of frames outside the limits are means: every type has the same n).
+generation_overall <- function(out) {
+  keys <- unique(out[c("model", "metric")])
+  rows <- lapply(seq_len(nrow(keys)), function(i) {
+    d <- out[out$model == keys$model[i] & out$metric == keys$metric[i], ]
+    f <- if (d$metric[1] %in% c("recognised", "outside_limits")) mean else stats::median
+    data.frame(model = d$model[1], grasp = "overall", family = d$family[1], metric = d$metric[1],
+               generated = f(d$generated), baseline = f(d$baseline), better = d$better[1],
+               ratio = f(d$generated) / f(d$baseline), stringsAsFactors = FALSE)
+  })
+  do.call(rbind, rows)
+}
+
+# What every comparison needs of the held-out recordings of one type.
+generation_reference <- function(ho) {
+  F <- generation_features(ho)
+  centre <- colMeans(F)
+  spread <- apply(F, 2, stats::sd)
+  spread[!is.finite(spread) | spread == 0] <- 1
+  Z <- sweep(sweep(F, 2, centre), 2, spread, "/")
+  d <- as.vector(stats::dist(Z))
+  list(features = F, centre = centre, spread = spread, Z = Z,
+       bandwidth = stats::median(d[d > 0]) %||% 1,
+       posture_cor = stats::cor(final_postures(ho)),
+       velocity_cor = velocity_correlation(ho),
+       durations = ho$meta$n_frames / ho$rate,
+       log_jerk = stats::median(log_jerk(ho)))
+}
+
+# Measures of a list of samples (repetitions) of one type against the
+# held-out reference, averaged over the repetitions.
+generation_measures <- function(samples, ref, lda, type, limits) {
+  one <- function(x) {
+    F <- generation_features(x)
+    Z <- sweep(sweep(F, 2, ref$centre), 2, ref$spread, "/")
+    mmd <- mmd_test(Z, ref$Z, ref$bandwidth)
+    list(mmd = mmd$mmd, mmd_p = mmd$p,
+         posture_cor_gap = cor_gap(stats::cor(final_postures(x)), ref$posture_cor),
+         velocity_cor_gap = cor_gap(velocity_correlation(x), ref$velocity_cor),
+         recognised = mean(lda_class(lda, F) == type),
+         outside_limits = limit_share(x, limits),
+         log_jerk = stats::median(log_jerk(x)),
+         duration_ks = suppressWarnings(stats::ks.test(x$meta$n_frames / x$rate, ref$durations)$statistic[[1]]))
+  }
+  res <- lapply(samples, one)
+  stats::setNames(lapply(names(res[[1]]), function(k) mean(vapply(res, `[[`, numeric(1), k))),
+                  names(res[[1]]))
+}
+
+# Posture at 25%, 50%, 75% and 100% of the motion (linear interpolation
+# between frames) and the log duration in seconds: one row per recording.
+generation_features <- function(x) {
+  at <- c(0.25, 0.5, 0.75, 1)
+  F <- t(vapply(x$recordings, function(r) {
+    m <- nrow(r)
+    pos <- 1 + at * (m - 1)
+    lo <- floor(pos)
+    hi <- pmin(lo + 1L, m)
+    w <- pos - lo
+    as.vector(t(r[lo, , drop = FALSE] * (1 - w) + r[hi, , drop = FALSE] * w))
+  }, numeric(length(at) * length(x$dofs))))
+  F <- cbind(F, log(x$meta$n_frames / x$rate))
+  colnames(F) <- c(paste0(rep(x$dofs, length(at)), "@", rep(at, each = length(x$dofs))), "log_duration")
+  F
+}
+
+final_postures <- function(x) {
+  t(vapply(x$recordings, function(r) r[nrow(r), ], numeric(length(x$dofs))))
+}
+
+# Correlation between DoFs' velocity profiles within each recording,
+# averaged over recordings (pairs undefined in a recording are skipped). The
+# profile is the change of each angle over each tenth of the motion, so
+# frame-to-frame sensor noise (which would decorrelate recorded velocities
+# but not the smooth generated ones) does not enter.
+velocity_correlation <- function(x) {
+  p <- length(x$dofs)
+  acc <- matrix(0, p, p)
+  cnt <- matrix(0, p, p)
+  at <- seq(0, 1, by = 0.1)
+  for (r in x$recordings) {
+    if (nrow(r) < 4L) next
+    pos <- 1 + at * (nrow(r) - 1)
+    lo <- floor(pos)
+    w <- pos - lo
+    prof <- r[lo, , drop = FALSE] * (1 - w) + r[pmin(lo + 1L, nrow(r)), , drop = FALSE] * w
+    C <- suppressWarnings(stats::cor(diff(prof)))
+    ok <- is.finite(C)
+    acc[ok] <- acc[ok] + C[ok]
+    cnt <- cnt + ok
+  }
+  out <- acc / cnt
+  dimnames(out) <- list(x$dofs, x$dofs)
+  out
+}
+
+# Mean absolute difference of two correlation matrices over the DoF pairs
+# defined in both.
+cor_gap <- function(a, b) {
+  d <- abs(a - b)[upper.tri(a)]
+  mean(d[is.finite(d)])
+}
+
+log_jerk <- function(x) {
+  vapply(x$recordings, function(r) {
+    if (nrow(r) < 5L) return(NA_real_)
+    j <- diff(r, differences = 3) * x$rate^3
+    log10(mean(j^2))
+  }, numeric(1))
+}
+
+limit_share <- function(x, limits) {
+  if (is.null(limits) || !nrow(limits)) return(NA_real_)
+  limit_violations(x, limits[limits$enforced, , drop = FALSE])$frames
+}
+
+# Unbiased squared MMD with a Gaussian kernel of the given bandwidth, and
+# its permutation p-value.
+mmd_test <- function(X, Y, bandwidth, permutations = 200L) {
+  n <- nrow(X)
+  m <- nrow(Y)
+  K <- exp(-as.matrix(stats::dist(rbind(X, Y)))^2 / (2 * bandwidth^2))
+  stat <- function(i) {
+    a <- i[seq_len(n)]
+    b <- i[n + seq_len(m)]
+    Kaa <- K[a, a]
+    Kbb <- K[b, b]
+    (sum(Kaa) - sum(diag(Kaa))) / (n * (n - 1)) + (sum(Kbb) - sum(diag(Kbb))) / (m * (m - 1)) -
+      2 * mean(K[a, b])
+  }
+  obs <- stat(seq_len(n + m))
+  perm <- vapply(seq_len(permutations), function(k) stat(sample.int(n + m)), numeric(1))
+  list(mmd = obs, p = (1 + sum(perm >= obs)) / (1 + permutations))
+}
+
+# LDA on generation_features() of all training recordings (equal priors).
+fit_feature_lda <- function(training) {
+  F <- generation_features(training)
+  y <- droplevels(training$meta$grasp)
+  keep <- apply(F, 2, stats::sd) > 0
+  list(fit = MASS::lda(F[, keep, drop = FALSE], y, prior = rep(1 / nlevels(y), nlevels(y))),
+       keep = keep)
+}
+
+lda_class <- function(lda, F) as.character(stats::predict(lda$fit, F[, lda$keep, drop = FALSE])$class)
+
+#' @export
+print.generation_evaluation <- function(x, ...) {
+  ov <- x[x$grasp == "overall", c("model", "family", "metric", "generated", "baseline", "better")]
+  cat(sprintf("<generation_evaluation> %d grasp type%s, model%s %s\n",
+              length(setdiff(unique(x$grasp), "overall")),
+              if (length(setdiff(unique(x$grasp), "overall")) == 1) "" else "s",
+              if (length(unique(x$model)) == 1) "" else "s", paste(unique(x$model), collapse = ", ")))
+  cat("Overall (median over types; baseline = real recordings of the training subjects):\n")
+  print(as.data.frame(ov), digits = 3, row.names = FALSE)
+  invisible(x)
+}
+
+#' Plot a generation evaluation
+#'
+#' One panel per measure: each grasp type's value for generated grasps
+#' against the real-vs-real baseline, one colour per model, with the diagonal
+#' (as natural as real) dashed.
+#'
+#' @param object A `generation_evaluation` from [evaluate_generation()].
+#' @param metric Measures to show (default: all but the p-value).
+#' @param ... Unused.
+#' @return A ggplot object.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 6, grasps = 1:2, objects = 2, trials = 2, seed = 1)
+#' train <- g[g$meta$subject <= "S04"]
+#' test <- g[g$meta$subject > "S04"]
+#' m <- fit_grasp_models(train, seed = 1, dependence = "copula")
+#' ggplot2::autoplot(evaluate_generation(m, test, train, reps = 2))
+autoplot.generation_evaluation <- function(object, metric = NULL, ...) {
+  d <- as.data.frame(object)
+  d <- d[d$grasp != "overall", ]
+  metric <- metric %||% setdiff(generation_metrics$metric, "mmd_p")
+  d <- d[d$metric %in% metric, ]
+  d$metric <- factor(d$metric, levels = metric)
+  ggplot2::ggplot(d, ggplot2::aes(.data$baseline, .data$generated, colour = .data$model)) +
+    ggplot2::geom_abline(slope = 1, intercept = 0, linetype = "dashed", colour = "grey50") +
+    ggplot2::geom_point(alpha = 0.75) +
+    ggplot2::facet_wrap(~metric, scales = "free") +
+    ggplot2::labs(x = "real recordings (training subjects vs held-out)",
+                  y = "generated grasps (vs held-out)", colour = "model",
+                  title = "How natural are generated grasps?",
+                  subtitle = "one point per grasp type; on the dashed line = as natural as recorded") +
+    ggplot2::theme_bw(base_size = 11)
+}
