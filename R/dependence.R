@@ -131,13 +131,31 @@ draw_copula_scores <- function(model, n) {
   D <- nrow(cop$columns)
   if (D == 0L || n == 0L) return(list(alpha = alpha, beta = beta))
   Z <- matrix(stats::rnorm(n * D), n, D) %*% cop$root
-  jdof <- match(cop$columns$dof, model$dofs)
-  for (a in seq_len(D)) {
-    v <- stats::approx(cop$z, cop$quantiles[, a], xout = Z[, a], rule = 2, ties = "ordered")$y
-    if (cop$columns$warp[a]) beta[, cop$columns$comp[a]] <- v
-    else alpha[, jdof[a], cop$columns$comp[a]] <- v
-  }
+  V <- interpolate_columns(cop$z, cop$quantiles, Z)
+  dof_cols <- which(!cop$columns$warp)
+  jdof <- match(cop$columns$dof[dof_cols], model$dofs)
+  # alpha[, j, c] is column j + p (c - 1) of alpha viewed as n x (p k)
+  dim(alpha) <- c(n, length(model$dofs) * k)
+  alpha[, jdof + length(model$dofs) * (cop$columns$comp[dof_cols] - 1L)] <- V[, dof_cols]
+  dim(alpha) <- c(n, length(model$dofs), k)
+  warp_cols <- which(cop$columns$warp)
+  beta[, cop$columns$comp[warp_cols]] <- V[, warp_cols]
   list(alpha = alpha, beta = beta)
+}
+
+# Linear interpolation of every column of Z in its own column of the table
+# Q on the common, evenly spaced grid `z` (ends held beyond it), all at once:
+# stats::approx() per column costs more than the draw itself for one grasp.
+interpolate_columns <- function(z, Q, Z) {
+  G <- length(z)
+  h <- (z[G] - z[1]) / (G - 1)
+  pos <- (pmin(pmax(Z, z[1]), z[G]) - z[1]) / h
+  lo <- pmin(floor(pos), G - 2)
+  f <- pos - lo
+  base <- rep((seq_len(ncol(Z)) - 1L) * G, each = nrow(Z)) + lo + 1
+  V <- Q[base] * (1 - f) + Q[base + 1] * f
+  dim(V) <- dim(Z)
+  V
 }
 
 # The correlation between DoFs' first FPC scores (p x p) a model carries:

@@ -158,3 +158,12 @@ test_that("print, summary and autoplot show the dependence", {
   expect_equal(summary(ms)$dependence, "copula")
   expect_output(print(ms), "copula \\(1 type\\)")
 })
+
+test_that("interpolate_columns() is approx() column by column", {
+  z <- seq(-5, 5, length.out = 41)
+  Q <- cbind(z^3, exp(z / 3), -z)
+  set.seed(9)
+  Z <- matrix(stats::rnorm(60, sd = 3), 20, 3)
+  want <- vapply(1:3, function(a) stats::approx(z, Q[, a], xout = Z[, a], rule = 2)$y, numeric(20))
+  expect_equal(interpolate_columns(z, Q, Z), want)
+})

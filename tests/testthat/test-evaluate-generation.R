@@ -1,0 +1,83 @@
+# The naturalness yardstick: calibrated on the simulator itself (fresh
+# recordings of new subjects score like the training subjects' recordings),
+# and sensitive to what the thesis' model gets wrong (independent DoFs).
+
+subject_no <- function(g) as.integer(sub("S", "", g$meta$subject))
+
+test_that("fresh recordings from the simulator score at the real-vs-real level", {
+  # a group of subjects is itself a sample: compare the median over three
+  # fresh groups of 15 new subjects with the training group's score
+  g <- simulate_grasps(subjects = 75, grasps = c(1, 9), seed = 21, overlong = FALSE)
+  s <- subject_no(g)
+  train <- g[s <= 15]
+  held <- g[s > 15 & s <= 30]
+  lda <- fit_feature_lda(train)
+  for (ty in levels(droplevels(g$meta$grasp))) {
+    ref <- generation_reference(held[held$meta$grasp == ty])
+    tr <- train[train$meta$grasp == ty]
+    lim <- recorded_limits(tr, tr$dofs)
+    base <- generation_measures(list(tr), ref, lda, ty, lim)
+    fresh <- lapply(0:2, function(k) {
+      fr <- g[s > 30 + 15 * k & s <= 45 + 15 * k]
+      generation_measures(list(fr[fr$meta$grasp == ty]), ref, lda, ty, lim)
+    })
+    med <- function(what) stats::median(vapply(fresh, `[[`, numeric(1), what))
+    expect_gt(med("mmd"), 0.5 * base$mmd)
+    expect_lt(med("mmd"), 2 * base$mmd)
+    expect_lt(abs(med("posture_cor_gap") - base$posture_cor_gap), 0.1)
+    expect_gt(med("recognised"), 0.9)
+  }
+})
+
+test_that("the MMD test holds its level on exchangeable samples and sees covariance", {
+  set.seed(3)
+  X <- matrix(stats::rnorm(60 * 4), 60)
+  Y <- matrix(stats::rnorm(60 * 4), 60)
+  bw <- stats::median(stats::dist(Y))
+  expect_gt(mmd_test(X, Y, bw)$p, 0.05)
+  # same means and variances, different correlation: a test of means misses
+  # it, the kernel test does not
+  f <- stats::rnorm(150)
+  C <- outer(f, rep(1, 4)) * 0.95 + matrix(stats::rnorm(600, sd = sqrt(1 - 0.95^2)), 150)
+  I <- matrix(stats::rnorm(600), 150)
+  bw <- stats::median(stats::dist(C))
+  expect_lt(mmd_test(I, C, bw)$p, 0.01)
+})
+
+test_that("evaluate_generation() flags independent DoFs and returns a tidy table", {
+  g <- simulate_grasps(subjects = 24, grasps = c(1, 9, 14), seed = 2)
+  s <- subject_no(g)
+  train <- g[s <= 16]
+  held <- g[s > 16]
+  mi <- fit_grasp_models(train, seed = 1)
+  mc <- fit_grasp_models(train, seed = 1, dependence = "copula")
+  ev <- evaluate_generation(list(thesis = mi, copula = mc), held, train, reps = 2, seed = 1)
+  expect_s3_class(ev, "generation_evaluation")
+  expect_setequal(unique(ev$grasp), c(names(mi), "overall"))
+  expect_setequal(unique(ev$metric), generation_metrics$metric)
+  ov <- ev[ev$grasp == "overall", ]
+  gap <- function(m) ov$generated[ov$model == m & ov$metric == "posture_cor_gap"]
+  base <- ov$baseline[ov$model == "copula" & ov$metric == "posture_cor_gap"]
+  expect_gt(gap("thesis"), 1.5 * base)        # the thesis' model is flagged
+  expect_lt(gap("copula"), gap("thesis"))
+  expect_equal(ov$generated[ov$model == "copula" & ov$metric == "outside_limits"], 0)
+  # the baseline is the same for both models
+  expect_equal(ev$baseline[ev$model == "thesis"], ev$baseline[ev$model == "copula"])
+  expect_output(print(ev), "posture_cor_gap")
+  p <- ggplot2::autoplot(ev)
+  expect_s3_class(p, "ggplot")
+  expect_false("mmd_p" %in% p$data$metric)
+  # reproducible
+  expect_equal(evaluate_generation(mc, held, train, reps = 1, seed = 4),
+               evaluate_generation(mc, held, train, reps = 1, seed = 4))
+})
+
+test_that("evaluate_generation() refuses what it cannot compare", {
+  g <- simulate_grasps(subjects = 8, grasps = 1:2, objects = 2, trials = 2, seed = 2)
+  m <- fit_grasp_models(g, seed = 1)
+  expect_error(evaluate_generation(list(m), g, g), class = "handmotion_error_bad_input")
+  expect_error(evaluate_generation(m, g$recordings, g), class = "handmotion_error_bad_input")
+  expect_error(evaluate_generation(m, g[g$meta$grasp == "Large Diameter"], g),
+               "no recordings of", class = "handmotion_error_bad_input")
+  expect_error(evaluate_generation(m, g, g, reps = 0), class = "handmotion_error_bad_input")
+})
