@@ -274,16 +274,28 @@ mmd_test <- function(X, Y, bandwidth, permutations = 200L) {
   list(mmd = obs, p = (1 + sum(perm >= obs)) / (1 + permutations))
 }
 
-# LDA on generation_features() of all training recordings (equal priors).
+# LDA on generation_features() of all training recordings (equal priors),
+# on their principal components: standardised features, then the components
+# that carry variance (at most n - K - 1 of them for n recordings of K types,
+# so the pooled covariance is never singular, e.g. a DIP that follows its PIP).
 fit_feature_lda <- function(training) {
   F <- generation_features(training)
   y <- droplevels(training$meta$grasp)
-  keep <- apply(F, 2, stats::sd) > 0
-  list(fit = MASS::lda(F[, keep, drop = FALSE], y, prior = rep(1 / nlevels(y), nlevels(y))),
-       keep = keep)
+  centre <- colMeans(F)
+  spread <- apply(F, 2, stats::sd)
+  spread[!is.finite(spread) | spread == 0] <- 1
+  X <- sweep(sweep(F, 2, centre), 2, spread, "/")
+  sv <- svd(X, nu = 0)
+  q <- max(1L, min(sum(sv$d > 1e-6 * sv$d[1]), nrow(X) - nlevels(y) - 1L))
+  rotation <- sv$v[, seq_len(q), drop = FALSE]
+  list(fit = MASS::lda(X %*% rotation, y, prior = rep(1 / nlevels(y), nlevels(y))),
+       centre = centre, spread = spread, rotation = rotation)
 }
 
-lda_class <- function(lda, F) as.character(stats::predict(lda$fit, F[, lda$keep, drop = FALSE])$class)
+lda_class <- function(lda, F) {
+  X <- sweep(sweep(F, 2, lda$centre), 2, lda$spread, "/") %*% lda$rotation
+  as.character(stats::predict(lda$fit, X)$class)
+}
 
 #' @export
 print.generation_evaluation <- function(x, ...) {

@@ -10,7 +10,7 @@ results are identical to R's for the same seed.
 >>> x = hm.generate(m, grasp="Power Sphere", n=10, seed=2)
 """
 
-from .api import (classify, evaluate_loso, fit_grasp_models, fit_last_frame_pca, fit_handover, forward_kinematics, generate,
+from .api import (classify, evaluate_generation, evaluate_loso, fit_grasp_models, fit_last_frame_pca, fit_handover, forward_kinematics, generate,
                   hand_skeleton, joint_names, rank_markers, read_graspdb14, read_hust,
                   read_skeleton, reconstruct, select_markers, simulate_grasps, table_5_1, thesis_table,
                   table_5_2, table_5_3, table_5_6, table_5_7, table_5_8, write_bvh,
@@ -29,7 +29,7 @@ __all__ = [
     "BadSkeletonError", "FitFailedError", "RError", "HandmotionWarning",
     "simulate_grasps", "read_hust", "write_hust", "read_graspdb14", "write_graspdb14",
     "read_skeleton", "hand_skeleton", "forward_kinematics", "joint_names", "write_bvh",
-    "fit_grasp_models", "generate", "classify", "fit_last_frame_pca", "evaluate_loso",
+    "fit_grasp_models", "generate", "evaluate_generation", "classify", "fit_last_frame_pca", "evaluate_loso",
     "thesis_table", "table_5_1", "table_5_2", "table_5_3", "table_5_6", "table_5_7", "table_5_8",
     "rank_markers", "select_markers", "fit_handover", "reconstruct",
 ]

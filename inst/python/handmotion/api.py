@@ -150,15 +150,50 @@ def write_bvh(x, file, **kwargs):
 # ---------------------------------------------------------------- models
 
 
-def fit_grasp_models(x, grasps=None, seed=1, **kwargs):
-    """Fit one generative model per grasp type (DTW + FPCA + GMMs); returns a :class:`GraspModels`."""
+def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", **kwargs):
+    """Fit one generative model per grasp type (DTW + FPCA + GMMs); returns a :class:`GraspModels`.
+
+    ``dependence="independent"`` is the thesis' model (each DoF on its own);
+    ``"copula"`` joins all DoFs' scores and the warp by a Gaussian copula so that
+    generated fingers move together (R's ``fit_grasp_model()`` documents both).
+    """
+    if dependence not in ("independent", "copula"):
+        raise BadInputError(f"dependence must be 'independent' or 'copula', not {dependence!r}")
     g = _as_grasps(x)
     return GraspModels(call("fit_grasp_models", g, grasps=_grasps_arg(grasps), seed=_check_seed(seed),
-                            **kwargs))
+                            dependence=dependence, **kwargs))
 
 
-def generate(models, grasp=None, n=1, seed=None, as_array=False, **kwargs):
+def evaluate_generation(models, held_out, training, n=None, reps=5, seed=1):
+    """How natural generated grasps are, against a real-vs-real baseline (R's ``evaluate_generation()``).
+
+    ``models`` is a :class:`GraspModels` or a dict of them by name (e.g.
+    ``{"thesis": m1, "copula": m2}``); ``held_out`` the recordings of new subjects and
+    ``training`` those the models were fitted on. Returns a dict with ``table`` (one row per
+    model, type and measure: ``generated``, ``baseline``, ``better``, ``ratio``), ``overall``
+    (the rows of grasp ``"overall"``) and ``evaluation`` (a handle on the R result, for
+    plotting in R).
+    """
+    ro = r()
+    if isinstance(models, GraspModels):
+        rmodels = models.robj
+    elif isinstance(models, dict) and models and all(isinstance(v, GraspModels) for v in models.values()):
+        rmodels = ro.r["list"](**{str(k): v.robj for k, v in models.items()})
+    else:
+        raise BadInputError("models must be a GraspModels or a dict of them by name")
+    res = call("evaluate_generation", rmodels, _as_grasps(held_out, "held_out"),
+               _as_grasps(training, "training"), n=None if n is None else _check_count(n, "n", 5),
+               reps=_check_count(reps, "reps"), seed=_check_seed(seed))
+    table = r_to_py(ro.r["as.data.frame"](res))
+    return {"table": table, "overall": table[table["grasp"] == "overall"].reset_index(drop=True),
+            "evaluation": RHandle(res)}
+
+
+def generate(models, grasp=None, n=1, seed=None, as_array=False, limits=None, **kwargs):
     """Generate new grasps by sampling component scores (thesis eq. 2.5).
+
+    ``limits`` keeps angles inside the hand's joint limits by a smooth map (``None``: on for
+    copula models, off for the thesis' model).
 
     Returns a :class:`Grasps` (use its ``as_array()`` for an n x frames x DoF numpy
     array padded with NaN). ``as_array=True`` is deprecated: it returns that array
@@ -167,7 +202,9 @@ def generate(models, grasp=None, n=1, seed=None, as_array=False, **kwargs):
     if not isinstance(models, RHandle):
         raise BadInputError("models must come from fit_grasp_models()")
     n = _check_count(n, "n")
-    kw = dict(n=n, seed=_check_seed(seed), **kwargs)
+    if limits not in (None, True, False):
+        raise BadInputError(f"limits must be None, True or False, not {limits!r}")
+    kw = dict(n=n, seed=_check_seed(seed), limits=limits, **kwargs)
     if grasp is not None:
         kw["grasp"] = _grasps_arg(grasp)
     out = r_to_py(call("generate", models, **kw))

@@ -43,6 +43,19 @@ class GraspModels(RHandle):
     def __len__(self):
         return len(self.grasp_types())
 
+    def dependence(self, grasp):
+        """Correlation between the DoFs' first FPC scores that the model of ``grasp`` generates
+        with, as a DoF x DoF DataFrame (the identity for the thesis' independent model)."""
+        import numpy as np
+        import pandas as pd
+        if str(grasp) not in self.grasp_types():
+            from .errors import BadInputError
+            raise BadInputError(f"no model for grasp type {grasp!r}; have {self.grasp_types()}")
+        ro = r()
+        mat = ro.r("handmotion:::dependence_matrix")(self.robj.rx2(str(grasp)))
+        names = [str(v) for v in ro.r["rownames"](mat)]
+        return pd.DataFrame(np.asarray(mat), index=names, columns=names)
+
 
 class Skeleton(RHandle):
     """A hand skeleton (R class ``hand_skeleton``)."""
