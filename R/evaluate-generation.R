@@ -299,7 +299,13 @@ lda_class <- function(lda, F) {
 
 #' @export
 print.generation_evaluation <- function(x, ...) {
-  ov <- x[x$grasp == "overall", c("model", "family", "metric", "generated", "baseline", "better")]
+  need <- c("model", "grasp", "family", "metric", "generated", "baseline", "better")
+  if (!all(need %in% names(x))) { # a subset of columns: a plain table
+    print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), ...)
+    return(invisible(x))
+  }
+  ov <- as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE)
+  ov <- ov[ov$grasp == "overall", setdiff(need, "grasp")]
   cat(sprintf("<generation_evaluation> %d grasp type%s, model%s %s\n",
               length(setdiff(unique(x$grasp), "overall")),
               if (length(setdiff(unique(x$grasp), "overall")) == 1) "" else "s",

@@ -64,9 +64,9 @@ plot_model_dependence <- function(object, dofs) {
                                   name = "r") +
     ggplot2::coord_equal() +
     ggplot2::labs(x = NULL, y = NULL,
-                  title = sprintf("%s: correlation between DoFs' first FPC scores", object$grasp),
-                  subtitle = if (copula) "Gaussian copula (dependence = \"copula\")"
-                             else "independent DoFs (the thesis' model)") +
+                  title = object$grasp,
+                  subtitle = paste("correlation of the DoFs' first FPC scores:",
+                                   if (copula) "Gaussian copula" else "independent (the thesis' model)")) +
     ggplot2::theme_minimal(base_size = 11) +
     ggplot2::theme(axis.text.x = ggplot2::element_text(angle = 90, vjust = 0.5, hjust = 1))
 }
