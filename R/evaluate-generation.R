@@ -41,8 +41,17 @@
 #'   (the yardstick is "like real"), for the KS distance the training
 #'   recordings' distance.
 #'
+#' Over-long recordings (see [find_overlong()]) are left out of both real
+#' samples by default, with the threshold the models use (from each type's
+#' training frame counts): the thesis' models are fitted without them, as
+#' recordings that did not end with the grasp, so they are not part of what
+#' generation should reproduce. How many were left out is kept in the
+#' result's `excluded` attribute and printed; `overlong = NULL` keeps them.
+#'
 #' Every measure is averaged over `reps` repetitions (a fresh generated batch
-#' and a fresh subsample of training recordings each time). The `overall` rows
+#' and a fresh subsample of training recordings each time; the subsamples are
+#' drawn before anything is generated, so every model set is compared with
+#' the same real recordings). The `overall` rows
 #' give the median over types (pooled shares for `recognised` and
 #' `outside_limits`).
 #'
@@ -56,11 +65,16 @@
 #' @param n Generated grasps (and training recordings) per type and
 #'   repetition; by default the number of held-out recordings of each type.
 #' @param reps Repetitions averaged.
+#' @param overlong An [overlong_rule()] whose over-long recordings are left
+#'   out of the real samples (per type, threshold from the training
+#'   recordings), or `NULL` to keep every recording.
 #' @param seed Seed (the global RNG is restored afterwards).
 #' @return A data frame of class `generation_evaluation` with columns `model`,
 #'   `grasp` (a type, or `"overall"`), `family`, `metric`, `generated` (the
 #'   measure for generated grasps), `baseline` (for real recordings),
 #'   `better` (`"lower"` or `"higher"`) and `ratio` (`generated / baseline`).
+#'   Attribute `excluded`: a data frame (`grasp`, `threshold`, `held_out`,
+#'   `training`) of the over-long recordings left out per type.
 #'   Print it for the overall rows; [autoplot()] draws generated against
 #'   baseline for every type and measure.
 #' @seealso [fit_grasp_model()] (`dependence`), [generate()] (`limits`).
@@ -72,7 +86,8 @@
 #' m <- fit_grasp_models(train, seed = 1, dependence = "copula")
 #' ev <- evaluate_generation(m, test, train, reps = 2)
 #' ev
-evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5, seed = 1) {
+evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5,
+                                overlong = overlong_rule(), seed = 1) {
   call <- rlang::caller_env()
   sets <- if (inherits(models, "grasp_models")) list(model = models) else models
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasp_models")) ||
@@ -85,24 +100,32 @@ evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5, 
   reps <- check_whole(reps, "reps", max = 1000, call = call)
   if (!is.null(n)) n <- check_whole(n, "n", min = 5, max = 1e5, call = call)
   seed <- check_seed(seed, call = call)
+  if (!is.null(overlong) && !inherits(overlong, "overlong_rule")) {
+    hm_abort("{.arg overlong} must be made by {.fn overlong_rule} or be {.code NULL}.", "bad_input",
+             argument = "overlong", call = call)
+  }
   types <- names(sets[[1]])
   missing <- setdiff(types, as.character(unique(held_out$meta$grasp)))
   if (length(missing)) {
     hm_abort("{.arg held_out} has no recordings of {.val {missing}}.", "bad_input",
              argument = "held_out", call = call)
   }
-  with_seed(seed, evaluate_generation_impl(sets, held_out, training, types, n, reps))
+  with_seed(seed, evaluate_generation_impl(sets, held_out, training, types, n, reps, overlong))
 }
 
-evaluate_generation_impl <- function(sets, held_out, training, types, n, reps) {
+evaluate_generation_impl <- function(sets, held_out, training, types, n, reps, overlong) {
   lda <- fit_feature_lda(training)
+  real_sets <- lapply(types, function(ty) {
+    generation_real_samples(held_out[held_out$meta$grasp == ty], training[training$meta$grasp == ty],
+                            ty, n, reps, overlong)
+  })
   rows <- list()
-  for (ty in types) {
-    ho <- held_out[held_out$meta$grasp == ty]
-    tr <- training[training$meta$grasp == ty]
-    n_ty <- min(n %||% length(ho), length(tr))
+  for (i in seq_along(types)) {
+    ty <- types[i]
+    ho <- real_sets[[i]]$held_out
+    real <- real_sets[[i]]$training
+    n_ty <- length(real[[1]])
     ref <- generation_reference(ho)
-    real <- lapply(seq_len(reps), function(r) tr[sample.int(length(tr), n_ty)])
     base <- generation_measures(real, ref, lda, ty, sets[[1]][[ty]]$limits)
     base$recognised <- mean(lda_class(lda, ref$features) == ty)
     base$outside_limits <- limit_share(ho, sets[[1]][[ty]]$limits)
@@ -118,7 +141,24 @@ evaluate_generation_impl <- function(sets, held_out, training, types, n, reps) {
   out <- do.call(rbind, rows)
   out <- rbind(out, generation_overall(out))
   rownames(out) <- NULL
-  structure(out, class = c("generation_evaluation", "data.frame"))
+  excluded <- do.call(rbind, lapply(real_sets, `[[`, "excluded"))
+  structure(out, class = c("generation_evaluation", "data.frame"), excluded = excluded)
+}
+
+# The real recordings of one type: held-out and training recordings without
+# the over-long ones (threshold from the training frame counts, as the model
+# has it), and `reps` training subsamples of the comparison size.
+generation_real_samples <- function(ho, tr, type, n, reps, overlong) {
+  threshold <- if (is.null(overlong)) Inf else overlong_threshold(tr$meta$n_frames, overlong)
+  long_ho <- ho$meta$n_frames > threshold
+  long_tr <- tr$meta$n_frames > threshold
+  ho <- ho[!long_ho]
+  tr <- tr[!long_tr]
+  n_ty <- min(n %||% length(ho), length(tr))
+  list(held_out = ho,
+       training = lapply(seq_len(reps), function(r) tr[sample.int(length(tr), n_ty)]),
+       excluded = data.frame(grasp = type, threshold = threshold, held_out = sum(long_ho),
+                             training = sum(long_tr), stringsAsFactors = FALSE))
 }
 
 # Which way is better, and the family, of every measure.
@@ -188,22 +228,9 @@ generation_measures <- function(samples, ref, lda, type, limits) {
                   names(res[[1]]))
 }
 
-# Posture at 25%, 50%, 75% and 100% of the motion (linear interpolation
-# between frames) and the log duration in seconds: one row per recording.
-generation_features <- function(x) {
-  at <- c(0.25, 0.5, 0.75, 1)
-  F <- t(vapply(x$recordings, function(r) {
-    m <- nrow(r)
-    pos <- 1 + at * (m - 1)
-    lo <- floor(pos)
-    hi <- pmin(lo + 1L, m)
-    w <- pos - lo
-    as.vector(t(r[lo, , drop = FALSE] * (1 - w) + r[hi, , drop = FALSE] * w))
-  }, numeric(length(at) * length(x$dofs))))
-  F <- cbind(F, log(x$meta$n_frames / x$rate))
-  colnames(F) <- c(paste0(rep(x$dofs, length(at)), "@", rep(at, each = length(x$dofs))), "log_duration")
-  F
-}
+# Posture at 25%, 50%, 75% and 100% of the motion and the log duration in
+# seconds: one row per recording.
+generation_features <- function(x) motion_features(x, c(0.25, 0.5, 0.75, 1))
 
 final_postures <- function(x) {
   t(vapply(x$recordings, function(r) r[nrow(r), ], numeric(length(x$dofs))))
@@ -312,6 +339,11 @@ print.generation_evaluation <- function(x, ...) {
               if (length(unique(x$model)) == 1) "" else "s", paste(unique(x$model), collapse = ", ")))
   cat("Overall (median over types; baseline = real recordings of the training subjects):\n")
   print(as.data.frame(ov), digits = 3, row.names = FALSE)
+  ex <- attr(x, "excluded")
+  if (is.data.frame(ex) && nrow(ex)) {
+    cat(sprintf("Over-long recordings left out of the real samples: %d held-out, %d training.\n",
+                sum(ex$held_out), sum(ex$training)))
+  }
   invisible(x)
 }
 

@@ -44,16 +44,18 @@ test_that("the copula keeps each score's marginal and carries the training corre
   g <- simulate_grasps(subjects = 20, grasps = 3, seed = 3)
   m <- fit_grasp_model(g, seed = 1, dependence = "copula")
   cop <- m$dependence$copula
-  expect_equal(nrow(cop$columns), length(m$dofs) * 2 + 1)
-  expect_equal(dim(cop$cor), c(33L, 33L))
+  expect_equal(m$settings$warp_ncomp, 3L) # the copula model's default
+  D_all <- length(m$dofs) * 2 + 3
+  expect_equal(nrow(cop$columns), D_all)
+  expect_equal(dim(cop$cor), c(D_all, D_all))
   expect_true(cop$shrinkage >= 0 && cop$shrinkage <= 1)
-  expect_equal(unname(diag(cop$cor)), rep(1, 33))
+  expect_equal(unname(diag(cop$cor)), rep(1, D_all))
   set.seed(1)
   s <- draw_copula_scores(m, 20000)
   S <- score_matrix(m, cop$columns)
   # the drawn scores' correlation is the copula's (normal scores, rank-based)
   D <- cbind(matrix(s$alpha, 20000), s$beta)
-  D <- D[, match(cop$columns$name, c(paste0(rep(m$dofs, 2), ".FPC", rep(1:2, each = 16)), "warp.FPC1"))]
+  D <- D[, match(cop$columns$name, c(paste0(rep(m$dofs, 2), ".FPC", rep(1:2, each = 16)), paste0("warp.FPC", 1:3)))]
   Zd <- apply(D, 2, function(v) stats::qnorm(rank(v) / (length(v) + 1)))
   expect_lt(max(abs(stats::cor(Zd) - cop$cor)), 0.05)
   # and each column's marginal is its mixture's: quantiles of draws against
@@ -146,7 +148,7 @@ test_that("print, summary and autoplot show the dependence", {
   g <- simulate_grasps(subjects = 8, grasps = 3, seed = 3)
   mc <- fit_grasp_model(g, seed = 1, dependence = "copula")
   mi <- fit_grasp_model(g, seed = 1)
-  expect_output(print(mc), "Gaussian copula over 33 scores")
+  expect_output(print(mc), "Gaussian copula over 35 scores")
   expect_output(print(mi), "independent DoFs")
   expect_output(print(summary(mc)), "copula")
   p <- ggplot2::autoplot(mc, type = "dependence")

@@ -80,4 +80,29 @@ test_that("evaluate_generation() refuses what it cannot compare", {
   expect_error(evaluate_generation(m, g[g$meta$grasp == "Large Diameter"], g),
                "no recordings of", class = "handmotion_error_bad_input")
   expect_error(evaluate_generation(m, g, g, reps = 0), class = "handmotion_error_bad_input")
+  expect_error(evaluate_generation(m, g, g, overlong = 3), class = "handmotion_error_bad_input")
+})
+
+test_that("over-long recordings are left out of the real samples, counted and printed", {
+  g <- simulate_grasps(subjects = 12, grasps = c(1, 9), seed = 5, overlong = FALSE)
+  s <- subject_no(g)
+  train <- g[s <= 8]
+  held <- g[s > 8]
+  m <- fit_grasp_models(train, seed = 1)
+  # plant two over-long held-out recordings of type 1: the hand rests for 3x the frames
+  ty <- names(m)[1]
+  long <- which(held$meta$grasp == ty)[1:2]
+  recs <- held$recordings
+  for (i in long) recs[[i]] <- recs[[i]][c(seq_len(nrow(recs[[i]])), rep(nrow(recs[[i]]), 3 * nrow(recs[[i]]))), ]
+  held2 <- grasps(recs, meta = held$meta[setdiff(names(held$meta), c("id", "n_frames"))],
+                  dofs = held$dofs, rate = held$rate)
+  ev <- evaluate_generation(m, held2, train, reps = 1, seed = 1)
+  ex <- attr(ev, "excluded")
+  expect_equal(ex$held_out[ex$grasp == ty], 2L)
+  expect_equal(sum(ex$training), 0L)
+  expect_output(print(ev), "left out of the real samples: 2 held-out, 0 training")
+  # kept when asked
+  ev_all <- evaluate_generation(m, held2, train, reps = 1, seed = 1, overlong = NULL)
+  expect_equal(sum(attr(ev_all, "excluded")$held_out), 0L)
+  expect_false(isTRUE(all.equal(ev_all$baseline, ev$baseline)))
 })

@@ -1,0 +1,118 @@
+# How early can a grasp be recognised? Held out by subject: for each fold a
+# recogniser is fitted on the other subjects and the held-out recordings
+# are classified from their first frames, at times since the recording
+# began and at fractions of each recording's own length.
+
+#' Accuracy of early recognition against time and fraction of the motion
+#'
+#' Holds out each subject (or group of subjects) in turn, fits
+#' [fit_grasp_recognizer()] on the others, and classifies the held-out
+#' recordings from their first frames: after `ms` milliseconds since the
+#' recording began (what a live stream knows), and after each fraction in
+#' `fractions` of the recording's own length (for comparison with
+#' whole-motion classifiers; a live stream does not know the fraction).
+#' Folds run through `future.apply` (set a `future::plan()` to use several
+#' cores).
+#'
+#' @param x A labelled [grasps()] object with `subject` metadata.
+#' @param ms Times since the recording began, in milliseconds.
+#' @param fractions Fractions of each recording's length.
+#' @param folds `NULL` for one fold per subject, or a number of subject
+#'   groups (as in [evaluate_loso()]).
+#' @param seed Seed for the grouping of subjects into `folds`.
+#' @param ... Passed to [fit_grasp_recognizer()] (`at`, `horizon`).
+#' @return A data frame of class `early_recognition` with columns `scale`
+#'   (`"ms"` or `"fraction"`), `value`, `accuracy`, `n` (recordings) and
+#'   `frames` (mean frames seen); attribute `scheme`. `autoplot()` draws
+#'   accuracy against both scales.
+#' @seealso [fit_grasp_recognizer()], [start_recognition()]
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 4, grasps = 1:3, objects = 2, trials = 2, seed = 1)
+#' er <- evaluate_early_recognition(g, ms = c(200, 400), fractions = c(0.5, 1))
+#' er
+#' ggplot2::autoplot(er)
+evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractions = seq(0.1, 1, by = 0.1),
+                                       folds = NULL, seed = 1, ...) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  if (!is.numeric(ms) || anyNA(ms) || any(ms <= 0)) {
+    hm_abort("{.arg ms} must be positive times in milliseconds.", "bad_input", argument = "ms", call = call)
+  }
+  fractions <- check_fractions(fractions, "fractions", call = call)
+  if (any(fractions == 0)) {
+    hm_abort("{.arg fractions} must be above 0: a recording is seen from its first frame.", "bad_input",
+             argument = "fractions", call = call)
+  }
+  check_training_labels(x, call = call)
+  subj <- x$meta$subject
+  if (is.null(subj) || anyNA(subj) || length(unique(subj)) < 2L) {
+    hm_abort("{.arg x} needs a subject for every recording and at least two subjects.",
+             "too_few_subjects", argument = "x", call = call)
+  }
+  old_rng <- save_rng()
+  on.exit(restore_rng(old_rng), add = TRUE)
+  groups <- subject_folds(unique(subj), folds, seed, call = call)
+  fit_args <- list(...)
+  p <- progressr::progressor(steps = length(groups))
+  parts <- future.apply::future_lapply(seq_along(groups), function(f) {
+    test <- subj %in% groups[[f]]
+    rec <- do.call(fit_grasp_recognizer, c(list(x[!test]), fit_args))
+    te <- x[test]
+    truth <- as.character(te$meta$grasp)
+    hits <- function(seen) as.character(rec$classes[max.col(recognizer_scores(rec, te, seen))]) == truth
+    out <- rbind(
+      do.call(rbind, lapply(ms, function(v) {
+        seen <- rep(max(1L, as.integer(round(v * te$rate / 1000))), length(te$recordings))
+        data.frame(scale = "ms", value = v, correct = sum(hits(seen)), n = length(truth), frames = sum(seen))
+      })),
+      do.call(rbind, lapply(fractions, function(v) {
+        seen <- pmax(1L, as.integer(round(v * te$meta$n_frames)))
+        data.frame(scale = "fraction", value = v, correct = sum(hits(seen)), n = length(truth), frames = sum(seen))
+      })))
+    p(sprintf("fold %d of %d", f, length(groups)))
+    out
+  }, future.seed = TRUE)
+  all <- do.call(rbind, parts)
+  key <- paste(all$scale, all$value)
+  agg <- do.call(rbind, lapply(split(all, factor(key, levels = unique(key))), function(d) {
+    data.frame(scale = d$scale[1], value = d$value[1], accuracy = sum(d$correct) / sum(d$n),
+               n = sum(d$n), frames = sum(d$frames) / sum(d$n), stringsAsFactors = FALSE)
+  }))
+  rownames(agg) <- NULL
+  structure(agg, class = c("early_recognition", "data.frame"),
+            scheme = if (is.null(folds)) "leave-one-subject-out" else sprintf("%d subject groups", length(groups)),
+            classes = length(unique(x$meta$grasp)))
+}
+
+#' @export
+print.early_recognition <- function(x, ...) {
+  cat(sprintf("<early_recognition> %d grasp types, held out by subject (%s)\n",
+              attr(x, "classes"), attr(x, "scheme")))
+  d <- as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE)
+  d$value <- format(d$value, drop0trailing = TRUE, scientific = FALSE)
+  d$accuracy <- sprintf("%.1f%%", 100 * d$accuracy)
+  d$frames <- round(d$frames, 1)
+  print(d, row.names = FALSE)
+  invisible(x)
+}
+
+#' @rdname evaluate_early_recognition
+#' @param object An `early_recognition` result.
+#' @export
+#' @method autoplot early_recognition
+autoplot.early_recognition <- function(object, ...) {
+  d <- as.data.frame(unclass(object)[names(object)], stringsAsFactors = FALSE)
+  d$axis <- factor(ifelse(d$scale == "ms", "time since the recording began (ms)", "fraction of the motion seen"),
+                   levels = c("time since the recording began (ms)", "fraction of the motion seen"))
+  ggplot2::ggplot(d, ggplot2::aes(.data$value, .data$accuracy)) +
+    ggplot2::geom_hline(yintercept = 1 / attr(object, "classes"), linetype = "dotted", colour = "grey50") +
+    ggplot2::geom_line(colour = "#2166ac") +
+    ggplot2::geom_point(colour = "#2166ac") +
+    ggplot2::facet_wrap(~axis, scales = "free_x") +
+    ggplot2::scale_y_continuous(labels = function(v) paste0(round(100 * v), "%"), limits = c(0, 1)) +
+    ggplot2::labs(x = NULL, y = "held-out accuracy",
+                  title = "Early grasp recognition",
+                  subtitle = sprintf("%s; dotted: chance", attr(object, "scheme"))) +
+    ggplot2::theme_minimal(base_size = 11)
+}

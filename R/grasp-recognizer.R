@@ -1,0 +1,176 @@
+# Early recognition: which grasp is the hand making while it is still
+# closing? A VR or teleoperation loop sees frames one at a time and never
+# knows how long the grasp will last, so the features may only use the
+# frames seen so far: the postures at fractions of them and how far each DoF
+# has travelled. One shrinkage LDA (R/shrunk-lda.R) per horizon h (frames
+# since the recording began) is trained on the first h frames of every
+# training recording; a recording that ended before h is continued by its
+# last posture, as a hand at rest would be.
+
+#' Fit an early grasp recogniser
+#'
+#' Trains one discriminant per horizon `h = 1, ..., horizon` frames: each
+#' training recording is cut after its first `h` frames (continued by its
+#' last posture if it is shorter: the hand has stopped), described by the
+#' postures at fractions `at` of those frames and by how far each DoF has
+#' travelled so far (log of 1 + the sum of absolute changes), and a
+#' shrinkage LDA (as in [fit_grasp_classifier()]) is fitted on the result.
+#' Nothing about a recording's final length is used, so the recogniser can
+#' classify a live stream: [start_recognition()] makes a stream to
+#' [update()] frame by frame, and [predict.grasp_recognizer()] classifies
+#' whole sets from their first frames. After `horizon` frames (by default
+#' 95% of the training grasps have ended by then) the prediction stays that
+#' of the first `horizon` frames: what follows is mostly a hand at rest.
+#'
+#' @param x A labelled [grasps()] object (the training recordings).
+#' @param at Fractions of the frames seen so far at which the posture is
+#'   taken (0 = the first frame, 1 = the newest).
+#' @param horizon Number of horizons (frames) with their own discriminant;
+#'   by default the 95th percentile of the training durations.
+#' @return An object of class `grasp_recognizer`: `classes`, `levels` (of
+#'   the training labels, carried by predictions), `at`, `dofs`,
+#'   `rate`, `horizon`, `fits` (one discriminant per horizon) and `n`.
+#' @seealso [start_recognition()], [evaluate_early_recognition()],
+#'   [fit_grasp_classifier()] for complete recordings.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 5, grasps = 1:3, objects = 2, trials = 2, seed = 1)
+#' rec <- fit_grasp_recognizer(g[g$meta$subject != "S05"])
+#' rec
+#' test <- g[g$meta$subject == "S05"]
+#' # from the first 300 ms of every held-out recording
+#' mean(predict(rec, test, ms = 300) == test$meta$grasp)
+fit_grasp_recognizer <- function(x, at = c(0, 0.25, 0.5, 0.75, 1), horizon = NULL) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  at <- check_fractions(at, "at", call = call)
+  y <- check_training_labels(x, call = call)
+  H <- horizon %||% as.integer(ceiling(stats::quantile(x$meta$n_frames, 0.95, names = FALSE)))
+  H <- check_whole(H, "horizon", max = 1e4, call = call)
+  prefix <- prefix_arrays(x, H)
+  fits <- lapply(seq_len(H), function(h) fit_shrunk_lda(prefix_features(prefix, h, at), y))
+  structure(list(classes = fits[[1]]$classes, levels = grasp_levels(x), at = at, dofs = x$dofs, rate = x$rate, horizon = H,
+                 fits = fits, n = stats::setNames(fits[[1]]$n, fits[[1]]$classes)),
+            class = "grasp_recognizer")
+}
+
+# Every recording's first H frames, continued by its last posture (n x H x p),
+# and the distance each DoF has travelled up to each frame (same shape).
+prefix_arrays <- function(x, H) {
+  n <- length(x$recordings)
+  p <- length(x$dofs)
+  A <- array(0, c(n, H, p))
+  for (i in seq_len(n)) {
+    r <- x$recordings[[i]]
+    A[i, , ] <- r[pmin(seq_len(H), nrow(r)), , drop = FALSE]
+  }
+  C <- array(0, c(n, H, p))
+  if (H > 1L) {
+    steps <- abs(A[, -1L, , drop = FALSE] - A[, -H, , drop = FALSE])
+    for (t in 2:H) C[, t, ] <- C[, t - 1L, ] + steps[, t - 1L, ]
+  }
+  list(frames = A, travel = C)
+}
+
+# Features at horizon h for every row of the prefix arrays: the postures
+# at fractions `at` of the h frames (ordered fraction-fastest: DoF 1 at
+# every fraction, then DoF 2, ...), then the log travel of every DoF.
+prefix_features <- function(prefix, h, at) {
+  A <- prefix$frames
+  n <- dim(A)[1]
+  ix <- fraction_index(h, at)
+  P <- A[, ix$lo, , drop = FALSE] * rep(1 - ix$w, each = n) + A[, ix$hi, , drop = FALSE] * rep(ix$w, each = n)
+  dim(P) <- c(n, length(at) * dim(A)[3])
+  cbind(P, log1p(matrix(prefix$travel[, h, ], n)))
+}
+
+# Frames either side of fractions `at` of h frames, and the weight of the
+# later one.
+fraction_index <- function(h, at) {
+  pos <- 1 + at * (h - 1)
+  lo <- floor(pos)
+  hi <- lo + 1L
+  hi[hi > h] <- h
+  list(lo = lo, hi = hi, w = pos - lo)
+}
+
+# The same features of one stream's frames seen so far (rows of `buf`).
+stream_features <- function(buf, h, at, travel) {
+  ix <- fraction_index(h, at)
+  c(buf[ix$lo, , drop = FALSE] * (1 - ix$w) + buf[ix$hi, , drop = FALSE] * ix$w, log1p(travel))
+}
+
+#' Classify recordings from their first frames
+#'
+#' @param object A [fit_grasp_recognizer()] result.
+#' @param newdata A [grasps()] object with the recogniser's DoFs.
+#' @param frames,ms,fraction How much of each recording is seen: a number of
+#'   frames, a time since the recording began in milliseconds (at the data's
+#'   rate), or a fraction of each recording's own length (for evaluation:
+#'   a live stream does not know its length). Give exactly one.
+#' @param type `"class"` or `"prob"` (recordings x types).
+#' @param ... Not used.
+#' @return A factor of predicted types or a probability matrix.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 4, grasps = 1:3, objects = 2, trials = 2, seed = 1)
+#' rec <- fit_grasp_recognizer(g)
+#' table(predict(rec, g, fraction = 0.5), g$meta$grasp)
+predict.grasp_recognizer <- function(object, newdata, frames = NULL, ms = NULL, fraction = NULL,
+                                     type = c("class", "prob"), ...) {
+  call <- rlang::caller_env()
+  type <- check_choice(type, arg = "type", call = call)
+  check_grasps(newdata, arg = "newdata", call = call)
+  if (!identical(newdata$dofs, object$dofs)) {
+    hm_abort("{.arg newdata} has other DoFs than the recogniser was trained on.", "bad_input",
+             argument = "newdata", call = call)
+  }
+  seen <- seen_frames(newdata, frames, ms, fraction, call)
+  s <- recognizer_scores(object, newdata, seen)
+  if (type == "prob") return(softmax_rows(s))
+  factor(object$classes[max.col(s, ties.method = "first")], levels = object$levels)
+}
+
+# Frames seen of each recording of x (at least 1).
+seen_frames <- function(x, frames, ms, fraction, call) {
+  given <- !c(is.null(frames), is.null(ms), is.null(fraction))
+  if (sum(given) != 1L) {
+    hm_abort("Give exactly one of {.arg frames}, {.arg ms} and {.arg fraction}.", "bad_input",
+             argument = "frames", call = call)
+  }
+  n <- length(x$recordings)
+  if (given[1]) return(rep(check_whole(frames, "frames", max = 1e6, call = call), n))
+  if (given[2]) {
+    ms <- check_number(ms, "ms", min = 0, min_open = TRUE, call = call)
+    return(rep(max(1L, as.integer(round(ms * x$rate / 1000))), n))
+  }
+  fraction <- check_number(fraction, "fraction", min = 0, max = 1, min_open = TRUE, call = call)
+  pmax(1L, as.integer(round(fraction * x$meta$n_frames)))
+}
+
+# Log posteriors of recordings seen for `seen` frames each (the same
+# features a stream computes; recordings are grouped by horizon).
+recognizer_scores <- function(object, x, seen) {
+  s <- matrix(NA_real_, length(seen), length(object$classes),
+              dimnames = list(x$meta$id, object$classes))
+  seen <- pmin(seen, object$horizon) # past the horizon: the first `horizon` frames
+  for (h in unique(seen)) {
+    rows <- which(seen == h)
+    F <- t(vapply(rows, function(i) {
+      r <- x$recordings[[i]][pmin(seq_len(h), nrow(x$recordings[[i]])), , drop = FALSE]
+      travel <- if (h > 1L) colSums(abs(diff(r))) else rep(0, ncol(r))
+      stream_features(r, h, object$at, travel)
+    }, numeric((length(object$at) + 1L) * length(object$dofs))))
+    s[rows, ] <- shrunk_lda_scores(object$fits[[h]], F)
+  }
+  s
+}
+
+#' @export
+print.grasp_recognizer <- function(x, ...) {
+  cat(sprintf("<grasp_recognizer> %d grasp types, %d training recordings, horizons 1-%d frames (%.0f ms at %g Hz)\n",
+              length(x$classes), sum(x$n), x$horizon, 1000 * x$horizon / x$rate, x$rate))
+  cat(sprintf("  features: postures at %s of the frames seen + travel per DoF; shrinkage LDA per horizon\n",
+              paste(signif(x$at, 3), collapse = ", ")))
+  invisible(x)
+}

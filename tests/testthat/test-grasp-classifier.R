@@ -1,0 +1,97 @@
+# Planted truth for the discriminant classifier: types that differ only in
+# the final angle of two DoFs, under noise in all 16, must be told apart.
+
+planted_types <- function(n_per = 40, subjects = 8, sep = 12, seed = 1, late = FALSE) {
+  set.seed(seed)
+  recs <- list()
+  meta <- list()
+  for (ty in c("Tripod", "Ring", "Stick")) {
+    shift <- c(Tripod = 0, Ring = sep, Stick = -sep)[[ty]]
+    for (i in seq_len(n_per)) {
+      m <- sample(25:35, 1)
+      s <- seq(0, 1, length.out = m)
+      close <- if (late) pmax(0, (s - 0.5) / 0.5) else s # late: types part only in the second half
+      target <- stats::rnorm(16, 40, 8)                   # every DoF varies a lot between recordings
+      target[c(3, 7)] <- 40 + shift + stats::rnorm(2, 0, 2)
+      r <- outer(close, target) + matrix(stats::rnorm(m * 16, 0, 1), m)
+      recs[[length(recs) + 1L]] <- r
+      meta[[length(meta) + 1L]] <- data.frame(grasp = ty, subject = sprintf("S%02d", (i - 1) %% subjects + 1))
+    }
+  }
+  grasps(recs, meta = do.call(rbind, meta))
+}
+
+test_that("the discriminant finds the two DoFs that separate the types", {
+  g <- planted_types()
+  test <- planted_types(seed = 2)
+  cl <- fit_grasp_classifier(g)
+  expect_s3_class(cl, "grasp_classifier")
+  acc <- mean(predict(cl, test) == test$meta$grasp)
+  expect_gt(acc, 0.95)
+  P <- predict(cl, test, type = "prob")
+  expect_equal(unname(rowSums(P)), rep(1, nrow(P)), tolerance = 1e-12)
+  expect_setequal(colnames(P), c("Tripod", "Ring", "Stick"))
+  expect_identical(rownames(P), test$meta$id)
+  # classify() gives the same predictions as a grasp_classification
+  res <- classify(cl, test)
+  expect_s3_class(res, "grasp_classification")
+  expect_equal(as.character(res$predictions$predicted), as.character(predict(cl, test)))
+  expect_output(print(res), "shrinkage LDA")
+  expect_output(print(cl), "3 grasp types")
+})
+
+test_that("the shrinkage LDA is the Bayes rule on Gaussian classes", {
+  set.seed(3)
+  D <- 6
+  mu <- rbind(rep(0, D), c(2, rep(0, D - 1)), c(0, 2, rep(0, D - 2)))
+  S <- 0.5^abs(outer(1:D, 1:D, "-"))
+  U <- chol(S)
+  draw <- function(n) {
+    y <- factor(sample(c("a", "b", "c"), n, TRUE))
+    list(X = mu[as.integer(y), ] + matrix(stats::rnorm(n * D), n) %*% U, y = y)
+  }
+  tr <- draw(6000)
+  te <- draw(3000)
+  fit <- fit_shrunk_lda(tr$X, tr$y)
+  expect_lt(fit$shrinkage, 0.01) # many recordings: nothing to shrink
+  pred <- fit$classes[max.col(shrunk_lda_scores(fit, te$X))]
+  # the true posterior with known means and covariance
+  Si <- solve(S)
+  true <- sapply(1:3, function(k) {
+    d <- sweep(te$X, 2, mu[k, ])
+    -0.5 * rowSums((d %*% Si) * d)
+  })
+  expect_gt(mean(pred == c("a", "b", "c")[max.col(true)]), 0.98)
+  # with few recordings per feature the correlation is shrunk, and the fit stays usable
+  few <- draw(40)
+  X <- cbind(few$X, matrix(stats::rnorm(40 * 20), 40))
+  fit_few <- fit_shrunk_lda(X, few$y)
+  expect_gt(fit_few$shrinkage, 0.05)
+  expect_true(all(is.finite(shrunk_lda_scores(fit_few, X))))
+})
+
+test_that("evaluate_loso() takes the discriminant and holds out by subject", {
+  g <- planted_types(n_per = 24, subjects = 6)
+  ev <- evaluate_loso(g, method = "discriminant")
+  expect_s3_class(ev, "grasp_evaluation")
+  expect_equal(nrow(ev$per_subject), 6)
+  expect_gt(ev$accuracy[["held_out"]], 0.9)
+  expect_gte(ev$accuracy[["in_sample"]], ev$accuracy[["held_out"]] - 0.02)
+  expect_output(print(ev), "shrinkage-LDA")
+})
+
+test_that("the classifier refuses what it cannot learn from or apply to", {
+  g <- planted_types(n_per = 6)
+  expect_error(fit_grasp_classifier(g[g$meta$grasp == "Tripod"]), "at least two", class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_classifier(g, at = c(0, 2)), class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_classifier(g, prior = "flat"), class = "handmotion_error_bad_input")
+  one <- g[c(1:6, 7)]
+  expect_error(fit_grasp_classifier(one), "fewer than two", class = "handmotion_error_bad_input")
+  unl <- g
+  unl$meta$grasp[1] <- NA
+  expect_error(fit_grasp_classifier(unl), "unlabelled", class = "handmotion_error_bad_input")
+  cl <- fit_grasp_classifier(g)
+  other <- grasps(lapply(g$recordings[1:3], function(r) r[, 1:15]))
+  expect_error(predict(cl, other), "other DoFs", class = "handmotion_error_bad_input")
+  expect_error(predict(cl, g, type = "raw"), class = "handmotion_error_bad_input")
+})

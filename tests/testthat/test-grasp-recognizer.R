@@ -1,0 +1,93 @@
+# Early recognition: planted types that move alike for the first half of the
+# motion and part only in the second half; a recogniser that used the
+# recording's length or its future frames would see them apart too early.
+
+late_types <- function(n_per = 36, subjects = 6, seed = 1) {
+  set.seed(seed)
+  recs <- list()
+  meta <- list()
+  for (ty in c("Tripod", "Ring")) {
+    for (i in seq_len(n_per)) {
+      m <- 40L
+      s <- seq(0, 1, length.out = m)
+      common <- outer(s, stats::rnorm(16, 30, 3))                   # both types close alike ...
+      part <- outer(pmax(0, (s - 0.5) / 0.5), c(rep(0, 15), if (ty == "Tripod") 25 else -25)) # ... then DoF 16 parts
+      recs[[length(recs) + 1L]] <- common + part + matrix(stats::rnorm(m * 16, 0, 0.5), m)
+      meta[[length(meta) + 1L]] <- data.frame(grasp = ty, subject = sprintf("S%02d", (i - 1) %% subjects + 1))
+    }
+  }
+  grasps(recs, meta = do.call(rbind, meta), rate = 50)
+}
+
+test_that("the recogniser sees the types apart only once they part", {
+  g <- late_types()
+  test <- late_types(seed = 2)
+  rec <- fit_grasp_recognizer(g)
+  expect_s3_class(rec, "grasp_recognizer")
+  expect_equal(rec$horizon, 40L)
+  acc <- function(...) mean(predict(rec, test, ...) == test$meta$grasp)
+  expect_lt(abs(acc(fraction = 0.4) - 0.5), 0.2)     # nothing to see yet: chance
+  expect_gt(acc(fraction = 0.75), 0.95)              # parted
+  expect_gt(acc(ms = 800), 0.95)                     # 40 frames at 50 Hz: the whole motion
+  expect_gt(acc(frames = 200), 0.95)                 # past the horizon: the first 40 frames' prediction
+  expect_output(print(rec), "horizons 1-40 frames")
+})
+
+test_that("a stream updated frame by frame gives the batch prediction of the frames seen", {
+  g <- late_types(n_per = 20)
+  rec <- fit_grasp_recognizer(g, horizon = 30)
+  r <- g$recordings[[5]]
+  st <- start_recognition(rec)
+  expect_output(print(st), "0 frames seen")
+  for (t in seq_len(nrow(r))) {
+    p <- update(st, r[t, ])
+    if (t %in% c(1, 7, 30, 40)) {
+      pb <- predict(rec, g[5], frames = t, type = "prob")
+      expect_equal(p[colnames(pb)], pb[1, ], tolerance = 1e-10, ignore_attr = TRUE)
+    }
+  }
+  expect_equal(attr(p, "frames"), 40L)
+  expect_equal(attr(p, "ms"), 800)
+  expect_equal(sum(p), 1, tolerance = 1e-12)
+  expect_output(print(st), "40 frames seen \\(800 ms\\); most likely")
+  # past the horizon (30 frames) the prediction is the first 30 frames'
+  p30 <- predict(rec, g[5], frames = 30, type = "prob")
+  for (t in 1:100) p <- update(st, r[nrow(r), ] + 50)
+  expect_equal(attr(p, "frames"), 140L)
+  expect_equal(p[colnames(p30)], p30[1, ], tolerance = 1e-10, ignore_attr = TRUE)
+})
+
+test_that("streams and recognisers refuse bad input", {
+  g <- late_types(n_per = 8)
+  rec <- fit_grasp_recognizer(g, horizon = 10)
+  st <- start_recognition(rec)
+  expect_error(update(st, 1:3), "16 finite numbers", class = "handmotion_error_bad_input")
+  expect_error(update(st, c(rep(1, 15), NA)), class = "handmotion_error_bad_input")
+  expect_error(update(st, stats::setNames(rep(1, 16), rev(g$dofs))), "named", class = "handmotion_error_bad_input")
+  expect_error(start_recognition(list()), class = "handmotion_error_bad_input")
+  expect_error(predict(rec, g), "exactly one", class = "handmotion_error_bad_input")
+  expect_error(predict(rec, g, ms = 100, frames = 3), "exactly one", class = "handmotion_error_bad_input")
+  expect_error(predict(rec, g, fraction = 1.5), class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_recognizer(g, horizon = 0), class = "handmotion_error_bad_input")
+})
+
+test_that("early recognition is evaluated held out by subject, against time and fraction", {
+  g <- late_types(n_per = 18, subjects = 6)
+  er <- evaluate_early_recognition(g, ms = c(200, 800), fractions = c(0.25, 1))
+  expect_s3_class(er, "early_recognition")
+  expect_equal(er$scale, c("ms", "ms", "fraction", "fraction"))
+  expect_equal(er$n, rep(36L, 4))
+  expect_equal(er$frames, c(10, 40, 10, 40))
+  expect_lt(er$accuracy[er$scale == "fraction" & er$value == 0.25], 0.8)
+  expect_gt(er$accuracy[er$scale == "ms" & er$value == 800], 0.9)
+  expect_equal(attr(er, "scheme"), "leave-one-subject-out")
+  expect_output(print(er), "held out by subject")
+  expect_s3_class(ggplot2::autoplot(er), "ggplot")
+  grouped <- evaluate_early_recognition(g, ms = 400, fractions = 1, folds = 3)
+  expect_equal(attr(grouped, "scheme"), "3 subject groups")
+  expect_error(evaluate_early_recognition(g, ms = -1), class = "handmotion_error_bad_input")
+  expect_error(evaluate_early_recognition(g, fractions = 0), class = "handmotion_error_bad_input")
+  nosub <- g
+  nosub$meta$subject <- NA
+  expect_error(evaluate_early_recognition(nosub), class = "handmotion_error_too_few_subjects")
+})
