@@ -22,6 +22,8 @@
 #' * `"last_frame"` (Table 5.8): the Euclidean distance between the recording's
 #'   last frame and its projection on each type's first `k` PCs; `models` is a
 #'   [fit_last_frame_pca()] result.
+#' * `"weighted_fpca"` (the thesis' proposed fix): `models` is a
+#'   [fit_weighted_fpca()] result: per-type DoF weights and time weights.
 #' * `"discriminant"` (beyond the thesis): `models` is a
 #'   [fit_grasp_classifier()] result; the "distance" to a type is minus the
 #'   log of its posterior probability.
@@ -39,11 +41,13 @@
 #' with a warning; a recording with no finite distance gets `NA` as prediction.
 #'
 #' @param models Fitted models: a [fit_grasp_models()] result (FPCA distance),
-#'   a [fit_last_frame_pca()] result or a [fit_grasp_classifier()] result. A `grasps` object is refused with a
+#'   a [fit_last_frame_pca()] result, a [fit_weighted_fpca()] result or a
+#'   [fit_grasp_classifier()] result. A `grasps` object is refused with a
 #'   hint: fitting is a separate, visible step (for a held-out estimate see
 #'   [evaluate_loso()], which fits on training subjects only).
 #' @param x A [grasps()] object to classify.
-#' @param method `"fpca"`, `"last_frame"` or `"discriminant"`. Inferred from `models` when it is
+#' @param method `"fpca"`, `"last_frame"`, `"discriminant"` or
+#'   `"weighted_fpca"`. Inferred from `models` when it is
 #'   a fitted object; giving a method that contradicts it is an error.
 #' @param ... Not used; an error if given.
 #' @return An object of class `grasp_classification`: a list with
@@ -62,7 +66,7 @@
 #' cl <- classify(lf, g)
 #' cl
 #' as_grasp_confusion(cl)
-classify <- function(models, x, method = c("fpca", "last_frame", "discriminant"), ...) {
+classify <- function(models, x, method = c("fpca", "last_frame", "discriminant", "weighted_fpca"), ...) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   rlang::check_dots_empty(error = function(cnd) {
@@ -84,13 +88,14 @@ classify <- function(models, x, method = c("fpca", "last_frame", "discriminant")
 resolve_method <- function(models, method, defaulted, call = rlang::caller_env()) {
   implied <- if (inherits(models, "last_frame_pca")) "last_frame"
              else if (inherits(models, "grasp_models")) "fpca"
-             else if (inherits(models, "grasp_classifier")) "discriminant" else NA_character_
+             else if (inherits(models, "grasp_classifier")) "discriminant"
+             else if (inherits(models, "weighted_fpca")) "weighted_fpca" else NA_character_
   if (is.na(implied)) {
-    hm_abort("{.arg models} must be a {.cls grasp_models}, {.cls last_frame_pca} or {.cls grasp_classifier} object, not {.obj_type_friendly {models}}.",
+    hm_abort("{.arg models} must be a {.cls grasp_models}, {.cls last_frame_pca}, {.cls grasp_classifier} or {.cls weighted_fpca} object, not {.obj_type_friendly {models}}.",
              "bad_input", argument = "models", call = call)
   }
   if (defaulted) return(implied)
-  method <- check_choice(method, c("fpca", "last_frame", "discriminant"), arg = "method", call = call)
+  method <- check_choice(method, c("fpca", "last_frame", "discriminant", "weighted_fpca"), arg = "method", call = call)
   if (method != implied) {
     hm_abort("{.arg method} is {.val {method}} but {.arg models} is a {.cls {class(models)[1]}} ({.val {implied}}) fit.",
              "bad_input", argument = "method", call = call)
@@ -101,7 +106,7 @@ resolve_method <- function(models, method, defaulted, call = rlang::caller_env()
 # Fit the models a method needs on a training set.
 fit_classifier <- function(train, method, fit_args) {
   fitter <- switch(method, last_frame = fit_last_frame_pca, fpca = fit_grasp_models,
-                   discriminant = fit_grasp_classifier)
+                   discriminant = fit_grasp_classifier, weighted_fpca = fit_weighted_fpca)
   do.call(fitter, c(list(train), fit_args))
 }
 
@@ -109,6 +114,10 @@ classifier_distances <- function(models, x, method, call = rlang::caller_env()) 
   if (method == "last_frame") {
     return(list(distances = last_frame_distances(models, x, call = call),
                 target_length = NULL, failures = no_failures()))
+  }
+  if (method == "weighted_fpca") {
+    return(list(distances = weighted_fpca_distances(models, x, call = call), target_length = NULL,
+                failures = no_failures()))
   }
   if (method == "discriminant") {
     # the "distance" to a type is minus its log posterior probability
@@ -190,7 +199,8 @@ print.grasp_classification <- function(x, ...) {
   ok <- sum(as.character(p$truth[lab]) == as.character(p$predicted[lab]))
   cat(sprintf("<grasp_classification> %s, %d recording%s x %d model%s\n",
               switch(x$method, fpca = "FPCA projection distance", last_frame = "last-frame PCA distance",
-                     discriminant = "shrinkage LDA (distance = -log posterior)"),
+                     discriminant = "shrinkage LDA (distance = -log posterior)",
+                     weighted_fpca = "weighted FPCA distance"),
               nrow(p), if (nrow(p) == 1) "" else "s", ncol(x$distances),
               if (ncol(x$distances) == 1) "" else "s"))
   if (sum(lab) > 0)

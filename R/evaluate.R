@@ -33,8 +33,8 @@
 #'
 #' @param x A [grasps()] object with `grasp` and `subject` metadata.
 #' @param method `"fpca"` ([fit_grasp_models()] + projection distance),
-#'   `"last_frame"` ([fit_last_frame_pca()]) or `"discriminant"`
-#'   ([fit_grasp_classifier()]).
+#'   `"last_frame"` ([fit_last_frame_pca()]), `"discriminant"`
+#'   ([fit_grasp_classifier()]) or `"weighted_fpca"` ([fit_weighted_fpca()]).
 #' @param fit_args A list of arguments for the fitting function (e.g.
 #'   `list(k = 5)` for last-frame PCA).
 #' @param subjects Subjects to hold out (default: all). Other subjects are
@@ -61,7 +61,7 @@
 #' ev <- evaluate_loso(g, method = "last_frame", fit_args = list(k = 2))
 #' ev
 #' evaluate_loso(g, method = "last_frame", fit_args = list(k = 2), folds = 3)$accuracy
-evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant"), fit_args = list(), subjects = NULL,
+evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "weighted_fpca"), fit_args = list(), subjects = NULL,
                           folds = NULL, in_sample = TRUE, seed = 1) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
@@ -201,7 +201,8 @@ per_subject_accuracy <- function(pred) {
 print.grasp_evaluation <- function(x, ...) {
   cat(sprintf("<grasp_evaluation> %s classifier, %s\n",
               switch(x$method, fpca = "FPCA projection-distance", last_frame = "last-frame PCA",
-                     discriminant = "shrinkage-LDA", x$method), x$scheme))
+                     discriminant = "shrinkage-LDA", weighted_fpca = "weighted FPCA-distance",
+                     x$method), x$scheme))
   cat(sprintf("  held-out accuracy:  %s (%d recordings, %d subjects)\n", fmt_pct(x$accuracy[["held_out"]]),
               x$confusion$n, nrow(x$per_subject)))
   if (!is.null(x$in_sample))

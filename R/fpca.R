@@ -329,6 +329,8 @@ fpca_reconstruct <- function(fit, scores) {
 #' used by the FPCA classifier).
 #'
 #' @inheritParams fpca_project
+#' @param time_weights Optional weights on the grid points (length `L`)
+#'   multiplying the quadrature weights of the norm.
 #' @return A numeric vector of length `m`.
 #' @noRd
 #' @examples
@@ -336,12 +338,15 @@ fpca_reconstruct <- function(fit, scores) {
 #' Y <- outer(rnorm(40), sin(pi * t)) + outer(rnorm(40, sd = 0.3), cos(pi * t))
 #' fit <- fpca_fit(Y, argvals = t, ncomp = 1)
 #' summary(fpca_residual_norm(fit, Y))
-fpca_residual_norm <- function(fit, Ynew) {
+fpca_residual_norm <- function(fit, Ynew, time_weights = NULL) {
   call <- rlang::caller_env()
   Ynew <- fpca_new_curves(fit, Ynew, call = call)
   Yc <- sweep(Ynew, 2L, fit$mean, "-")
   R <- Yc - (Yc %*% (fit$components * fit$weights)) %*% t(fit$components)
-  sqrt(pmax(drop(R^2 %*% fit$weights), 0))
+  # time weights (the weighted FPCA distance) reweigh the grid points of the
+  # norm, never the projection itself
+  w <- if (is.null(time_weights)) fit$weights else fit$weights * time_weights
+  sqrt(pmax(drop(R^2 %*% w), 0))
 }
 
 check_fpca_fit <- function(fit, arg = "fit", call = rlang::caller_env()) {

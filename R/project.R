@@ -109,7 +109,9 @@ warp_stacked <- function(model, st) {
   st$values[rows, , drop = FALSE] * (1 - f) + st$values[as.vector(nxt), , drop = FALSE] * f
 }
 
-project_stacked <- function(model, st, details = TRUE) {
+# time_weights: optional weights on the model's template grid for the
+# residual norms (the weighted FPCA distance); NULL is eq. 4.4.
+project_stacked <- function(model, st, details = TRUE, time_weights = NULL) {
   L <- model$target_length
   n <- length(st$n_frames)
   p <- length(model$dofs)
@@ -124,10 +126,10 @@ project_stacked <- function(model, st, details = TRUE) {
     if (isTRUE(fit$constant)) {
       S <- matrix(0, n, k)
       R <- Y - matrix(fit$mean, n, L, byrow = TRUE)
-      resid[, j] <- sqrt(drop(R^2 %*% fit$weights))
+      resid[, j] <- sqrt(drop(R^2 %*% (fit$weights * (time_weights %||% 1))))
     } else {
       S <- matrix(fpca_project(fit, Y), n, k)
-      resid[, j] <- fpca_residual_norm(fit, Y)
+      resid[, j] <- fpca_residual_norm(fit, Y, time_weights)
     }
     scores[, j, ] <- S
     if (details) {

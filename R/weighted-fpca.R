@@ -1,0 +1,136 @@
+# The thesis' own proposals for its FPCA classifier (its chapter 6): weigh
+# the DoFs that tell a type apart, and weigh the end of the motion more. Its
+# distance (eq. 4.4) adds every DoF's residual norm alike, so a DoF whose
+# residual is always large for a type (it varies a lot there) drowns the one
+# DoF that would have told two types apart. Worse, the residual is what is
+# left after the projection, and the projection absorbs exactly what tells
+# types apart: a recording of another type that flexes a finger more is
+# fitted by a large score on the amplitude FPC, with a small residual. The
+# weighted distance therefore weighs each DoF by the type's own spread in
+# both parts: the residual (its typical size) and the scores (the type's
+# mixture), i.e. minus twice the recording's log-likelihood under the model.
+
+#' FPCA distance with per-type DoF weights and time weights
+#'
+#' The thesis' FPCA classifier ([classify()] with [fit_grasp_models()]) with
+#' the two changes the thesis proposed (its chapter 6), learned from the
+#' training recordings by a documented rule:
+#'
+#' * **time weights**: the residual norm of each DoF is taken with weights
+#'   on the template time: `"uniform"` (default) is the thesis' norm,
+#'   `time = "end"` rises linearly from 0 at the start to 2 at the end (mean
+#'   1: the final posture counts most, the start not at all). On the default
+#'   data "end" does not help (see `vignette("recognition")`);
+#' * **per-type DoF weights**: for model *c*, each DoF's (time-weighted)
+#'   residual norm `r_j` is scaled by its typical size on the type's own
+#'   training recordings, `s2[c, j]` = mean of `r_j^2` over them, and the
+#'   DoF's FPC scores `a_j` are scored by the type's own mixture `f_cj`
+#'   (the one generation draws from). The distance is
+#'   `sum_j (r_j^2 / s2[c, j] + log s2[c, j] - 2 log f_cj(a_j))`: minus twice
+#'   the log-likelihood of the recording under the model (residual norms
+#'   half-normal with the type's scales). A DoF that a type reproduces
+#'   tightly weighs heavily for that type, one that varies a lot weighs
+#'   little, and a recording whose projection needs scores the type never
+#'   shows (a finger flexed further than that type ever does) is far even
+#'   when its residual is small. Each DoF's log density is floored at -50
+#'   (about ten standard deviations), so one degenerate mixture cannot veto
+#'   a type alone.
+#'
+#' @param x A labelled [grasps()] object (the training recordings).
+#' @param models A [fit_grasp_models()] fit on `x`, or `NULL` to fit one with
+#'   the arguments in `...`.
+#' @param time `"uniform"` (default) or `"end"` time weights.
+#' @param ... Passed to [fit_grasp_models()] when `models` is `NULL`.
+#' @return An object of class `weighted_fpca`: `models`, `time`, `scale`
+#'   (types x DoFs matrix of `s2`) and `n` (training recordings per type).
+#'   [classify()] ranks its distances; `evaluate_loso(x, method =
+#'   "weighted_fpca")` evaluates it held out.
+#' @seealso [classify()], [fit_grasp_classifier()]
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 4, grasps = 1:3, objects = 2, trials = 2, seed = 1)
+#' w <- fit_weighted_fpca(g, seed = 1)
+#' w
+#' classify(w, g)
+fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ...) {
+  call <- rlang::caller_env()
+  check_grasps(x, call = call)
+  time <- check_choice(time, arg = "time", call = call)
+  check_training_labels(x, call = call)
+  if (is.null(models)) models <- fit_grasp_models(x, ...)
+  if (!inherits(models, "grasp_models")) {
+    hm_abort("{.arg models} must be a {.cls grasp_models} fit, not {.obj_type_friendly {models}}.",
+             "bad_input", argument = "models", call = call)
+  }
+  types <- names(models)
+  missing <- setdiff(types, as.character(unique(x$meta$grasp)))
+  if (length(missing)) {
+    hm_abort("{.arg x} has no recordings of the modelled type{?s} {.val {missing}}.", "bad_input",
+             argument = "x", call = call)
+  }
+  st <- stack_recordings(x, models[[1]]$dofs)
+  scale <- t(vapply(types, function(ty) {
+    m <- models[[ty]]
+    own <- x[x$meta$grasp == ty]
+    r <- project_stacked(m, stack_recordings(own, m$dofs), details = FALSE,
+                         time_weights = distance_time_weights(m$target_length, time))$residual
+    s2 <- colMeans(r^2)
+    # a DoF the type reproduces exactly still gets a finite scale
+    pmax(s2, 1e-6 * max(mean(s2), 1e-12))
+  }, numeric(length(models[[1]]$dofs))))
+  dimnames(scale) <- list(types, models[[1]]$dofs)
+  structure(list(models = models, time = time, scale = scale,
+                 n = table(factor(as.character(x$meta$grasp), levels = types))),
+            class = "weighted_fpca")
+}
+
+# Weights on a template grid of L points: uniform (the thesis) or rising
+# linearly from 0 to 2 (mean 1).
+distance_time_weights <- function(L, time) {
+  if (time == "uniform" || L < 2L) return(rep(1, L))
+  2 * (seq_len(L) - 1) / (L - 1)
+}
+
+# The weighted distances, recordings x models.
+weighted_fpca_distances <- function(object, x, call = rlang::caller_env()) {
+  models <- object$models
+  check_projection_dofs(models[[1]], x, call)
+  st <- stack_recordings(x, models[[1]]$dofs)
+  types <- rownames(object$scale)
+  d <- vapply(types, function(ty) {
+    m <- models[[ty]]
+    r <- project_stacked(m, st, details = FALSE,
+                         time_weights = distance_time_weights(m$target_length, object$time))
+    s2 <- object$scale[ty, ]
+    drop(r$residual^2 %*% (1 / s2)) + sum(log(s2)) - 2 * score_log_density(m, r$scores)
+  }, numeric(length(x$recordings)))
+  d <- matrix(d, length(x$recordings), length(types), dimnames = list(x$meta$id, types))
+  d
+}
+
+# Sum over DoFs of the log density of each recording's FPC scores under the
+# DoF's mixture, each floored (see fit_weighted_fpca()).
+score_log_density <- function(model, scores) {
+  n <- dim(scores)[1]
+  out <- numeric(n)
+  for (j in seq_along(model$dofs)) {
+    G <- model$gmm[[j]]
+    X <- matrix(scores[, j, ], n)
+    out <- out + pmax(gmm_log_density(G$weights, G$means, G$covs, X), weighted_fpca_log_floor)
+  }
+  out
+}
+
+weighted_fpca_log_floor <- -50
+
+#' @export
+print.weighted_fpca <- function(x, ...) {
+  cat(sprintf("<weighted_fpca> %d grasp models, %s time weights, per-type DoF weights\n",
+              nrow(x$scale), if (x$time == "end") "end-of-motion" else "uniform"))
+  w <- 1 / x$scale
+  w <- w / rowMeans(w)
+  top <- apply(w, 1L, function(v) paste(names(sort(v, decreasing = TRUE))[1:2], collapse = "+"))
+  cat(sprintf("  most weighted DoFs: %s\n",
+              paste(utils::head(sprintf("%s (%s)", names(top), top), 4), collapse = "; ")))
+  invisible(x)
+}
