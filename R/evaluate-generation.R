@@ -28,7 +28,8 @@
 #'   profiles (the change over each tenth of the motion) within a recording,
 #'   averaged over recordings;
 #' * **recognisability** (`recognised`): the share classified as their own
-#'   type by linear discriminant analysis on the same features, trained on
+#'   type by linear discriminant analysis (with a shrunk covariance, as in
+#'   [fit_grasp_classifier()]) on the same features, trained on
 #'   the training recordings of all types (real recordings only, never the
 #'   model): for the generated grasps, and for the held-out recordings as the
 #'   baseline;
@@ -301,27 +302,15 @@ mmd_test <- function(X, Y, bandwidth, permutations = 200L) {
   list(mmd = obs, p = (1 + sum(perm >= obs)) / (1 + permutations))
 }
 
-# LDA on generation_features() of all training recordings (equal priors),
-# on their principal components: standardised features, then the components
-# that carry variance (at most n - K - 1 of them for n recordings of K types,
-# so the pooled covariance is never singular, e.g. a DIP that follows its PIP).
+# The recognisability yardstick: the package's shrinkage LDA
+# (R/shrunk-lda.R, equal priors) on generation_features() of all training
+# recordings. It never sees a model, only real recordings.
 fit_feature_lda <- function(training) {
-  F <- generation_features(training)
-  y <- droplevels(training$meta$grasp)
-  centre <- colMeans(F)
-  spread <- apply(F, 2, stats::sd)
-  spread[!is.finite(spread) | spread == 0] <- 1
-  X <- sweep(sweep(F, 2, centre), 2, spread, "/")
-  sv <- svd(X, nu = 0)
-  q <- max(1L, min(sum(sv$d > 1e-6 * sv$d[1]), nrow(X) - nlevels(y) - 1L))
-  rotation <- sv$v[, seq_len(q), drop = FALSE]
-  list(fit = MASS::lda(X %*% rotation, y, prior = rep(1 / nlevels(y), nlevels(y))),
-       centre = centre, spread = spread, rotation = rotation)
+  fit_shrunk_lda(generation_features(training), training$meta$grasp)
 }
 
 lda_class <- function(lda, F) {
-  X <- sweep(sweep(F, 2, lda$centre), 2, lda$spread, "/") %*% lda$rotation
-  as.character(stats::predict(lda$fit, X)$class)
+  lda$classes[max.col(shrunk_lda_scores(lda, F), ties.method = "first")]
 }
 
 #' @export

@@ -10,7 +10,8 @@ results are identical to R's for the same seed.
 >>> x = hm.generate(m, grasp="Power Sphere", n=10, seed=2)
 """
 
-from .api import (classify, evaluate_generation, evaluate_loso, fit_grasp_models, fit_last_frame_pca, fit_handover, forward_kinematics, generate,
+from .api import (classify, evaluate_early_recognition, evaluate_generation, evaluate_loso, fit_grasp_classifier,
+                  fit_grasp_models, fit_grasp_recognizer, fit_last_frame_pca, fit_weighted_fpca, fit_handover, forward_kinematics, generate,
                   hand_skeleton, joint_names, rank_markers, read_graspdb14, read_hust,
                   read_skeleton, reconstruct, select_markers, simulate_grasps, table_5_1, thesis_table,
                   table_5_2, table_5_3, table_5_6, table_5_7, table_5_8, write_bvh,
@@ -19,17 +20,20 @@ from .errors import (BadFileError, BadInputError, BadRecordingError, BadSkeleton
                      FitFailedError, HandmotionError, HandmotionWarning, RError,
                      UnknownGraspError)
 from .grasps import Grasps
-from .handles import GraspModels, HandoverModel, RHandle, Skeleton
+from .handles import (GraspClassifier, GraspModels, GraspRecognizer, HandoverModel, RecognitionStream, RHandle,
+                      Skeleton)
 
 __version__ = "0.1.0"
 
 __all__ = [
-    "Grasps", "GraspModels", "HandoverModel", "RHandle", "Skeleton",
+    "Grasps", "GraspModels", "GraspClassifier", "GraspRecognizer", "RecognitionStream", "HandoverModel",
+    "RHandle", "Skeleton",
     "HandmotionError", "BadInputError", "BadRecordingError", "UnknownGraspError", "BadFileError",
     "BadSkeletonError", "FitFailedError", "RError", "HandmotionWarning",
     "simulate_grasps", "read_hust", "write_hust", "read_graspdb14", "write_graspdb14",
     "read_skeleton", "hand_skeleton", "forward_kinematics", "joint_names", "write_bvh",
     "fit_grasp_models", "generate", "evaluate_generation", "classify", "fit_last_frame_pca", "evaluate_loso",
+    "fit_grasp_classifier", "fit_weighted_fpca", "fit_grasp_recognizer", "evaluate_early_recognition",
     "thesis_table", "table_5_1", "table_5_2", "table_5_3", "table_5_6", "table_5_7", "table_5_8",
     "rank_markers", "select_markers", "fit_handover", "reconstruct",
 ]

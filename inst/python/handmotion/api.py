@@ -14,7 +14,7 @@ import numpy as np
 from ._bridge import call, r, r_array, r_to_py
 from .errors import BadInputError
 from .grasps import Grasps
-from .handles import GraspModels, HandoverModel, RHandle, Skeleton
+from .handles import GraspClassifier, GraspRecognizer, GraspModels, HandoverModel, RHandle, Skeleton
 
 
 def _as_grasps(x, arg="x"):
@@ -215,11 +215,16 @@ def generate(models, grasp=None, n=1, seed=None, as_array=False, limits=None, **
     return out.as_array()
 
 
-def classify(models, x, method="fpca", **kwargs):
-    """Classify recordings by distance to each model (``"fpca"``) or by last-frame PCA (``"last_frame"``).
+_CLASSIFY_METHODS = ("fpca", "last_frame", "discriminant", "weighted_fpca")
+
+
+def classify(models, x, method=None, **kwargs):
+    """Classify recordings with fitted models; the method follows from ``models``.
 
     ``models`` are fitted models: a :class:`GraspModels` from :func:`fit_grasp_models`
-    (``method="fpca"``) or a handle from :func:`fit_last_frame_pca` (``"last_frame"``).
+    (``"fpca"``, the thesis' distance), a handle from :func:`fit_last_frame_pca`
+    (``"last_frame"``), a :class:`GraspClassifier` from :func:`fit_grasp_classifier`
+    (``"discriminant"``) or a handle from :func:`fit_weighted_fpca` (``"weighted_fpca"``).
     Nothing is fitted here: a :class:`Grasps` is refused (fit first; for a held-out
     estimate use :func:`evaluate_loso`).
 
@@ -228,14 +233,16 @@ def classify(models, x, method="fpca", **kwargs):
     of R's ``summary()``) and ``classification`` (a handle on the R result, for
     :func:`thesis_table`).
     """
-    if method not in ("fpca", "last_frame"):
-        raise BadInputError(f"method must be 'fpca' or 'last_frame', not {method!r}")
+    if method is not None and method not in _CLASSIFY_METHODS:
+        raise BadInputError(f"method must be one of {_CLASSIFY_METHODS}, not {method!r}")
     if isinstance(models, Grasps):
         raise BadInputError("models must be fitted: fit_grasp_models(train) or fit_last_frame_pca(train); "
                             "evaluate_loso() fits on training subjects and classifies the held-out ones")
     g = _as_grasps(x)
     ro = r()
-    res = call("classify", models, g, method=method, **kwargs)
+    if method is not None:
+        kwargs["method"] = method
+    res = call("classify", models, g, **kwargs)
     conf = call("as_grasp_confusion", res)
     table = ro.r["as.data.frame.matrix"](ro.r["unclass"](conf.rx2("table")))
     summ = r_to_py(call(ro.r["summary"], conf))
@@ -259,8 +266,8 @@ def evaluate_loso(x, method="fpca", folds=None, seed=1, **kwargs):
     Returns a dict with ``accuracy`` (held-out and in-sample), ``confusion`` (held-out,
     DataFrame) and ``evaluation`` (a handle on the R result).
     """
-    if method not in ("fpca", "last_frame"):
-        raise BadInputError(f"method must be 'fpca' or 'last_frame', not {method!r}")
+    if method not in _CLASSIFY_METHODS:
+        raise BadInputError(f"method must be one of {_CLASSIFY_METHODS}, not {method!r}")
     ro = r()
     res = call("evaluate_loso", _as_grasps(x), method=method,
                folds=None if folds is None else _check_count(folds, "folds"), seed=_check_seed(seed),
@@ -270,6 +277,50 @@ def evaluate_loso(x, method="fpca", folds=None, seed=1, **kwargs):
     return {"accuracy": {str(k): float(v) for k, v in zip(ro.r["names"](acc), acc)},
             "confusion": r_to_py(table).set_axis(list(ro.r["rownames"](table)), axis=0),
             "evaluation": RHandle(res)}
+
+
+# ----------------------------------------------------------- recognition
+
+
+def fit_grasp_classifier(x, prior="equal", **kwargs):
+    """Shrinkage LDA on postures at fractions of the motion, duration and travel per DoF
+    (R's ``fit_grasp_classifier()``); a :class:`GraspClassifier`."""
+    if prior not in ("equal", "data"):
+        raise BadInputError(f"prior must be 'equal' or 'data', not {prior!r}")
+    return GraspClassifier(call("fit_grasp_classifier", _as_grasps(x), prior=prior, **kwargs))
+
+
+def fit_weighted_fpca(x, models=None, time="uniform", **kwargs):
+    """The thesis' FPCA distance with per-type DoF weights and optional end-of-motion time
+    weights (R's ``fit_weighted_fpca()``); a handle for :func:`classify`."""
+    if time not in ("uniform", "end"):
+        raise BadInputError(f"time must be 'uniform' or 'end', not {time!r}")
+    if models is not None and not isinstance(models, GraspModels):
+        raise BadInputError("models must be a GraspModels from fit_grasp_models(), or None")
+    return RHandle(call("fit_weighted_fpca", _as_grasps(x), models=None if models is None else models.robj,
+                        time=time, **kwargs))
+
+
+def fit_grasp_recognizer(x, horizon=None, **kwargs):
+    """One discriminant per number of frames seen, for recognition while the hand still moves
+    (R's ``fit_grasp_recognizer()``); a :class:`GraspRecognizer`."""
+    kw = dict(kwargs)
+    if horizon is not None:
+        kw["horizon"] = _check_count(horizon, "horizon")
+    return GraspRecognizer(call("fit_grasp_recognizer", _as_grasps(x), **kw))
+
+
+def evaluate_early_recognition(x, ms=None, fractions=None, folds=None, seed=1, **kwargs):
+    """Held-out accuracy of early recognition against time (ms) and fraction of the motion
+    (R's ``evaluate_early_recognition()``); a DataFrame (scale, value, accuracy, n, frames)."""
+    kw = dict(kwargs)
+    if ms is not None:
+        kw["ms"] = [float(v) for v in ms]
+    if fractions is not None:
+        kw["fractions"] = [float(v) for v in fractions]
+    res = call("evaluate_early_recognition", _as_grasps(x),
+               folds=None if folds is None else _check_count(folds, "folds"), seed=_check_seed(seed), **kw)
+    return r_to_py(r().r["as.data.frame"](r().r["unclass"](res)))
 
 
 def thesis_table(id, **kwargs):

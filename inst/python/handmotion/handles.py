@@ -68,3 +68,72 @@ class Skeleton(RHandle):
 
 class HandoverModel(RHandle):
     """A sparse-marker reconstruction model (R class ``handover_model``)."""
+
+
+def _as_grasps_r(x):
+    from .grasps import Grasps
+    from .errors import BadInputError
+    if not isinstance(x, Grasps):
+        raise BadInputError("x must be a handmotion.Grasps")
+    return x.to_r()
+
+
+def _probabilities(mat):
+    import numpy as np
+    import pandas as pd
+    ro = r()
+    return pd.DataFrame(np.asarray(mat), index=[str(v) for v in ro.r["rownames"](mat)],
+                        columns=[str(v) for v in ro.r["colnames"](mat)])
+
+
+class GraspClassifier(RHandle):
+    """A discriminant grasp classifier (R class ``grasp_classifier``)."""
+
+    def predict(self, x, type="class"):
+        """Predicted grasp types (a list of str) or, with ``type="prob"``, a DataFrame of class
+        probabilities (recordings x types)."""
+        from .errors import BadInputError
+        if type not in ("class", "prob"):
+            raise BadInputError(f"type must be 'class' or 'prob', not {type!r}")
+        out = call("predict", self.robj, _as_grasps_r(x), type=type)
+        if type == "prob":
+            return _probabilities(out)
+        return [str(v) for v in r().r["as.character"](out)]
+
+
+class GraspRecognizer(RHandle):
+    """An early grasp recogniser (R class ``grasp_recognizer``): classify from the first
+    frames, or open a :class:`RecognitionStream` for a live loop."""
+
+    def predict(self, x, frames=None, ms=None, fraction=None, type="class"):
+        """Classify every recording of ``x`` from its first frames (give exactly one of
+        ``frames``, ``ms`` or ``fraction``)."""
+        from .errors import BadInputError
+        if type not in ("class", "prob"):
+            raise BadInputError(f"type must be 'class' or 'prob', not {type!r}")
+        given = {k: v for k, v in dict(frames=frames, ms=ms, fraction=fraction).items() if v is not None}
+        if len(given) != 1:
+            raise BadInputError("give exactly one of frames, ms and fraction")
+        out = call("predict", self.robj, _as_grasps_r(x), type=type, **given)
+        if type == "prob":
+            return _probabilities(out)
+        return [str(v) for v in r().r["as.character"](out)]
+
+    def stream(self):
+        """A new live stream (R's ``start_recognition()``)."""
+        return RecognitionStream(call("start_recognition", self.robj))
+
+
+class RecognitionStream(RHandle):
+    """A live recognition stream: :meth:`update` with one frame at a time."""
+
+    def update(self, frame):
+        """Add the newest frame (one value per DoF) and return the class probabilities as a
+        dict ``{grasp type: probability}``."""
+        import numpy as np
+        from .errors import BadInputError
+        v = np.asarray(frame, dtype=float).ravel()
+        if not np.all(np.isfinite(v)):
+            raise BadInputError("frame must hold finite numbers, one per DoF")
+        p = call(r().r["update"], self.robj, r().FloatVector(v))
+        return {str(k): float(val) for k, val in zip(r().r["names"](p), p)}
