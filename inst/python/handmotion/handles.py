@@ -95,7 +95,7 @@ class GraspClassifier(RHandle):
         from .errors import BadInputError
         if type not in ("class", "prob"):
             raise BadInputError(f"type must be 'class' or 'prob', not {type!r}")
-        out = call("predict", self.robj, _as_grasps_r(x), type=type)
+        out = call(r().r["predict"], self.robj, _as_grasps_r(x), type=type)
         if type == "prob":
             return _probabilities(out)
         return [str(v) for v in r().r["as.character"](out)]
@@ -114,7 +114,7 @@ class GraspRecognizer(RHandle):
         given = {k: v for k, v in dict(frames=frames, ms=ms, fraction=fraction).items() if v is not None}
         if len(given) != 1:
             raise BadInputError("give exactly one of frames, ms and fraction")
-        out = call("predict", self.robj, _as_grasps_r(x), type=type, **given)
+        out = call(r().r["predict"], self.robj, _as_grasps_r(x), type=type, **given)
         if type == "prob":
             return _probabilities(out)
         return [str(v) for v in r().r["as.character"](out)]
