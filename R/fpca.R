@@ -290,7 +290,24 @@ fpca_sign <- function(phi, weights) {
 fpca_project <- function(fit, Ynew) {
   call <- rlang::caller_env()
   Ynew <- fpca_new_curves(fit, Ynew, call = call)
-  sweep(Ynew, 2L, fit$mean, "-") %*% (fit$components * fit$weights)
+  fpca_project_columns(fit, t(Ynew), norms = FALSE)$scores
+}
+
+# The one projection (scores and residual norms) of curves given as the
+# COLUMNS of Yt (L x m), unchecked, in the native kernel that project() uses
+# for whole model sets (src/project-kernel.c): scores are <y - mean, phi_c>
+# with the quadrature weights, the residual norm is the weighted L2 norm of
+# y - mean - sum_c score_c phi_c (time weights multiply the quadrature
+# weights of the norm only).
+fpca_project_columns <- function(fit, Yt, norms = TRUE, time_weights = NULL) {
+  L <- nrow(Yt)
+  idx <- seq_len(length(Yt))
+  k <- ncol(fit$components)
+  w <- fit$weights
+  res <- .Call(hm_project_batch, matrix(as.double(Yt), ncol = 1L), idx, idx, numeric(length(Yt)),
+               matrix(as.double(fit$mean), L, 1L), array(as.double(fit$components), c(L, 1L, k)),
+               matrix(as.double(w), L, 1L), matrix(as.double(w * (time_weights %||% 1)), L, 1L))
+  list(scores = matrix(res$scores, ncol(Yt), k), norms = res$residual)
 }
 
 #' Rebuild curves from functional PCA scores
@@ -341,12 +358,9 @@ fpca_reconstruct <- function(fit, scores) {
 fpca_residual_norm <- function(fit, Ynew, time_weights = NULL) {
   call <- rlang::caller_env()
   Ynew <- fpca_new_curves(fit, Ynew, call = call)
-  Yc <- sweep(Ynew, 2L, fit$mean, "-")
-  R <- Yc - (Yc %*% (fit$components * fit$weights)) %*% t(fit$components)
   # time weights (the weighted FPCA distance) reweigh the grid points of the
   # norm, never the projection itself
-  w <- if (is.null(time_weights)) fit$weights else fit$weights * time_weights
-  sqrt(pmax(drop(R^2 %*% w), 0))
+  fpca_project_columns(fit, t(Ynew), time_weights = time_weights)$norms
 }
 
 check_fpca_fit <- function(fit, arg = "fit", call = rlang::caller_env()) {

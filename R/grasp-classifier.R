@@ -35,7 +35,7 @@
 #'   recordings per type). Use [predict.grasp_classifier()] for classes or
 #'   probabilities and [classify()] for a `grasp_classification`.
 #' @seealso [predict.grasp_classifier()], [evaluate_loso()],
-#'   [grasp_recognizer()] for recognition while the hand is still moving.
+#'   [fit_grasp_recognizer()] for recognition while the hand is still moving.
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 6, grasps = 1:4, objects = 2, trials = 2, seed = 1)

@@ -17,7 +17,7 @@
 #' shrinkage LDA (as in [fit_grasp_classifier()]) is fitted on the result.
 #' Nothing about a recording's final length is used, so the recogniser can
 #' classify a live stream: [start_recognition()] makes a stream to
-#' [update()] frame by frame, and [predict.grasp_recognizer()] classifies
+#' `update()` frame by frame, and [predict.grasp_recognizer()] classifies
 #' whole sets from their first frames. After `horizon` frames (by default
 #' 95% of the training grasps have ended by then) the prediction stays that
 #' of the first `horizon` frames: what follows is mostly a hand at rest.

@@ -84,12 +84,15 @@ stack_recordings <- function(x, dofs) {
   cols <- match(dofs, x$dofs)
   mat <- do.call(rbind, recs)
   if (!identical(cols, seq_along(x$dofs))) mat <- mat[, cols, drop = FALSE]
+  storage.mode(mat) <- "double"
   list(values = mat, n_frames = n_frames, starts = cumsum(n_frames) - n_frames, ids = x$meta$id)
 }
 
-# Warp every stacked recording onto the template grid with the model's mean
-# warp: an (n * L) x p matrix, recording-major.
-warp_stacked <- function(model, st) {
+# Where every stacked recording is read on the model's template grid with the
+# model's mean warp: for template point s of recording i (entry s + L (i - 1)),
+# the stacked rows either side and the weight of the later one. warp_dof()
+# then interpolates one DoF at a time, straight into an L x n matrix.
+warp_index <- function(model, st) {
   L <- model$target_length
   wbar <- model$warp$mean
   span <- wbar[L] - wbar[1]
@@ -97,16 +100,29 @@ warp_stacked <- function(model, st) {
   u <- pmin(pmax(cummax(u), 0), 1)
   nk <- st$n_frames
   n <- length(nk)
-  times <- 1 + outer(u, nk - 1)                            # L x n, column per recording
+  # plain vectors, entry s + L (i - 1): pmin() on matrices costs more than the rest
+  times <- 1 + as.vector(outer(u, nk - 1))                 # frame position on recording i
   i <- floor(times)
-  i <- pmin(i, matrix(pmax(nk - 1L, 1L), L, n, byrow = TRUE))
+  cap <- rep(pmax(nk - 1L, 1L), each = L)
+  over <- i > cap
+  i[over] <- cap[over]
   f <- times - i
-  f[, nk == 1L] <- 0
-  rows <- i + matrix(st$starts, L, n, byrow = TRUE)
-  nxt <- pmin(rows + 1L, matrix(st$starts + nk, L, n, byrow = TRUE))
-  rows <- as.vector(rows)
+  f[rep(nk == 1L, each = L)] <- 0
+  start <- rep(st$starts, each = L)
+  rows <- i + start
+  nxt <- rows + 1
+  last <- start + rep(nk, each = L)
+  over <- nxt > last
+  nxt[over] <- last[over]
   f <- as.vector(f)
-  st$values[rows, , drop = FALSE] * (1 - f) + st$values[as.vector(nxt), , drop = FALSE] * f
+  list(rows = as.integer(rows), nxt = as.integer(nxt), f = f, g = 1 - f, L = L, n = n)
+}
+
+# One DoF of every recording warped onto the template grid: L x n.
+warp_dof <- function(ix, v) {
+  y <- v[ix$rows] * ix$g + v[ix$nxt] * ix$f
+  dim(y) <- c(ix$L, ix$n)
+  y
 }
 
 # time_weights: optional weights on the model's template grid for the
@@ -116,25 +132,20 @@ project_stacked <- function(model, st, details = TRUE, time_weights = NULL) {
   n <- length(st$n_frames)
   p <- length(model$dofs)
   k <- model$settings$ncomp
-  warped <- warp_stacked(model, st)
-  scores <- array(0, c(n, p, k), dimnames = list(st$ids, model$dofs, paste0("FPC", seq_len(k))))
-  resid <- matrix(0, n, p, dimnames = list(st$ids, model$dofs))
-  fitted <- if (details) matrix(0, n * L, p) else NULL
-  for (j in seq_len(p)) {
-    Y <- matrix(warped[, j], n, L, byrow = TRUE)
-    fit <- model$fpca[[j]]
-    if (isTRUE(fit$constant)) {
-      S <- matrix(0, n, k)
-      R <- Y - matrix(fit$mean, n, L, byrow = TRUE)
-      resid[, j] <- sqrt(drop(R^2 %*% (fit$weights * (time_weights %||% 1))))
-    } else {
-      S <- matrix(fpca_project(fit, Y), n, k)
-      resid[, j] <- fpca_residual_norm(fit, Y, time_weights)
-    }
-    scores[, j, ] <- S
-    if (details) {
-      rec <- matrix(model$basis$mean[, j], L, n) + matrix(model$basis$components[, j, ], L) %*% t(S)
-      fitted[, j] <- as.vector(rec)
+  ix <- warp_index(model, st)
+  # quadrature weights per DoF; a constant DoF's basis has zero components,
+  # so the kernel gives it zero scores and its distance to the mean
+  w <- vapply(model$fpca, function(f) as.double(f$weights), numeric(L))
+  res <- .Call(hm_project_batch, st$values, ix$rows, ix$nxt, ix$f, model$basis$mean,
+               model$basis$components, w, w * (time_weights %||% 1))
+  scores <- array(res$scores, c(n, p, k), dimnames = list(st$ids, model$dofs, paste0("FPC", seq_len(k))))
+  resid <- matrix(res$residual, n, p, dimnames = list(st$ids, model$dofs))
+  if (details) {
+    warped <- fitted <- matrix(0, n * L, p)
+    for (j in seq_len(p)) {
+      warped[, j] <- warp_dof(ix, st$values[, j])
+      fitted[, j] <- as.vector(matrix(model$basis$mean[, j], L, n) +
+                                 matrix(model$basis$components[, j, ], L) %*% t(matrix(scores[, j, ], n, k)))
     }
   }
   out <- list(scores = scores, residual = resid, distance = sqrt(rowSums(resid^2)),
