@@ -132,8 +132,9 @@ draw_copula_scores <- function(model, n) {
   beta <- matrix(0, n, kw)
   D <- nrow(cop$columns)
   if (D == 0L || n == 0L) return(list(alpha = alpha, beta = beta))
-  Z <- matrix(stats::rnorm(n * D), n, D) %*% cop$root
-  V <- interpolate_columns(cop$z, cop$quantiles, Z)
+  # normals, times the root, through the tabulated quantiles: one native pass
+  # (src/copula-draw.c; tests/testthat/helper-copula.R is its R transcription)
+  V <- .Call(hm_copula_draw, as.integer(n), cop$root, cop$z, cop$quantiles)
   dof_cols <- which(!cop$columns$warp)
   jdof <- match(cop$columns$dof[dof_cols], model$dofs)
   # alpha[, j, c] is column j + p (c - 1) of alpha viewed as n x (p k)
@@ -145,20 +146,6 @@ draw_copula_scores <- function(model, n) {
   list(alpha = alpha, beta = beta)
 }
 
-# Linear interpolation of every column of Z in its own column of the table
-# Q on the common, evenly spaced grid `z` (ends held beyond it), all at once:
-# stats::approx() per column costs more than the draw itself for one grasp.
-interpolate_columns <- function(z, Q, Z) {
-  G <- length(z)
-  h <- (z[G] - z[1]) / (G - 1)
-  pos <- (pmin(pmax(Z, z[1]), z[G]) - z[1]) / h
-  lo <- pmin(floor(pos), G - 2)
-  f <- pos - lo
-  base <- rep((seq_len(ncol(Z)) - 1L) * G, each = nrow(Z)) + lo + 1
-  V <- Q[base] * (1 - f) + Q[base + 1] * f
-  dim(V) <- dim(Z)
-  V
-}
 
 # The correlation between DoFs' first FPC scores (p x p) a model carries:
 # the copula's for a copula model, zero off the diagonal for the thesis'

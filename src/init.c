@@ -16,6 +16,7 @@ SEXP hm_gmm_kmeans(SEXP Y, SEXP centres, SEXP iters); /* gmm-em.c */
 SEXP hm_shape_features(SEXP recs, SEXP k); /* dba-prep.c */
 SEXP hm_linear_mean(SEXP recs, SEXP warps, SEXP which); /* dba-prep.c */
 SEXP hm_stall_lengths(SEXP warps); /* dba-prep.c */
+SEXP hm_copula_draw(SEXP n, SEXP root, SEXP grid, SEXP quantiles); /* copula-draw.c */
 SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SEXP comps,
                       SEXP weights, SEXP norm_weights); /* project-kernel.c */
 
@@ -28,6 +29,7 @@ static const R_CallMethodDef call_methods[] = {
   {"hm_linear_mean", (DL_FUNC) &hm_linear_mean, 3},
   {"hm_stall_lengths", (DL_FUNC) &hm_stall_lengths, 1},
   {"hm_project_batch", (DL_FUNC) &hm_project_batch, 8},
+  {"hm_copula_draw", (DL_FUNC) &hm_copula_draw, 4},
   {NULL, NULL, 0}
 };
 

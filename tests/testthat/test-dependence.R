@@ -169,3 +169,26 @@ test_that("interpolate_columns() is approx() column by column", {
   want <- vapply(1:3, function(a) stats::approx(z, Q[, a], xout = Z[, a], rule = 2)$y, numeric(20))
   expect_equal(interpolate_columns(z, Q, Z), want)
 })
+
+test_that("the native copula draw is its R transcription, from the same RNG stream", {
+  g <- simulate_grasps(subjects = 12, grasps = 3, objects = 2, trials = 2, seed = 4)
+  m <- fit_grasp_model(g, seed = 1, dependence = "copula")
+  cop <- m$dependence$copula
+  set.seed(11)
+  native <- .Call(hm_copula_draw, 500L, cop$root, cop$z, cop$quantiles)
+  after_native <- stats::runif(1)
+  set.seed(11)
+  ref <- copula_draw_reference(500L, cop$root, cop$z, cop$quantiles)
+  expect_equal(native, ref, tolerance = 1e-12)
+  expect_identical(stats::runif(1), after_native) # the same number of normals drawn
+  # a singular correlation (eigen root, not triangular) is drawn the same way
+  R <- matrix(1, 3, 3)
+  U <- chol_psd(R)
+  Q <- cbind(cop$quantiles[, 1:3])
+  set.seed(2)
+  a <- .Call(hm_copula_draw, 50L, U, cop$z, Q)
+  set.seed(2)
+  expect_equal(a, copula_draw_reference(50L, U, cop$z, Q), tolerance = 1e-12)
+  expect_error(.Call(hm_copula_draw, 5L, U, cop$z, Q[, 1:2]), "quantiles")
+  expect_error(.Call(hm_copula_draw, -1L, U, cop$z, Q), "count")
+})
