@@ -60,7 +60,7 @@ evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractio
     rec <- do.call(fit_grasp_recognizer, c(list(x[!test]), fit_args))
     te <- x[test]
     truth <- as.character(te$meta$grasp)
-    hits <- function(seen) as.character(rec$classes[max.col(recognizer_scores(rec, te, seen))]) == truth
+    hits <- function(seen) top_class(rec$classes, recognizer_scores(rec, te, seen)) == truth
     out <- rbind(
       do.call(rbind, lapply(ms, function(v) {
         seen <- rep(max(1L, as.integer(round(v * te$rate / 1000))), length(te$recordings))

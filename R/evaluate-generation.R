@@ -310,7 +310,7 @@ fit_feature_lda <- function(training) {
 }
 
 lda_class <- function(lda, F) {
-  lda$classes[max.col(shrunk_lda_scores(lda, F), ties.method = "first")]
+  top_class(lda$classes, shrunk_lda_scores(lda, F))
 }
 
 #' @export

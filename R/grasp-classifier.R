@@ -81,6 +81,18 @@ check_fractions <- function(at, arg, call = rlang::caller_env()) {
   sort(unique(as.numeric(at)))
 }
 
+# New recordings for a fitted classifier or recogniser: a grasps object with
+# exactly the DoFs it was trained on, in that order.
+check_trained_dofs <- function(x, dofs, what, call = rlang::caller_env()) {
+  check_grasps(x, arg = "newdata", call = call)
+  if (!identical(x$dofs, dofs)) {
+    hm_abort(c("{.arg newdata} has other DoFs than the {what} was trained on.",
+               i = "Trained on: {.val {dofs}}.", x = "Given: {.val {x$dofs}}."),
+             "bad_input", argument = "newdata", call = call)
+  }
+  invisible(x)
+}
+
 # The grasp labels of a training set: every recording labelled, at least
 # two types, at least two recordings each.
 check_training_labels <- function(x, call = rlang::caller_env()) {
@@ -124,18 +136,13 @@ predict.grasp_classifier <- function(object, newdata, type = c("class", "prob"),
   type <- check_choice(type, arg = "type", call = call)
   s <- classifier_log_posterior(object, newdata, call = call)
   if (type == "prob") return(softmax_rows(s))
-  factor(object$classes[max.col(s, ties.method = "first")], levels = object$levels)
+  factor(top_class(object$classes, s), levels = object$levels)
 }
 
 # Log posteriors (rows: recordings of x, columns: types), after checking
 # that x is what the classifier was trained on.
 classifier_log_posterior <- function(object, x, call = rlang::caller_env()) {
-  check_grasps(x, arg = "newdata", call = call)
-  if (!identical(x$dofs, object$dofs)) {
-    hm_abort(c("{.arg newdata} has other DoFs than the classifier was trained on.",
-               i = "Trained on: {.val {object$dofs}}.", x = "Given: {.val {x$dofs}}."),
-             "bad_input", argument = "newdata", call = call)
-  }
+  check_trained_dofs(x, object$dofs, "classifier", call = call)
   s <- shrunk_lda_scores(object$fit, classifier_features(x, object$at))
   rownames(s) <- x$meta$id
   s

@@ -72,26 +72,19 @@ prefix_arrays <- function(x, H) {
   list(frames = A, travel = C)
 }
 
-# Features at horizon h for every row of the prefix arrays: the postures
-# at fractions `at` of the h frames (ordered fraction-fastest: DoF 1 at
-# every fraction, then DoF 2, ...), then the log travel of every DoF.
-prefix_features <- function(prefix, h, at) {
+# Features at horizon h for the given rows of the prefix arrays: the
+# postures at fractions `at` of the h frames (ordered fraction-fastest: DoF 1
+# at every fraction, then DoF 2, ...), then the log travel of every DoF.
+# Training and batch prediction both come through here; a live stream
+# computes the same numbers incrementally (stream_features()).
+prefix_features <- function(prefix, h, at, rows = seq_len(dim(prefix$frames)[1])) {
   A <- prefix$frames
-  n <- dim(A)[1]
+  n <- length(rows)
   ix <- fraction_index(h, at)
-  P <- A[, ix$lo, , drop = FALSE] * rep(1 - ix$w, each = n) + A[, ix$hi, , drop = FALSE] * rep(ix$w, each = n)
+  P <- A[rows, ix$lo, , drop = FALSE] * rep(1 - ix$w, each = n) +
+    A[rows, ix$hi, , drop = FALSE] * rep(ix$w, each = n)
   dim(P) <- c(n, length(at) * dim(A)[3])
-  cbind(P, log1p(matrix(prefix$travel[, h, ], n)))
-}
-
-# Frames either side of fractions `at` of h frames, and the weight of the
-# later one.
-fraction_index <- function(h, at) {
-  pos <- 1 + at * (h - 1)
-  lo <- floor(pos)
-  hi <- lo + 1L
-  hi[hi > h] <- h
-  list(lo = lo, hi = hi, w = pos - lo)
+  cbind(P, log1p(matrix(prefix$travel[rows, h, ], n)))
 }
 
 # The same features of one stream's frames seen so far (rows of `buf`).
@@ -120,15 +113,11 @@ predict.grasp_recognizer <- function(object, newdata, frames = NULL, ms = NULL, 
                                      type = c("class", "prob"), ...) {
   call <- rlang::caller_env()
   type <- check_choice(type, arg = "type", call = call)
-  check_grasps(newdata, arg = "newdata", call = call)
-  if (!identical(newdata$dofs, object$dofs)) {
-    hm_abort("{.arg newdata} has other DoFs than the recogniser was trained on.", "bad_input",
-             argument = "newdata", call = call)
-  }
+  check_trained_dofs(newdata, object$dofs, "recogniser", call = call)
   seen <- seen_frames(newdata, frames, ms, fraction, call)
   s <- recognizer_scores(object, newdata, seen)
   if (type == "prob") return(softmax_rows(s))
-  factor(object$classes[max.col(s, ties.method = "first")], levels = object$levels)
+  factor(top_class(object$classes, s), levels = object$levels)
 }
 
 # Frames seen of each recording of x (at least 1).
@@ -148,20 +137,16 @@ seen_frames <- function(x, frames, ms, fraction, call) {
   pmax(1L, as.integer(round(fraction * x$meta$n_frames)))
 }
 
-# Log posteriors of recordings seen for `seen` frames each (the same
-# features a stream computes; recordings are grouped by horizon).
+# Log posteriors of recordings seen for `seen` frames each, from the same
+# prefix arrays and features as the training (recordings grouped by horizon).
 recognizer_scores <- function(object, x, seen) {
   s <- matrix(NA_real_, length(seen), length(object$classes),
               dimnames = list(x$meta$id, object$classes))
   seen <- pmin(seen, object$horizon) # past the horizon: the first `horizon` frames
+  prefix <- prefix_arrays(x, max(seen))
   for (h in unique(seen)) {
     rows <- which(seen == h)
-    F <- t(vapply(rows, function(i) {
-      r <- x$recordings[[i]][pmin(seq_len(h), nrow(x$recordings[[i]])), , drop = FALSE]
-      travel <- if (h > 1L) colSums(abs(diff(r))) else rep(0, ncol(r))
-      stream_features(r, h, object$at, travel)
-    }, numeric((length(object$at) + 1L) * length(object$dofs))))
-    s[rows, ] <- shrunk_lda_scores(object$fits[[h]], F)
+    s[rows, ] <- shrunk_lda_scores(object$fits[[h]], prefix_features(prefix, h, object$at, rows))
   }
   s
 }

@@ -17,12 +17,19 @@ motion_features <- function(x, at, duration = TRUE) {
 # Postures of one recording (frames x DoFs) at fractions `at` of its length,
 # as one vector (all DoFs at at[1], then at at[2], ...).
 posture_at <- function(r, at) {
-  m <- nrow(r)
+  ix <- fraction_index(nrow(r), at)
+  as.vector(t(r[ix$lo, , drop = FALSE] * (1 - ix$w) + r[ix$hi, , drop = FALSE] * ix$w))
+}
+
+# Frames either side of fractions `at` of m frames (linear interpolation
+# between frames), and the weight of the later one. The motion features, the
+# recogniser's prefixes and a live stream all read postures this way.
+fraction_index <- function(m, at) {
   pos <- 1 + at * (m - 1)
   lo <- floor(pos)
-  hi <- pmin(lo + 1L, m)
-  w <- pos - lo
-  as.vector(t(r[lo, , drop = FALSE] * (1 - w) + r[hi, , drop = FALSE] * w))
+  hi <- lo + 1L
+  hi[hi > m] <- m
+  list(lo = lo, hi = hi, w = pos - lo)
 }
 
 # How far each DoF travels in a recording: log(1 + the sum of its absolute

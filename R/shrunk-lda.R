@@ -52,6 +52,10 @@ shrunk_lda_scores <- function(fit, F) {
   s
 }
 
+# The class with the highest score in each row (the first on a tie), the
+# one rule every prediction from discriminant scores follows.
+top_class <- function(classes, s) classes[max.col(s, ties.method = "first")]
+
 # Class probabilities from log posteriors (softmax, stable).
 softmax_rows <- function(s) {
   top <- if (nrow(s) == 1L) max(s) else s[cbind(seq_len(nrow(s)), max.col(s, ties.method = "first"))]

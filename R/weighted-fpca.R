@@ -68,7 +68,6 @@ fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ...)
     hm_abort("{.arg x} has no recordings of the modelled type{?s} {.val {missing}}.", "bad_input",
              argument = "x", call = call)
   }
-  st <- stack_recordings(x, models[[1]]$dofs)
   scale <- t(vapply(types, function(ty) {
     m <- models[[ty]]
     own <- x[x$meta$grasp == ty]
@@ -104,8 +103,7 @@ weighted_fpca_distances <- function(object, x, call = rlang::caller_env()) {
     s2 <- object$scale[ty, ]
     drop(r$residual^2 %*% (1 / s2)) + sum(log(s2)) - 2 * score_log_density(m, r$scores)
   }, numeric(length(x$recordings)))
-  d <- matrix(d, length(x$recordings), length(types), dimnames = list(x$meta$id, types))
-  d
+  matrix(d, length(x$recordings), length(types), dimnames = list(x$meta$id, types))
 }
 
 # Sum over DoFs of the log density of each recording's FPC scores under the
