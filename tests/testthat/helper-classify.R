@@ -26,3 +26,20 @@ planted_types <- function(types = c(1, 17, 22), subjects = 4, trials = 3, frames
     grasps(recs, meta = do.call(rbind, meta))
   })
 }
+
+# The skeleton of the recognition tests' planted sets: `n_per` recordings of
+# each type, made by `recording(type, i)` (a frames x 16 matrix) from the
+# RNG stream of `seed`, recording i of a type belonging to subject
+# (i - 1) %% subjects + 1. Each test file plants its own truth in `recording`.
+planted_set <- function(types, n_per, subjects, seed, recording) {
+  set.seed(seed)
+  recs <- list()
+  meta <- list()
+  for (ty in types) {
+    for (i in seq_len(n_per)) {
+      recs[[length(recs) + 1L]] <- recording(ty, i)
+      meta[[length(meta) + 1L]] <- data.frame(grasp = ty, subject = sprintf("S%02d", (i - 1) %% subjects + 1))
+    }
+  }
+  grasps(recs, meta = do.call(rbind, meta), rate = 50)
+}

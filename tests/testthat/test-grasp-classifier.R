@@ -1,29 +1,20 @@
 # Planted truth for the discriminant classifier: types that differ only in
 # the final angle of two DoFs, under noise in all 16, must be told apart.
 
-planted_types <- function(n_per = 40, subjects = 8, sep = 12, seed = 1, late = FALSE) {
-  set.seed(seed)
-  recs <- list()
-  meta <- list()
-  for (ty in c("Tripod", "Ring", "Stick")) {
+final_dof_types <- function(n_per = 40, subjects = 8, sep = 12, seed = 1) {
+  planted_set(c("Tripod", "Ring", "Stick"), n_per, subjects, seed, function(ty, i) {
     shift <- c(Tripod = 0, Ring = sep, Stick = -sep)[[ty]]
-    for (i in seq_len(n_per)) {
-      m <- sample(25:35, 1)
-      s <- seq(0, 1, length.out = m)
-      close <- if (late) pmax(0, (s - 0.5) / 0.5) else s # late: types part only in the second half
-      target <- stats::rnorm(16, 40, 8)                   # every DoF varies a lot between recordings
-      target[c(3, 7)] <- 40 + shift + stats::rnorm(2, 0, 2)
-      r <- outer(close, target) + matrix(stats::rnorm(m * 16, 0, 1), m)
-      recs[[length(recs) + 1L]] <- r
-      meta[[length(meta) + 1L]] <- data.frame(grasp = ty, subject = sprintf("S%02d", (i - 1) %% subjects + 1))
-    }
-  }
-  grasps(recs, meta = do.call(rbind, meta))
+    m <- sample(25:35, 1)
+    s <- seq(0, 1, length.out = m)
+    target <- stats::rnorm(16, 40, 8)                   # every DoF varies a lot between recordings
+    target[c(3, 7)] <- 40 + shift + stats::rnorm(2, 0, 2)
+    outer(s, target) + matrix(stats::rnorm(m * 16, 0, 1), m)
+  })
 }
 
 test_that("the discriminant finds the two DoFs that separate the types", {
-  g <- planted_types()
-  test <- planted_types(seed = 2)
+  g <- final_dof_types()
+  test <- final_dof_types(seed = 2)
   cl <- fit_grasp_classifier(g)
   expect_s3_class(cl, "grasp_classifier")
   acc <- mean(predict(cl, test) == test$meta$grasp)
@@ -71,7 +62,7 @@ test_that("the shrinkage LDA is the Bayes rule on Gaussian classes", {
 })
 
 test_that("evaluate_loso() takes the discriminant and holds out by subject", {
-  g <- planted_types(n_per = 24, subjects = 6)
+  g <- final_dof_types(n_per = 24, subjects = 6)
   ev <- evaluate_loso(g, method = "discriminant")
   expect_s3_class(ev, "grasp_evaluation")
   expect_equal(nrow(ev$per_subject), 6)
@@ -81,7 +72,7 @@ test_that("evaluate_loso() takes the discriminant and holds out by subject", {
 })
 
 test_that("the classifier refuses what it cannot learn from or apply to", {
-  g <- planted_types(n_per = 6)
+  g <- final_dof_types(n_per = 6)
   expect_error(fit_grasp_classifier(g[g$meta$grasp == "Tripod"]), "at least two", class = "handmotion_error_bad_input")
   expect_error(fit_grasp_classifier(g, at = c(0, 2)), class = "handmotion_error_bad_input")
   expect_error(fit_grasp_classifier(g, prior = "flat"), class = "handmotion_error_bad_input")

@@ -3,20 +3,13 @@
 # recording's length or its future frames would see them apart too early.
 
 late_types <- function(n_per = 36, subjects = 6, seed = 1) {
-  set.seed(seed)
-  recs <- list()
-  meta <- list()
-  for (ty in c("Tripod", "Ring")) {
-    for (i in seq_len(n_per)) {
-      m <- 40L
-      s <- seq(0, 1, length.out = m)
-      common <- outer(s, stats::rnorm(16, 30, 3))                   # both types close alike ...
-      part <- outer(pmax(0, (s - 0.5) / 0.5), c(rep(0, 15), if (ty == "Tripod") 25 else -25)) # ... then DoF 16 parts
-      recs[[length(recs) + 1L]] <- common + part + matrix(stats::rnorm(m * 16, 0, 0.5), m)
-      meta[[length(meta) + 1L]] <- data.frame(grasp = ty, subject = sprintf("S%02d", (i - 1) %% subjects + 1))
-    }
-  }
-  grasps(recs, meta = do.call(rbind, meta), rate = 50)
+  planted_set(c("Tripod", "Ring"), n_per, subjects, seed, function(ty, i) {
+    m <- 40L
+    s <- seq(0, 1, length.out = m)
+    common <- outer(s, stats::rnorm(16, 30, 3))                   # both types close alike ...
+    part <- outer(pmax(0, (s - 0.5) / 0.5), c(rep(0, 15), if (ty == "Tripod") 25 else -25)) # ... then DoF 16 parts
+    common + part + matrix(stats::rnorm(m * 16, 0, 0.5), m)
+  })
 }
 
 test_that("the recogniser sees the types apart only once they part", {

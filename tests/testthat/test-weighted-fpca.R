@@ -6,25 +6,18 @@
 # the weighted distance scales each DoF by the type's own spread there.
 
 two_dof_types <- function(n_per = 30, seed = 1) {
-  set.seed(seed)
-  recs <- list()
-  meta <- list()
-  for (ty in c("Tripod", "Ring")) {
-    for (i in seq_len(n_per)) {
-      m <- 30L
-      s <- seq(0, 1, length.out = m)
-      close <- (1 - cos(pi * s)) / 2
-      r <- outer(close, stats::rnorm(16, 40, 5))
-      for (j in setdiff(1:16, c(3, 7))) {
-        r[, j] <- r[, j] + 10 * sin(2 * pi * stats::runif(1, 1, 3) * s + stats::runif(1, 0, 2 * pi))
-      }
-      shape <- if (ty == "Tripod") close else close^1.4
-      r[, c(3, 7)] <- outer(shape, 40 + stats::rnorm(2, 0, 1))
-      recs[[length(recs) + 1L]] <- r + matrix(stats::rnorm(m * 16, 0, 0.3), m)
-      meta[[length(meta) + 1L]] <- data.frame(grasp = ty, subject = sprintf("S%02d", (i - 1) %% 5 + 1))
+  planted_set(c("Tripod", "Ring"), n_per, subjects = 5, seed, function(ty, i) {
+    m <- 30L
+    s <- seq(0, 1, length.out = m)
+    close <- (1 - cos(pi * s)) / 2
+    r <- outer(close, stats::rnorm(16, 40, 5))
+    for (j in setdiff(1:16, c(3, 7))) {
+      r[, j] <- r[, j] + 10 * sin(2 * pi * stats::runif(1, 1, 3) * s + stats::runif(1, 0, 2 * pi))
     }
-  }
-  grasps(recs, meta = do.call(rbind, meta), rate = 50)
+    shape <- if (ty == "Tripod") close else close^1.4
+    r[, c(3, 7)] <- outer(shape, 40 + stats::rnorm(2, 0, 1))
+    r + matrix(stats::rnorm(m * 16, 0, 0.3), m)
+  })
 }
 
 test_that("the weighted distance tells apart types the thesis' distance cannot", {
