@@ -46,15 +46,10 @@ class GraspModels(RHandle):
     def dependence(self, grasp):
         """Correlation between the DoFs' first FPC scores that the model of ``grasp`` generates
         with, as a DoF x DoF DataFrame (the identity for the thesis' independent model)."""
-        import numpy as np
-        import pandas as pd
         if str(grasp) not in self.grasp_types():
             from .errors import BadInputError
             raise BadInputError(f"no model for grasp type {grasp!r}; have {self.grasp_types()}")
-        ro = r()
-        mat = ro.r("handmotion:::dependence_matrix")(self.robj.rx2(str(grasp)))
-        names = [str(v) for v in ro.r["rownames"](mat)]
-        return pd.DataFrame(np.asarray(mat), index=names, columns=names)
+        return _labelled_matrix(r().r("handmotion:::dependence_matrix")(self.robj.rx2(str(grasp))))
 
 
 class Skeleton(RHandle):
@@ -70,19 +65,18 @@ class HandoverModel(RHandle):
     """A sparse-marker reconstruction model (R class ``handover_model``)."""
 
 
-def _as_grasps_r(x):
-    from .grasps import Grasps
-    from .errors import BadInputError
-    if not isinstance(x, Grasps):
-        raise BadInputError("x must be a handmotion.Grasps")
-    return x.to_r()
+def _as_grasps(x):
+    # api's check (imported here: api imports this module)
+    from .api import _as_grasps
+    return _as_grasps(x)
 
 
-def _probabilities(mat):
-    import numpy as np
+def _labelled_matrix(mat):
+    """An R matrix with dimnames as a DataFrame, copied out of R's memory (r_to_py: a view
+    through np.asarray() would point at memory R reuses once it collects the matrix)."""
     import pandas as pd
     ro = r()
-    return pd.DataFrame(np.asarray(mat), index=[str(v) for v in ro.r["rownames"](mat)],
+    return pd.DataFrame(r_to_py(mat), index=[str(v) for v in ro.r["rownames"](mat)],
                         columns=[str(v) for v in ro.r["colnames"](mat)])
 
 
@@ -95,9 +89,9 @@ class GraspClassifier(RHandle):
         from .errors import BadInputError
         if type not in ("class", "prob"):
             raise BadInputError(f"type must be 'class' or 'prob', not {type!r}")
-        out = call(r().r["predict"], self.robj, _as_grasps_r(x), type=type)
+        out = call(r().r["predict"], self.robj, _as_grasps(x), type=type)
         if type == "prob":
-            return _probabilities(out)
+            return _labelled_matrix(out)
         return [str(v) for v in r().r["as.character"](out)]
 
 
@@ -114,9 +108,9 @@ class GraspRecognizer(RHandle):
         given = {k: v for k, v in dict(frames=frames, ms=ms, fraction=fraction).items() if v is not None}
         if len(given) != 1:
             raise BadInputError("give exactly one of frames, ms and fraction")
-        out = call(r().r["predict"], self.robj, _as_grasps_r(x), type=type, **given)
+        out = call(r().r["predict"], self.robj, _as_grasps(x), type=type, **given)
         if type == "prob":
-            return _probabilities(out)
+            return _labelled_matrix(out)
         return [str(v) for v in r().r["as.character"](out)]
 
     def stream(self):
