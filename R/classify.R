@@ -107,6 +107,10 @@ resolve_method <- function(models, method, defaulted, call = rlang::caller_env()
 fit_classifier <- function(train, method, fit_args) {
   fitter <- switch(method, last_frame = fit_last_frame_pca, fpca = fit_grasp_models,
                    discriminant = fit_grasp_classifier, weighted_fpca = fit_weighted_fpca)
+  # The FPCA distance reads only each model's mean curves and FPCs, never
+  # its score mixtures; one Gaussian (k = 1, closed form) instead of the EM
+  # for two components halves the refit without changing one prediction.
+  if (method == "fpca" && is.null(fit_args$k)) fit_args$k <- 1L
   do.call(fitter, c(list(train), fit_args))
 }
 

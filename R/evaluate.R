@@ -12,12 +12,16 @@
 #' thesis (fit and classify the same recordings) is computed alongside, so
 #' both can be reported.
 #'
-#' A full LOSO with `method = "fpca"` refits all grasp models once per subject
-#' (30 times 33 models for HUST), which is slow. `folds = k` is the cheaper
-#' option: subjects are split at random (seeded) into `k` groups and each group
-#' is held out in turn (leave-one-group-of-subjects-out), so only `k` refits
-#' are needed; it is still subject-independent, slightly pessimistic because
-#' each fit sees fewer subjects.
+#' A full LOSO with `method = "fpca"` or `"weighted_fpca"` refits all grasp
+#' models once per subject (30 times 33 models for HUST: about a minute on
+#' two cores for the default data). The FPCA distance uses only the models'
+#' mean curves and FPCs, so its folds fit one Gaussian to the scores
+#' (`k = 1`, no EM) unless `fit_args` sets `k`; the predictions are those of
+#' the thesis' two-component models. `folds = k` is the cheaper option:
+#' subjects are split at random (seeded) into `k` groups and each group is
+#' held out in turn (leave-one-group-of-subjects-out), so only `k` refits are
+#' needed; it is still subject-independent, slightly pessimistic because each
+#' fit sees fewer subjects.
 #'
 #' Folds run with `future.apply::future_lapply()` (set your own
 #' `future::plan()`; none is set here) with `future.seed = TRUE`, and report

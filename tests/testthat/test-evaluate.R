@@ -112,6 +112,14 @@ test_that("FPCA LOSO runs on a small planted design: held-out <= in-sample", {
   expect_lte(ev$accuracy[["held_out"]], ev$accuracy[["in_sample"]])
 })
 
+test_that("FPCA folds fit one Gaussian to the scores: the same predictions as the thesis' two", {
+  g <- planted_types(types = c(1, 17, 22), subjects = 3, trials = 4, spread = 30, subject_sd = 6, seed = 8)
+  ev1 <- evaluate_loso(g, method = "fpca", fit_args = list(seed = 1), in_sample = FALSE)
+  ev2 <- evaluate_loso(g, method = "fpca", fit_args = list(seed = 1, k = 2), in_sample = FALSE)
+  expect_identical(ev1$predictions$predicted, ev2$predictions$predicted)
+  expect_equal(ev1$predictions$distance, ev2$predictions$distance, tolerance = 1e-10)
+})
+
 test_that("printed evaluation and autoplot", {
   g <- planted_types(types = c(1, 9, 17, 22), subjects = 5, trials = 2, spread = 20,
                      subject_sd = 8, seed = 4)

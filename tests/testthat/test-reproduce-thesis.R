@@ -8,7 +8,7 @@ test_that("report settings come from params, else environment variables, else th
   full <- report_settings(NULL)
   expect_equal(full$subjects, 30L)
   expect_equal(full$grasps, 1:33)
-  expect_equal(full$loso_folds, 5L)
+  expect_null(full$loso_folds)
   expect_null(full$output_dir)
 
   withr::local_envvar(HANDMOTION_REPORT_SUBJECTS = "4", HANDMOTION_REPORT_GRASPS = "17, 25,9",
@@ -57,11 +57,12 @@ test_that("the report renders on a tiny design with its tables and figures", {
   expect_true(has("the thesis used Medium Wrap, which is not in this design"))
 
   tables <- c("table_5_1", "table_5_2", "table_5_3", "table_5_3_claims", "table_5_6", "table_5_7",
-              "table_5_8", "accuracy", "timings", "figure_5_3_sign_flips")
+              "table_5_8", "accuracy", "timings", "figure_5_3_sign_flips", "classifiers_held_out",
+              "recognition_recall")
   expect_setequal(sub("\\.csv$", "", list.files(file.path(out, "tables"))), tables)
   figures <- c("figure_5_1", "figure_5_1_frame_counts", "figure_5_2", "figure_5_3", "figure_5_4",
                "figure_5_5", "figure_5_6", "table_5_3", "table_5_4", "table_5_5", "table_5_6",
-               "table_5_8", "appendix_a_1")
+               "table_5_8", "appendix_a_1", "classifiers_accuracy", "recognition_confusion")
   expect_setequal(sub("\\.png$", "", list.files(file.path(out, "figures"))), figures)
   png_magic <- as.raw(c(0x89, 0x50, 0x4e, 0x47))
   for (f in list.files(file.path(out, "figures"), full.names = TRUE)) {
@@ -75,6 +76,10 @@ test_that("the report renders on a tiny design with its tables and figures", {
   expect_equal(nrow(acc), 2L)
   expect_true(all(acc$in_sample >= 0 & acc$in_sample <= 1 & acc$held_out >= 0 & acc$held_out <= 1))
   expect_equal(unique(acc$scheme), "leave-one-subject-out")
+  every <- utils::read.csv(file.path(out, "tables", "classifiers_held_out.csv"))
+  expect_equal(nrow(every), 4L)
+  expect_true(all(every$held_out >= 0 & every$held_out <= 1))
+  expect_equal(every$held_out[1:2], acc$held_out)
   tim <- utils::read.csv(file.path(out, "tables", "timings.csv"))
   expect_true(all(c("fit the grasp models", "held-out evaluation, FPCA", "whole report") %in% tim$step))
   expect_true(all(tim$seconds >= 0))
