@@ -80,12 +80,17 @@ shrink_correlation <- function(Z) {
   X <- X / rep(sqrt(colSums(X^2) / (n - 1)), each = n)
   X[!is.finite(X)] <- 0
   R <- crossprod(X) / (n - 1)
-  # Var(r_ij) from the products w_kij = x_ki x_kj (their empirical variance)
-  W2 <- crossprod(X^2)                       # sum_k x_ki^2 x_kj^2
-  wbar <- crossprod(X) / n                   # mean_k w_kij
-  var_r <- n / (n - 1)^3 * (W2 - n * wbar^2)
+  # Var(r_ij) is the empirical variance of the products w_kij = x_ki x_kj:
+  # n / (n - 1)^3 (sum_k w_kij^2 - n wbar_ij^2). Only its sum over i != j
+  # enters lambda, and sum_ij sum_k x_ki^2 x_kj^2 = sum_k (sum_i x_ki^2)^2, so
+  # the one cross product above is all the D x D work (the recogniser fits
+  # one of these per horizon).
+  X2 <- X^2
+  w2_off <- sum(rowSums(X2)^2) - sum(X2^2)
   off <- row(R) != col(R)
-  lambda <- sum(var_r[off]) / sum(R[off]^2)
+  wbar2_off <- ((n - 1) / n)^2 * sum(R[off]^2)
+  var_off <- n / (n - 1)^3 * (w2_off - n * wbar2_off)
+  lambda <- var_off / sum(R[off]^2)
   lambda <- min(1, max(0, if (is.finite(lambda)) lambda else 1))
   out <- (1 - lambda) * R
   diag(out) <- 1

@@ -15,8 +15,11 @@
 #' cores).
 #'
 #' @param x A labelled [grasps()] object with `subject` metadata.
-#' @param ms Times since the recording began, in milliseconds.
-#' @param fractions Fractions of each recording's length.
+#' @param ms Times since the recording began, in milliseconds, or `NULL`.
+#' @param fractions Fractions of each recording's length, or `NULL`. Each
+#'   fold fits the recogniser's discriminants only at the horizons these
+#'   need (a few for `ms` alone), the same fits [fit_grasp_recognizer()]
+#'   makes at those horizons.
 #' @param folds `NULL` for one fold per subject, or a number of subject
 #'   groups (as in [evaluate_loso()]).
 #' @param seed Seed for the grouping of subjects into `folds`.
@@ -36,14 +39,28 @@ evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractio
                                        folds = NULL, seed = 1, ...) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  if (!is.numeric(ms) || anyNA(ms) || any(ms <= 0)) {
-    hm_abort("{.arg ms} must be positive times in milliseconds.", "bad_input", argument = "ms", call = call)
+  if (!is.null(ms) && (!is.numeric(ms) || !length(ms) || anyNA(ms) || any(ms <= 0))) {
+    hm_abort("{.arg ms} must be positive times in milliseconds, or {.code NULL}.", "bad_input",
+             argument = "ms", call = call)
   }
-  fractions <- check_fractions(fractions, "fractions", call = call)
-  if (any(fractions == 0)) {
-    hm_abort("{.arg fractions} must be above 0: a recording is seen from its first frame.", "bad_input",
-             argument = "fractions", call = call)
+  if (!is.null(fractions)) {
+    fractions <- check_fractions(fractions, "fractions", call = call)
+    if (any(fractions == 0)) {
+      hm_abort("{.arg fractions} must be above 0: a recording is seen from its first frame.", "bad_input",
+               argument = "fractions", call = call)
+    }
   }
+  if (is.null(ms) && is.null(fractions)) {
+    hm_abort("Give {.arg ms}, {.arg fractions} or both: there is nothing to evaluate.", "bad_input",
+             argument = "ms", call = call)
+  }
+  rec_args <- list(...)
+  unknown <- setdiff(names(rec_args) %||% rep("", length(rec_args)), c("at", "horizon"))
+  if (length(unknown)) {
+    hm_abort("{.arg ...} is passed to {.fn fit_grasp_recognizer}, which takes {.arg at} and {.arg horizon}, not {.val {unknown}}.",
+             "bad_input", argument = "...", call = call)
+  }
+  at <- check_fractions(rec_args$at %||% eval(formals(fit_grasp_recognizer)$at), "at", call = call)
   check_training_labels(x, call = call)
   subj <- x$meta$subject
   if (is.null(subj) || anyNA(subj) || length(unique(subj)) < 2L) {
@@ -53,23 +70,27 @@ evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractio
   old_rng <- save_rng()
   on.exit(restore_rng(old_rng), add = TRUE)
   groups <- subject_folds(unique(subj), folds, seed, call = call)
-  fit_args <- list(...)
   p <- progressr::progressor(steps = length(groups))
   parts <- future.apply::future_lapply(seq_along(groups), function(f) {
     test <- subj %in% groups[[f]]
-    rec <- do.call(fit_grasp_recognizer, c(list(x[!test]), fit_args))
+    train <- x[!test]
     te <- x[test]
+    # frames seen by every held-out recording at each time and fraction
+    views <- c(lapply(ms, function(v) {
+      list(scale = "ms", value = v,
+           seen = rep(max(1L, as.integer(round(v * te$rate / 1000))), length(te$recordings)))
+    }), lapply(fractions, function(v) {
+      list(scale = "fraction", value = v, seen = pmax(1L, as.integer(round(v * te$meta$n_frames))))
+    }))
+    H <- recognizer_horizon(train, rec_args$horizon, call)
+    # only the horizons these views need (a full recogniser fits all H)
+    needed <- sort(unique(pmin(unlist(lapply(views, `[[`, "seen")), H)))
+    rec <- recognizer_fit(train, check_training_labels(train, call = call), at, H, needed)
     truth <- as.character(te$meta$grasp)
-    hits <- function(seen) top_class(rec$classes, recognizer_scores(rec, te, seen)) == truth
-    out <- rbind(
-      do.call(rbind, lapply(ms, function(v) {
-        seen <- rep(max(1L, as.integer(round(v * te$rate / 1000))), length(te$recordings))
-        data.frame(scale = "ms", value = v, correct = sum(hits(seen)), n = length(truth), frames = sum(seen))
-      })),
-      do.call(rbind, lapply(fractions, function(v) {
-        seen <- pmax(1L, as.integer(round(v * te$meta$n_frames)))
-        data.frame(scale = "fraction", value = v, correct = sum(hits(seen)), n = length(truth), frames = sum(seen))
-      })))
+    out <- do.call(rbind, lapply(views, function(v) {
+      hit <- top_class(rec$classes, recognizer_scores(rec, te, v$seen)) == truth
+      data.frame(scale = v$scale, value = v$value, correct = sum(hit), n = length(truth), frames = sum(v$seen))
+    }))
     p(sprintf("fold %d of %d", f, length(groups)))
     out
   }, future.seed = TRUE)

@@ -45,12 +45,26 @@ fit_grasp_recognizer <- function(x, at = c(0, 0.25, 0.5, 0.75, 1), horizon = NUL
   check_grasps(x, call = call)
   at <- check_fractions(at, "at", call = call)
   y <- check_training_labels(x, call = call)
+  recognizer_fit(x, y, at, recognizer_horizon(x, horizon, call))
+}
+
+# The number of horizons: given, or the 95th percentile of the durations.
+recognizer_horizon <- function(x, horizon, call) {
   H <- horizon %||% as.integer(ceiling(stats::quantile(x$meta$n_frames, 0.95, names = FALSE)))
-  H <- check_whole(H, "horizon", max = 1e4, call = call)
-  prefix <- prefix_arrays(x, H)
-  fits <- lapply(seq_len(H), function(h) fit_shrunk_lda(prefix_features(prefix, h, at), y))
-  structure(list(classes = fits[[1]]$classes, levels = grasp_levels(x), at = at, dofs = x$dofs, rate = x$rate, horizon = H,
-                 fits = fits, n = stats::setNames(fits[[1]]$n, fits[[1]]$classes)),
+  check_whole(H, "horizon", max = 1e4, call = call)
+}
+
+# The discriminants at `horizons`: every one of 1..H for a recogniser that
+# streams; evaluate_early_recognition() fits only the horizons its held-out
+# recordings are classified at (the others stay NULL, and such a recogniser
+# never leaves it).
+recognizer_fit <- function(x, y, at, H, horizons = seq_len(H)) {
+  prefix <- prefix_arrays(x, max(horizons))
+  fits <- vector("list", H)
+  fits[horizons] <- lapply(horizons, function(h) fit_shrunk_lda(prefix_features(prefix, h, at), y))
+  first <- fits[[horizons[1]]]
+  structure(list(classes = first$classes, levels = grasp_levels(x), at = at, dofs = x$dofs, rate = x$rate,
+                 horizon = H, fits = fits, n = stats::setNames(first$n, first$classes)),
             class = "grasp_recognizer")
 }
 

@@ -67,6 +67,23 @@ test_that("the copula keeps each score's marginal and carries the training corre
   }
 })
 
+test_that("shrink_correlation()'s lambda is Schafer and Strimmer's, from every pair's variance", {
+  set.seed(3)
+  Z <- matrix(rnorm(60 * 5), 60) %*% matrix(runif(25, -1, 1), 5)
+  n <- nrow(Z)
+  X <- scale(Z)
+  # the definition, pair by pair: Var(r_ij) from the products w_kij = x_ki x_kj
+  num <- den <- 0
+  for (i in 1:5) for (j in 1:5) if (i != j) {
+    w <- X[, i] * X[, j]
+    num <- num + n / (n - 1)^3 * sum((w - mean(w))^2)
+    den <- den + (sum(w) / (n - 1))^2
+  }
+  s <- shrink_correlation(Z)
+  expect_equal(s$lambda, num / den, tolerance = 1e-12)
+  expect_equal(s$cor[upper.tri(s$cor)], ((1 - num / den) * cor(Z))[upper.tri(s$cor)], tolerance = 1e-12)
+})
+
 test_that("shrink_correlation() shrinks noise and keeps a strong structure", {
   set.seed(4)
   Z <- matrix(stats::rnorm(50 * 30), 50)

@@ -80,7 +80,28 @@ test_that("early recognition is evaluated held out by subject, against time and 
   expect_equal(attr(grouped, "scheme"), "3 subject groups")
   expect_error(evaluate_early_recognition(g, ms = -1), class = "handmotion_error_bad_input")
   expect_error(evaluate_early_recognition(g, fractions = 0), class = "handmotion_error_bad_input")
+  expect_error(evaluate_early_recognition(g, ms = NULL, fractions = NULL), class = "handmotion_error_bad_input")
+  expect_error(evaluate_early_recognition(g, ms = 100, horizont = 5), "horizont",
+               class = "handmotion_error_bad_input")
   nosub <- g
   nosub$meta$subject <- NA
   expect_error(evaluate_early_recognition(nosub), class = "handmotion_error_too_few_subjects")
+})
+
+test_that("fitting only the horizons a fold needs changes no prediction", {
+  g <- late_types(n_per = 18, subjects = 4)
+  er <- evaluate_early_recognition(g, ms = c(100, 600), fractions = 0.5, at = c(0, 1))
+  expect_equal(er$scale, c("ms", "ms", "fraction"))
+  ms_only <- evaluate_early_recognition(g, ms = c(100, 600), fractions = NULL, at = c(0, 1))
+  expect_equal(ms_only$accuracy, er$accuracy[1:2])
+  # the same counts from full recognisers, one per held-out subject
+  subj <- unique(g$meta$subject)
+  correct <- rowSums(vapply(subj, function(s) {
+    test <- g$meta$subject == s
+    rec <- fit_grasp_recognizer(g[!test], at = c(0, 1))
+    te <- g[test]
+    c(sum(predict(rec, te, ms = 100) == te$meta$grasp), sum(predict(rec, te, ms = 600) == te$meta$grasp),
+      sum(predict(rec, te, fraction = 0.5) == te$meta$grasp))
+  }, numeric(3)))
+  expect_equal(er$accuracy, correct / length(g))
 })
