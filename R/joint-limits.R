@@ -58,7 +58,7 @@ clamp_to_limits <- function(x, skeleton = hand_skeleton(), mapping = NULL, unit 
 # The range each DoF may take, in the DoF's own unit and sign: the limits of
 # the joint axis the mapping applies it to (`sign * scale * angle` in
 # degrees), converted back. One row per limited DoF: `dof`, `col` (its column
-# in `dofs`), `lo`, `hi`. DoFs without an axis, a turn about the parent's axis
+# in `dofs`), `lo`, `hi` and the skeleton `joint` it turns. DoFs without an axis, a turn about the parent's axis
 # (the thumb's opposition: no limits in the skeleton) and axes declared "0 0"
 # (no range) are left out. Used to clamp, to count violations and to keep
 # generated grasps inside the hand (generate(limits = TRUE)).
@@ -78,7 +78,7 @@ dof_limits <- function(dofs, factor = 1, skeleton = hand_skeleton(), mapping = N
   a <- lo[declared] / mult
   b <- hi[declared] / mult
   data.frame(dof = dofs[used$col[declared]], col = used$col[declared],
-             lo = pmin(a, b), hi = pmax(a, b), stringsAsFactors = FALSE)
+             lo = pmin(a, b), hi = pmax(a, b), joint = used$joint[declared], stringsAsFactors = FALSE)
 }
 
 # Share of recorded frames above which a DoF's limits are not enforced in

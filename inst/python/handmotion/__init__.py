@@ -20,6 +20,7 @@ from .errors import (BadFileError, BadInputError, BadRecordingError, BadSkeleton
                      FitFailedError, HandmotionError, HandmotionWarning, RError,
                      UnknownGraspError)
 from .grasps import Grasps
+from .view import HandView, hand_3d
 from .handles import (GraspClassifier, GraspModels, GraspRecognizer, HandoverModel, RecognitionStream, RHandle,
                       Skeleton)
 
@@ -36,4 +37,5 @@ __all__ = [
     "fit_grasp_classifier", "fit_weighted_fpca", "fit_grasp_recognizer", "evaluate_early_recognition",
     "thesis_table", "table_5_1", "table_5_2", "table_5_3", "table_5_6", "table_5_7", "table_5_8",
     "rank_markers", "select_markers", "fit_handover", "reconstruct",
+    "hand_3d", "HandView",
 ]

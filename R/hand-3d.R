@@ -1,0 +1,227 @@
+# The interactive 3D hand: an htmlwidget (inst/htmlwidgets/hand3d.js, on
+# three.js vendored from the npm registry) that draws each recording as a
+# solid hand and plays it at its own rate. Forward kinematics is done here,
+# once; the page only places meshes, so a long recording stays smooth.
+
+#' An interactive 3D hand
+#'
+#' Draws one or more recordings as solid hands (bones as cylinders, joints
+#' as spheres, the palm as a surface, sized from the skeleton) that play at
+#' the recordings' real timing, in a page you can turn and zoom with the
+#' mouse (drag to orbit, wheel to zoom, right-drag to pan), with
+#' play/pause, a time slider and a playback speed. It is an
+#' [htmlwidget][htmlwidgets::htmlwidgets-package]: it shows in the RStudio or
+#' Positron viewer, in knitted HTML documents and in Shiny
+#' ([hand_3d_output()], [render_hand_3d()]), and
+#' [htmlwidgets::saveWidget()] writes it as a standalone page.
+#'
+#' @param x What to show: a [grasps()] object (its recordings, see
+#'   `recording`), one recording (a frames x DoF matrix of joint angles), or
+#'   a named list of these (for example `list(recorded = g[1], generated =
+#'   new[1])`), each element one hand.
+#' @param recording For a `grasps`, which recordings (indices or ids); by
+#'   default all of them. At most 8 hands are drawn.
+#' @param layout `"side"` puts the hands side by side; `"overlay"` draws
+#'   them on top of each other, each after the first in its own colour and
+#'   half transparent (recorded against generated, say).
+#' @param limits Colour the joints red in the frames where one of their
+#'   DoFs is outside the skeleton's joint limits ([dof_limits()]).
+#' @param markers Hand-over markers to draw on the hand as small spheres:
+#'   marker names from [hand_marker_set()] (for instance
+#'   [handpicked_markers()] or the markers a [fit_handover()] model uses), or
+#'   `NULL` for none.
+#' @param speed Initial playback speed (0.1, 0.25, 0.5, 1 or 2).
+#' @param autoplay,loop Start playing at once; start again at the end.
+#' @param rate Frames per second for matrix input (a `grasps` carries its
+#'   own).
+#' @param skeleton The [hand_skeleton()] that poses the hands.
+#' @param background Background colour of the scene.
+#' @param width,height Size of the widget (CSS units or pixels); `NULL` for
+#'   the htmlwidgets defaults.
+#' @param elementId Optional id of the widget's element.
+#' @param ... Passed to [forward_kinematics()] (`mapping`, `mode`,
+#'   `deactivate`).
+#' @return An htmlwidget of class `hand3d`.
+#' @seealso [animate_hand()] for a 2D page without WebGL,
+#'   [autoplot.hand_pose()] for still pictures.
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 1, grasps = c(2, 17), objects = 1, trials = 1, seed = 1)
+#' w <- hand_3d(g, limits = TRUE)
+#' w
+#' # recorded against generated, one on the other
+#' ms <- fit_grasp_models(simulate_grasps(subjects = 4, grasps = 17, seed = 1), seed = 1)
+#' hand_3d(list(recorded = g[2], generated = generate(ms, n = 1, seed = 2)), layout = "overlay")
+#' # a standalone page
+#' f <- tempfile(fileext = ".html")
+#' htmlwidgets::saveWidget(w, f, selfcontained = FALSE)
+hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits = FALSE, markers = NULL,
+                    speed = 1, autoplay = TRUE, loop = TRUE, rate = NULL, skeleton = hand_skeleton(),
+                    background = "#f7f7f5", width = NULL, height = NULL, elementId = NULL, ...) {
+  call <- rlang::caller_env()
+  check_skeleton(skeleton, call = call)
+  layout <- check_choice(layout, arg = "layout", call = call)
+  check_flag(limits, "limits", call = call)
+  check_flag(autoplay, "autoplay", call = call)
+  check_flag(loop, "loop", call = call)
+  speeds <- c(0.1, 0.25, 0.5, 1, 2)
+  if (!is.numeric(speed) || length(speed) != 1L || !speed %in% speeds) {
+    hm_abort("{.arg speed} must be one of {.val {speeds}}, not {.val {format(speed)}}.", "bad_input",
+             argument = "speed", call = call)
+  }
+  if (!is.character(background) || length(background) != 1L) {
+    hm_abort("{.arg background} must be one colour.", "bad_input", argument = "background", call = call)
+  }
+  hands <- hand_3d_inputs(x, recording, rate, call)
+  if (length(hands) > hand_3d_max) {
+    hm_abort(c("{length(hands)} hands are too many to show at once; at most {hand_3d_max}.",
+               i = "Pick some with {.arg recording} or subset {.arg x}."),
+             "bad_input", argument = "recording", call = call)
+  }
+  rates <- vapply(hands, `[[`, numeric(1), "rate")
+  if (length(unique(rates)) > 1L) {
+    hm_abort("The hands are recorded at different rates ({.val {unique(rates)}} Hz); resample them to one.",
+             "bad_input", argument = "x", call = call)
+  }
+  marker_set <- if (is.null(markers)) NULL else resolve_marker_set(markers, call = call)
+  joints <- skeleton$joints
+  pidx <- skeleton_parent_index(skeleton)
+  chains <- skeleton_chains(skeleton)
+  palette <- c("#4477aa", "#cc6677", "#228833", "#aa3377", "#66ccee", "#ccbb44", "#ee6677", "#bbbbbb")
+  recs <- lapply(seq_along(hands), function(i) {
+    h <- hands[[i]]
+    pos <- forward_kinematics(h$angles, skeleton, unit = h$unit, ...)
+    pos <- pos[, joints$name, , drop = FALSE]
+    list(label = h$label, n = dim(pos)[1],
+         colour = if (layout == "overlay" && i > 1L) palette[(i - 2L) %% length(palette) + 1L] else NULL,
+         opacity = if (layout == "overlay" && i > 1L) 0.5 else 1,
+         pos = round(as.vector(aperm(pos, c(3, 2, 1))), 2),
+         outside = if (limits) joint_limit_flags(h, joints$name, skeleton) else NULL,
+         markers = if (is.null(marker_set)) NULL else {
+           m <- place_markers(pos, marker_set, call = call)
+           round(as.vector(t(m)), 2)
+         },
+         extent = apply(pos, 3, range))
+  })
+  # side by side along the thumb's axis (skeleton x), a hand's width apart
+  width_mm <- max(vapply(recs, function(r) diff(r$extent[, 1]), numeric(1)))
+  for (i in seq_along(recs)) {
+    recs[[i]]$offset <- c(if (layout == "side") (i - 1) * 1.25 * width_mm else 0, 0, 0)
+    recs[[i]]$extent <- NULL
+  }
+  data <- list(joints = joints$name, parent = ifelse(is.na(pidx), -1L, pidx - 1L),
+               colour = unname(finger_colours[chains]),
+               radius = bone_radii(skeleton),
+               palm = match(intersect(palm_outline, joints$name), joints$name) - 1L,
+               rate = rates[[1]], speed = speed, autoplay = autoplay, loop = loop,
+               background = background, recordings = recs)
+  htmlwidgets::createWidget("hand3d", data, width = width, height = height, package = "handmotion",
+                            elementId = elementId,
+                            sizingPolicy = htmlwidgets::sizingPolicy(defaultWidth = 640, defaultHeight = 420,
+                                                                     browser.fill = TRUE, padding = 0))
+}
+
+hand_3d_max <- 8L
+
+# Each hand to draw: its angles, unit, rate and label, from a grasps object,
+# a matrix, or a named list of either.
+hand_3d_inputs <- function(x, recording, rate, call) {
+  from_grasps <- function(g, label_prefix = NULL, pick = NULL) {
+    idx <- if (is.null(pick)) seq_along(g) else resolve_recordings(g, pick, call)
+    lapply(idx, function(i) {
+      m <- g$meta[i, ]
+      lab <- paste0(m$id, if (!is.null(m$grasp) && !is.na(m$grasp)) paste0(" (", m$grasp, ")") else "")
+      if (!is.null(label_prefix)) lab <- paste0(label_prefix, ": ", lab)
+      list(angles = g$recordings[[i]], unit = g$unit, rate = g$rate, label = lab)
+    })
+  }
+  from_matrix <- function(m, label) {
+    if (!is.numeric(m) || !is.matrix(m) || is.null(colnames(m))) {
+      hm_abort("{.arg x} must hold recordings: numeric frames x DoF matrices with DoF column names.",
+               "bad_input", argument = "x", call = call)
+    }
+    r <- rate %||% 50
+    check_rate(r, call = call)
+    list(list(angles = m, unit = NULL, rate = r, label = label))
+  }
+  if (inherits(x, "grasps")) return(from_grasps(x, pick = recording))
+  if (is.matrix(x)) return(from_matrix(x, "recording"))
+  if (is.list(x) && length(x) && !is.null(names(x)) && all(nzchar(names(x)))) {
+    return(unlist(Map(function(el, nm) {
+      if (inherits(el, "grasps")) from_grasps(el, label_prefix = nm) else from_matrix(el, nm)
+    }, x, names(x)), recursive = FALSE))
+  }
+  hm_abort("{.arg x} must be a {.cls grasps} object, a recording matrix or a named list of them, not {.obj_type_friendly {x}}.",
+           "bad_input", argument = "x", call = call)
+}
+
+resolve_recordings <- function(g, pick, call) {
+  idx <- if (is.character(pick)) match(pick, g$meta$id) else pick
+  if (!is.numeric(idx) || !length(idx) || anyNA(idx) || any(idx < 1 | idx > length(g) | idx != round(idx))) {
+    hm_abort("{.arg recording} must pick recordings of {.arg x} by index (1 to {length(g)}) or id.",
+             "bad_input", argument = "recording", call = call)
+  }
+  as.integer(idx)
+}
+
+# Per frame and joint, 1 where a DoF turning that joint is outside its limit.
+joint_limit_flags <- function(h, joint_names, skeleton) {
+  dofs <- colnames(h$angles)
+  factor <- if (identical(h$unit, "rad")) 180 / pi else 1
+  lim <- tryCatch(dof_limits(dofs, factor, skeleton), handmotion_error = function(e) NULL)
+  n <- nrow(h$angles)
+  out <- matrix(0L, length(joint_names), n)
+  if (is.null(lim) || !nrow(lim)) return(as.vector(out))
+  X <- h$angles[, lim$col, drop = FALSE]
+  bad <- sweep(X, 2, lim$lo, "<") | sweep(X, 2, lim$hi, ">")
+  for (a in seq_len(nrow(lim))) {
+    j <- match(lim$joint[a], joint_names)
+    if (!is.na(j)) out[j, bad[, a]] <- 1L
+  }
+  as.vector(out)
+}
+
+# Bone radius at each joint (the bone from its parent), in mm: a share of
+# the hand's length (wrist to middle fingertip), thinner towards the tips.
+bone_radii <- function(skeleton) {
+  rest <- skeleton_rest_positions(skeleton)
+  pidx <- skeleton_parent_index(skeleton)
+  depth <- vapply(seq_along(pidx), function(j) {
+    d <- 0L
+    while (!is.na(pidx[j])) {
+      j <- pidx[j]
+      d <- d + 1L
+    }
+    d
+  }, integer(1))
+  hand_length <- max(sqrt(rowSums((rest - rep(rest[which(is.na(pidx))[1], ], each = nrow(rest)))^2)))
+  round(hand_length * 0.042 * pmax(0.6, 1 - 0.1 * pmax(depth - 1L, 0L)), 2)
+}
+
+#' Shiny bindings for the 3D hand
+#'
+#' @param outputId Output variable to read the widget from.
+#' @param width,height Size (CSS units).
+#' @param expr An expression that returns a [hand_3d()] widget.
+#' @param env The environment in which to evaluate `expr`.
+#' @param quoted Is `expr` a quoted expression?
+#' @return An output element (`hand_3d_output()`) or a render function
+#'   (`render_hand_3d()`) for a Shiny app.
+#' @export
+#' @examples
+#' if (interactive() && requireNamespace("shiny", quietly = TRUE)) {
+#'   g <- simulate_grasps(subjects = 1, grasps = 17, objects = 1, trials = 1, seed = 1)
+#'   shiny::shinyApp(hand_3d_output("hand"), function(input, output) {
+#'     output$hand <- render_hand_3d(hand_3d(g))
+#'   })
+#' }
+hand_3d_output <- function(outputId, width = "100%", height = "420px") {
+  htmlwidgets::shinyWidgetOutput(outputId, "hand3d", width, height, package = "handmotion")
+}
+
+#' @rdname hand_3d_output
+#' @export
+render_hand_3d <- function(expr, env = parent.frame(), quoted = FALSE) {
+  if (!quoted) expr <- substitute(expr)
+  htmlwidgets::shinyRenderWidget(expr, hand_3d_output, env, quoted = TRUE)
+}

@@ -1,0 +1,45 @@
+# A real browser for the pages the package writes: Debian's chromium,
+# headless, with software WebGL (SwiftShader). Virtual time makes the
+# page's clock run as fast as the page can compute, so "after 1.5 s of
+# playback" costs no wall-clock wait. Tests skip, saying why, where no
+# chromium is installed (tools/setup.sh installs it where it can).
+chromium_path <- function() {
+  for (p in c(Sys.getenv("HANDMOTION_CHROMIUM"), "chromium", "chromium-browser", "google-chrome")) {
+    if (nzchar(p) && nzchar(found <- Sys.which(p))) return(unname(found))
+  }
+  ""
+}
+
+skip_without_browser <- function() {
+  skip_on_cran()
+  if (!nzchar(chromium_path())) skip("no chromium: install it (tools/setup.sh does) to run the browser tests")
+}
+
+browser_args <- function(budget_ms) {
+  c("--headless=new", "--no-sandbox", "--disable-gpu-sandbox", "--use-angle=swiftshader",
+    "--enable-unsafe-swiftshader", "--hide-scrollbars", "--no-first-run", "--disable-extensions",
+    sprintf("--virtual-time-budget=%d", as.integer(budget_ms)))
+}
+
+# The page's DOM after `budget_ms` of virtual time.
+browser_dom <- function(file, budget_ms = 1000) {
+  out <- suppressWarnings(system2(chromium_path(), c(browser_args(budget_ms), "--dump-dom",
+                                                     shQuote(paste0("file://", normalizePath(file)))),
+                                  stdout = TRUE, stderr = FALSE))
+  paste(out, collapse = "\n")
+}
+
+# A screenshot (PNG path) of the page after `budget_ms` of virtual time.
+browser_screenshot <- function(file, budget_ms = 1000, size = c(800, 500)) {
+  png <- tempfile(fileext = ".png")
+  suppressWarnings(system2(chromium_path(), c(browser_args(budget_ms), sprintf("--window-size=%d,%d", size[1], size[2]),
+                                              paste0("--screenshot=", png),
+                                              shQuote(paste0("file://", normalizePath(file)))),
+                           stdout = FALSE, stderr = FALSE))
+  png
+}
+
+# Pixels of a PNG as an integer array (height x width x channels).
+png_pixels <- function(png) {
+  as.integer(magick::image_data(magick::image_read(png), channels = "rgb"))
+}

@@ -1,0 +1,94 @@
+test_that("the widget carries every frame's posed joints, at the recording's rate", {
+  g <- simulate_grasps(subjects = 1, grasps = c(2, 17), objects = 1, trials = 1, seed = 1)
+  w <- hand_3d(g)
+  expect_s3_class(w, c("hand3d", "htmlwidget"))
+  x <- w$x
+  expect_length(x$recordings, 2L)
+  expect_equal(x$rate, g$rate)
+  sk <- hand_skeleton()
+  J <- nrow(sk$joints)
+  r1 <- x$recordings[[1]]
+  expect_equal(r1$n, g$meta$n_frames[1])
+  pos <- forward_kinematics(g$recordings[[1]], sk, unit = g$unit)[, sk$joints$name, ]
+  # frame-major: frame f, joint j, coordinate c at ((f - 1) J + j - 1) 3 + c
+  back <- aperm(array(r1$pos, c(3, J, r1$n)), c(3, 2, 1))
+  expect_equal(back, unname(pos), tolerance = 0.006, ignore_attr = TRUE)
+  # side by side: the second hand is moved along x only
+  expect_equal(x$recordings[[1]]$offset, c(0, 0, 0))
+  expect_gt(x$recordings[[2]]$offset[1], 50)
+  expect_equal(x$recordings[[2]]$offset[2:3], c(0, 0))
+  # parents point at earlier joints, radii positive, palm outline found
+  expect_true(all(x$parent < seq_len(J) - 1L))
+  expect_true(all(x$radius > 0))
+  expect_length(x$palm, 6L)
+})
+
+test_that("joints are flagged exactly in the frames where a DoF breaks its limit", {
+  rec <- matrix(0, 10, 16, dimnames = list(NULL, hust_dofs$name))
+  lim <- dof_limits(hust_dofs$name)
+  pip <- lim[lim$dof == "PIP2", ]
+  rec[4:6, "PIP2"] <- pip$hi + 20
+  w <- hand_3d(rec, limits = TRUE, rate = 100)
+  x <- w$x
+  J <- length(x$joints)
+  flags <- matrix(x$recordings[[1]]$outside, J, 10)
+  j <- match(pip$joint, x$joints)
+  expect_equal(which(flags[j, ] == 1L), 4:6)
+  expect_equal(sum(flags), 3L)
+  expect_null(hand_3d(rec, rate = 100)$x$recordings[[1]]$outside)
+})
+
+test_that("overlay, markers and named lists", {
+  g <- simulate_grasps(subjects = 1, grasps = 17, objects = 1, trials = 2, seed = 1)
+  w <- hand_3d(list(recorded = g[1], generated = g[2]), layout = "overlay", markers = handpicked_markers())
+  r <- w$x$recordings
+  expect_equal(vapply(r, `[[`, character(1), "label"),
+               paste0(c("recorded: ", "generated: "), g$meta$id, " (Index Finger Extension)"))
+  expect_null(r[[1]]$colour)
+  expect_false(is.null(r[[2]]$colour))
+  expect_equal(r[[2]]$opacity, 0.5)
+  expect_equal(r[[2]]$offset, c(0, 0, 0))
+  # six markers per frame, where markers_from_angles() puts them
+  m <- markers_from_angles(g$recordings[[1]], markers = handpicked_markers())
+  expect_length(r[[1]]$markers, length(m))
+  expect_equal(r[[1]]$markers[1:3], unname(m[1, 1:3]), tolerance = 0.006)
+})
+
+test_that("bad arguments give classed errors", {
+  g <- simulate_grasps(subjects = 1, grasps = 1:3, objects = 1, trials = 3, seed = 1)
+  expect_error(hand_3d(g), "too many", class = "handmotion_error_bad_input")
+  expect_error(hand_3d(g, recording = 99), class = "handmotion_error_bad_input")
+  expect_error(hand_3d(g, recording = 1, speed = 3), class = "handmotion_error_bad_input")
+  expect_error(hand_3d(g, recording = 1, layout = "stacked"), class = "handmotion_error_bad_input")
+  expect_error(hand_3d("hand"), class = "handmotion_error_bad_input")
+  expect_error(hand_3d(list(a = g[1], b = matrix(1, 2, 2))), class = "handmotion_error_bad_input")
+  g2 <- g[1]
+  g2$rate <- 100
+  expect_error(hand_3d(list(a = g[1], b = g2)), "different rates", class = "handmotion_error_bad_input")
+})
+
+test_that("the widget page draws a hand that moves, without script errors, in a real browser", {
+  skip_without_browser()
+  skip_if_not_installed("magick")
+  g <- simulate_grasps(subjects = 1, grasps = 17, objects = 1, trials = 1, seed = 1)
+  page <- file.path(withr::local_tempdir(), "hand.html")
+  w <- hand_3d(g, limits = TRUE, markers = handpicked_markers(), loop = FALSE)
+  htmlwidgets::saveWidget(w, page, selfcontained = FALSE)
+  n <- g$meta$n_frames[1]
+  dom <- browser_dom(page, 1000 * n / g$rate + 500)
+  expect_match(dom, 'data-ready="1"', fixed = TRUE)
+  expect_no_match(dom, "data-js-error", fixed = TRUE)
+  # playback follows the page's clock at the recording's rate: once the
+  # recording's duration has passed, it rests on its last frame
+  frame <- as.integer(sub('.*data-frame="([0-9]+)".*', "\\1", dom))
+  expect_equal(frame, n - 1L)
+  early <- png_pixels(browser_screenshot(page, 100))
+  late <- png_pixels(browser_screenshot(page, 1000 * n / g$rate))
+  # the canvas is drawn: many pixels differ from the background (#f7f7f5)
+  bg <- c(0xf7, 0xf7, 0xf5)
+  drawn <- rowSums(abs(sweep(matrix(early, ncol = 3), 2, bg))) > 30
+  expect_gt(mean(drawn), 0.02)
+  # and the hand moves between the two moments
+  moved <- rowSums(abs(matrix(early, ncol = 3) - matrix(late, ncol = 3))) > 30
+  expect_gt(sum(moved), 500)
+})
