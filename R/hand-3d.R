@@ -181,21 +181,11 @@ joint_limit_flags <- function(h, joint_names, skeleton) {
   as.vector(out)
 }
 
-# Bone radius at each joint (the bone from its parent), in mm: a share of
-# the hand's length (wrist to middle fingertip), thinner towards the tips.
+# Bone radius at each joint (the bone from its parent), in mm: the rule of
+# the still pictures (bone_radius_rule()), from the skeleton's rest pose.
 bone_radii <- function(skeleton) {
-  rest <- skeleton_rest_positions(skeleton)
-  pidx <- skeleton_parent_index(skeleton)
-  depth <- vapply(seq_along(pidx), function(j) {
-    d <- 0L
-    while (!is.na(pidx[j])) {
-      j <- pidx[j]
-      d <- d + 1L
-    }
-    d
-  }, integer(1))
-  hand_length <- max(sqrt(rowSums((rest - rep(rest[which(is.na(pidx))[1], ], each = nrow(rest)))^2)))
-  round(hand_length * 0.042 * pmax(0.6, 1 - 0.1 * pmax(depth - 1L, 0L)), 2)
+  r <- pose_radii(skeleton_rest_pose(skeleton))
+  round(unname(r[skeleton$joints$name]), 2)
 }
 
 #' Shiny bindings for the 3D hand

@@ -194,25 +194,24 @@ pose_palm <- function(pr) {
 }
 
 # Layers shared by every hand drawing (autoplot.hand_pose, plot_pose_grid,
-# plot_frame_strip, plot_marker_sets): palm, bones in depth order, joints,
-# one colour per finger with a legend naming the fingers.
-pose_layers <- function(pr, linewidth = 1.4, size = 1.6, legend = TRUE, strip_size = 8) {
-  bones <- pose_bones(pr)
-  palm <- pose_palm(pr)
+# plot_frame_strip, plot_marker_sets): the solid hands (R/plot-hand-solid.R),
+# then the joints as invisible points that carry the finger legend (and the
+# pose data for anyone reading the plot's layers).
+pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 8) {
+  solid <- solid_hand_polygons(pr, scale)
   fingers <- intersect(names(finger_labels), unique(pr$finger))
   list(
-    if (nrow(palm)) {
-      ggplot2::geom_polygon(data = palm, ggplot2::aes(x = .data$sx, y = .data$sy, group = .data$hand),
-                            fill = "grey90", colour = "grey70", linewidth = 0.3)
-    },
-    ggplot2::geom_segment(data = bones, ggplot2::aes(x = .data$sx, y = .data$sy, xend = .data$sxend,
-                                                    yend = .data$syend, colour = .data$finger),
-                          linewidth = linewidth, lineend = "round"),
+    ggplot2::geom_polygon(data = solid, ggplot2::aes(x = .data$px, y = .data$py, group = .data$draw,
+                                                     fill = .data$fill),
+                          colour = "grey25", linewidth = 0.12),
+    ggplot2::scale_fill_identity(),
+    # the legend names the fingers (the polygons' colours are shaded by depth)
     ggplot2::geom_point(data = pr, ggplot2::aes(x = .data$sx, y = .data$sy, colour = .data$finger),
-                        size = size, show.legend = FALSE),
+                        alpha = 0, size = 0.1),
     ggplot2::scale_colour_manual(values = finger_colours, breaks = fingers,
                                  labels = finger_labels[fingers], name = NULL,
-                                 guide = if (legend) "legend" else "none"),
+                                 guide = if (legend) ggplot2::guide_legend(
+                                   override.aes = list(alpha = 1, size = 3.2)) else "none"),
     ggplot2::coord_equal(),
     ggplot2::theme_void(),
     ggplot2::theme(strip.text = ggplot2::element_text(size = strip_size, margin = ggplot2::margin(2, 2, 2, 2)),
@@ -345,7 +344,7 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     labels$sy <- min(pr$sy) - 0.08 * diff(range(pr$sy))
     subtitle <- paste0(paste(levels(pr$set), collapse = " | "), "; ", subtitle)
   }
-  g <- ggplot2::ggplot() + pose_layers(pr, linewidth = 0.9, size = 0.6, strip_size = 7) +
+  g <- ggplot2::ggplot() + pose_layers(pr, strip_size = 7) +
     ggplot2::labs(title = title, subtitle = subtitle) +
     ggplot2::facet_wrap(~group, labeller = ggplot2::label_wrap_gen(18), drop = FALSE)
   if (!is.null(labels)) {

@@ -47,10 +47,12 @@ plot_marker_sets <- function(sets = list(`full set (13)` = hand_marker_set()$mar
   marks$panel <- factor(marks$id, levels = names(sets))
   g <- ggplot2::autoplot(pose_all, view = view)
   # autoplot.hand_pose facets by `panel` built from the ids in set order
-  g + ggplot2::geom_point(data = marks, ggplot2::aes(x = .data$sx, y = .data$sy, fill = .data$selected),
-                          shape = 21, size = 3, colour = "black", stroke = 0.6) +
-    ggplot2::scale_fill_manual(values = c(`TRUE` = "black", `FALSE` = "white"),
-                               labels = c(`TRUE` = "recorded", `FALSE` = "not recorded"), name = NULL) +
+  # (fill is the hand's own, shaded by depth: the markers use shape)
+  marks$recorded <- factor(ifelse(marks$selected, "recorded", "not recorded"),
+                           levels = c("recorded", "not recorded"))
+  g + ggplot2::geom_point(data = marks, ggplot2::aes(x = .data$sx, y = .data$sy, shape = .data$recorded),
+                          size = 3, colour = "black", fill = "white", stroke = 0.6) +
+    ggplot2::scale_shape_manual(values = c(recorded = 16, `not recorded` = 21), name = NULL) +
     ggplot2::theme(legend.position = "bottom")
 }
 

@@ -114,7 +114,7 @@ plot_frame_strip <- function(x, recording = 1L, n_frames = 6L, skeleton = hand_s
   p$id <- paste(p$set, p$id)
   pr <- project_pose(p, view, call)
   grasp <- unique(stats::na.omit(as.character(p$grasp)))
-  g <- ggplot2::ggplot() + pose_layers(pr, linewidth = 1, size = 0.8) +
+  g <- ggplot2::ggplot() + pose_layers(pr) +
     ggplot2::labs(title = if (length(grasp) == 1L) grasp else NULL,
                   subtitle = paste0("columns: fraction of each recording's duration\n", view_label(view)))
   if (length(sets) > 1L) {

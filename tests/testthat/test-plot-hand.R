@@ -28,9 +28,15 @@ test_that("autoplot draws one bone per non-root joint and one panel per frame", 
   x <- hust(3)
   x[, "PIP3"] <- c(0, 45, 90)
   p <- ggplot2::autoplot(hand_pose(x, frame = 1:3), view = "radial")
-  expect_equal(nrow(geom_data(p, "GeomSegment")), 3L * 24L)
+  solid <- p$layers[[1]]$data
+  pieces <- unique(solid[c("frame", "piece", "kind")])
+  expect_equal(sum(pieces$kind == "bone"), 3L * 24L)     # a capsule per bone
+  expect_equal(sum(pieces$kind == "palm"), 3L)
   expect_equal(nrow(geom_data(p, "GeomPoint")), 3L * 25L)
-  expect_equal(length(unique(geom_data(p, "GeomSegment")$PANEL)), 3L)
+  expect_equal(length(unique(geom_data(p, "GeomPolygon")$PANEL)), 3L)
+  # drawn back to front: the drawing order follows depth
+  first <- solid[!duplicated(solid$draw) & solid$kind == "bone", ]
+  expect_false(is.unsorted(first$order_depth[order(first$draw)]))
 })
 
 test_that("views project as documented", {
@@ -57,14 +63,15 @@ test_that("plot_pose_grid() draws one panel per group and set", {
   bent <- hust(5, 60)
   g <- grasps(list(flat, bent, bent), meta = data.frame(grasp = c(1, 2, 2)))
   p <- plot_pose_grid(g)
-  expect_equal(length(unique(geom_data(p, "GeomSegment")$PANEL)), 2L)
-  expect_equal(nrow(geom_data(p, "GeomSegment")), 2L * 24L)      # one recording per type
+  expect_equal(length(unique(geom_data(p, "GeomPolygon")$PANEL)), 2L)
+  bones <- unique(p$layers[[1]]$data[p$layers[[1]]$data$kind == "bone", c("id", "piece")])
+  expect_equal(nrow(bones), 2L * 24L)      # one recording per type
   gg <- plot_pose_grid(list(recorded = g, generated = g[2:3]), view = "radial")
   b <- ggplot2::ggplot_build(gg)
   expect_equal(nrow(b$layout$layout), 2L)        # one panel per type, sets side by side
   # in each panel the generated hand stands right of the recorded one, without overlap
   pts <- geom_data(gg, "GeomPoint", b)
-  pts$set <- gg$layers[[3]]$data$set
+  pts$set <- gg$layers[[2]]$data$set
   type2 <- pts[pts$PANEL == 2, ]
   expect_gt(min(type2$x[type2$set == "generated"]), max(type2$x[type2$set == "recorded"]))
   # each hand is named underneath

@@ -34,7 +34,7 @@ test_that("plot_frame_strip draws each set at the same fractions of its own dura
   b <- grasps(list(strip_recording(41)), meta = data.frame(grasp = "Tripod"))
   p <- plot_frame_strip(list(recorded = a, generated = b), n_frames = 5)
   built <- ggplot2::ggplot_build(p)
-  pts <- p$layers[[3]]$data
+  pts <- p$layers[[2]]$data
   expect_equal(levels(pts$time), c("0%", "25%", "50%", "75%", "100%"))
   expect_setequal(unique(pts$frame[pts$set == "recorded"]), c(1, 6, 11, 16, 21))
   expect_setequal(unique(pts$frame[pts$set == "generated"]), c(1, 11, 21, 31, 41))
@@ -52,12 +52,12 @@ test_that("plot_frame_strip picks recordings by index or id and checks its argum
   g <- grasps(list(strip_recording(11), strip_recording(21)),
               meta = data.frame(id = c("a", "b"), grasp = c("Tripod", "Tripod")))
   p <- plot_frame_strip(g, recording = "b", n_frames = 3)
-  expect_equal(sort(unique(p$layers[[3]]$data$frame)), c(1, 11, 21))
+  expect_equal(sort(unique(p$layers[[2]]$data$frame)), c(1, 11, 21))
   p2 <- plot_frame_strip(g, recording = 1, n_frames = 3)
-  expect_equal(sort(unique(p2$layers[[3]]$data$frame)), c(1, 6, 11))
+  expect_equal(sort(unique(p2$layers[[2]]$data$frame)), c(1, 6, 11))
   # a recording shorter than n_frames keeps each frame once
   short <- grasps(list(strip_recording(3)), meta = data.frame(grasp = "Tripod"))
-  expect_equal(sort(unique(plot_frame_strip(short, n_frames = 6)$layers[[3]]$data$frame)), 1:3)
+  expect_equal(sort(unique(plot_frame_strip(short, n_frames = 6)$layers[[2]]$data$frame)), 1:3)
   expect_error(plot_frame_strip(g, recording = "zz"), class = "handmotion_error_bad_input")
   expect_error(plot_frame_strip(g, recording = 3), class = "handmotion_error_bad_input")
   expect_error(plot_frame_strip(g, n_frames = 1), class = "handmotion_error_bad_input")
