@@ -9,7 +9,7 @@ export HANDMOTION_SHARED ?= $(abspath ../shared)
 # snapshot tests run outside CRAN
 export NOT_CRAN ?= true
 
-.PHONY: setup demo test test-r test-python check bench bench-quick docs clean
+.PHONY: setup demo test test-r test-python check bench bench-quick docs site clean
 
 setup:
 	bash tools/setup.sh
@@ -30,6 +30,10 @@ test-python:
 ## R CMD build + R CMD check --no-manual, failing on errors or warnings
 check: setup
 	bash tools/check.sh
+
+## The documentation site (pkgdown) into site/, then opened in headless chromium
+site: setup
+	bash tools/site.sh
 
 ## Benchmarks (bench/README.md): figures and ratios printed and appended to bench/results/*.csv
 bench: setup

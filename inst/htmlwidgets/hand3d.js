@@ -18,7 +18,10 @@
   "use strict";
 
   window.addEventListener("error", function (e) {
-    if (document.body) document.body.setAttribute("data-js-error", String(e.message || e));
+    if (!document.body) return;
+    var where = e.filename ? " @ " + e.filename + ":" + e.lineno : "";
+    var seen = document.body.getAttribute("data-js-error");
+    document.body.setAttribute("data-js-error", (seen ? seen + " | " : "") + String(e.message || e) + where);
   });
 
   var UP = new THREE.Vector3(0, 1, 0);

@@ -21,20 +21,22 @@ browser_args <- function(budget_ms) {
     sprintf("--virtual-time-budget=%d", as.integer(budget_ms)))
 }
 
+# A page to open: a URL as it is, a file as a file:// URL.
+page_url <- function(page) if (grepl("^https?://", page)) page else paste0("file://", normalizePath(page))
+
 # The page's DOM after `budget_ms` of virtual time.
-browser_dom <- function(file, budget_ms = 1000) {
-  out <- suppressWarnings(system2(chromium_path(), c(browser_args(budget_ms), "--dump-dom",
-                                                     shQuote(paste0("file://", normalizePath(file)))),
+browser_dom <- function(page, budget_ms = 1000) {
+  out <- suppressWarnings(system2(chromium_path(), c(browser_args(budget_ms), "--dump-dom", shQuote(page_url(page))),
                                   stdout = TRUE, stderr = FALSE))
   paste(out, collapse = "\n")
 }
 
 # A screenshot (PNG path) of the page after `budget_ms` of virtual time.
-browser_screenshot <- function(file, budget_ms = 1000, size = c(800, 500)) {
+browser_screenshot <- function(page, budget_ms = 1000, size = c(800, 500)) {
   png <- tempfile(fileext = ".png")
   suppressWarnings(system2(chromium_path(), c(browser_args(budget_ms), sprintf("--window-size=%d,%d", size[1], size[2]),
                                               paste0("--screenshot=", png),
-                                              shQuote(paste0("file://", normalizePath(file)))),
+                                              shQuote(page_url(page))),
                            stdout = FALSE, stderr = FALSE))
   png
 }

@@ -53,6 +53,8 @@ test_that("the report renders on a tiny design with its tables and figures", {
   # self-contained: the figures are embedded, not linked
   expect_gt(lengths(regmatches(page, gregexpr("data:image/png;base64", page, fixed = TRUE))), 10)
   expect_false(has("Error in "))
+  # the 3D viewer is in the page (recorded against generated)
+  expect_true(has('class="hand3d html-widget'))
   # Figure 5.1's Medium Wrap is not in this design: the report says what it drew instead
   expect_true(has("the thesis used Medium Wrap, which is not in this design"))
 

@@ -1,0 +1,59 @@
+# Opens the built site in headless chromium, served over HTTP (so a script
+# error names its file): the pages exist, and the pages with the 3D viewer
+# draw every widget, with pixels on the canvas and no script error from the
+# widget (three.js, htmlwidgets, hand3d.js). pkgdown's page template loads
+# some scripts from CDNs; offline those fail and its own pkgdown.js then
+# errors: such errors are listed, not counted against the widget. Uses the
+# browser helpers of the test suite (one copy).
+args <- commandArgs(trailingOnly = TRUE)
+site <- normalizePath(if (length(args)) args[1] else "site")
+source("tests/testthat/helper-browser.R")
+pages <- c("index.html", "reference/index.html", "articles/index.html", "news/index.html",
+           "articles/looking-at-hands.html", "reference/hand_3d.html", "articles/reproduce-thesis.html")
+missing <- pages[!file.exists(file.path(site, pages))]
+if (length(missing)) stop("site: missing pages: ", paste(missing, collapse = ", "))
+# every image a page refers to exists
+for (pg in pages) {
+  html <- paste(readLines(file.path(site, pg), warn = FALSE), collapse = "\n")
+  src <- regmatches(html, gregexpr('<img src="[^"]+"', html))[[1]]
+  src <- sub('^<img src="([^"]+)"$', "\\1", src)
+  src <- src[!grepl("^(data:|https?:)", src)]
+  lost <- src[!file.exists(file.path(dirname(file.path(site, pg)), src))]
+  if (length(lost)) stop("site: ", pg, " refers to missing images: ", paste(utils::head(lost, 3), collapse = ", "))
+}
+if (!nzchar(chromium_path())) {
+  message("site: no chromium here; the pages were built but not opened in a browser")
+  quit(status = 0)
+}
+port <- 8700L + sample.int(200L, 1L)
+server <- processx_free <- NULL
+server <- system2("python3", c("-m", "http.server", port, "--bind", "127.0.0.1", "--directory", shQuote(site)),
+                  wait = FALSE, stdout = FALSE, stderr = FALSE)
+Sys.sleep(1.5)
+on.exit(system(sprintf("pkill -f 'http.server %d'", port)), add = TRUE)
+base <- sprintf("http://127.0.0.1:%d/", port)
+widget_error <- function(err) {
+  # errors of the widget's own scripts, or of scripts we cannot name
+  !grepl("@ https?://127\\.0\\.0\\.1:[0-9]+/(pkgdown\\.js|deps/)", err)
+}
+check_widgets <- function(page, expected) {
+  dom <- browser_dom(paste0(base, page), 2500)
+  ready <- lengths(regmatches(dom, gregexpr('data-ready="1"', dom, fixed = TRUE)))
+  errs <- if (grepl("data-js-error", dom, fixed = TRUE)) {
+    strsplit(sub('.*data-js-error="([^"]*)".*', "\\1", dom), " | ", fixed = TRUE)[[1]]
+  } else character()
+  ours <- errs[widget_error(errs)]
+  if (length(errs) > length(ours)) {
+    message("site: ", page, ": page-template errors (CDN scripts unreachable offline): ",
+            paste(setdiff(errs, ours), collapse = "; "))
+  }
+  if (length(ours)) stop("site: script error in ", page, ": ", paste(ours, collapse = "; "))
+  if (ready < expected) stop(sprintf("site: %s drew %d of %d 3D widgets", page, ready, expected))
+  px <- matrix(png_pixels(browser_screenshot(paste0(base, page), 2500, c(1000, 1400))), ncol = 3)
+  varied <- mean(rowSums(abs(sweep(px, 2, px[1, ]))) > 30)
+  if (varied < 0.02) stop("site: ", page, " looks blank in the browser")
+  message(sprintf("site: %s: %d 3D widget(s) drawn, no widget script errors", page, ready))
+}
+check_widgets("articles/looking-at-hands.html", 2L)
+check_widgets("reference/hand_3d.html", 2L)
+message("site: ok")

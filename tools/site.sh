@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# The documentation site: pkgdown builds the README as home page, the
+# reference grouped by task (_pkgdown.yml) and the vignettes as articles into
+# site/; then tools/check-site.R opens it in headless chromium (the 3D widget
+# must draw without script errors). The reproduce-thesis article runs on a
+# small design here, as in R CMD check; `make demo` renders the full report.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export HANDMOTION_REPORT_SUBJECTS="${HANDMOTION_REPORT_SUBJECTS:-6}"
+export HANDMOTION_REPORT_GRASPS="${HANDMOTION_REPORT_GRASPS:-9,17,22,25,29}"
+export HANDMOTION_REPORT_FOLDS="${HANDMOTION_REPORT_FOLDS:-3}"
+export NOT_CRAN="${NOT_CRAN:-true}"
+start=$(date +%s)
+Rscript -e 'pkgdown::build_site(preview = FALSE, install = FALSE, new_process = FALSE)'
+echo "site: built in $(( $(date +%s) - start )) s"
+Rscript tools/check-site.R site
