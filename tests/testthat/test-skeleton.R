@@ -128,6 +128,7 @@ test_that("print and autoplot of a skeleton", {
   p <- ggplot2::autoplot(hand_skeleton(), labels = FALSE)
   b <- ggplot2::ggplot_build(p)
   geoms <- vapply(p$layers, function(l) class(l$geom)[1], character(1))
-  expect_equal(nrow(b$data[[which(geoms == "GeomSegment")[1]]]), 24L)   # bones
+  solid <- p$layers[[which(geoms == "GeomPolygon")[1]]]$data
+  expect_equal(length(unique(solid$piece[solid$kind == "bone"])), 24L)   # a capsule per bone
   expect_equal(nrow(b$data[[which(geoms == "GeomPoint")[1]]]), 25L)     # joints
 })
