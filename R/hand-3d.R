@@ -25,7 +25,8 @@
 #'   them on top of each other, each after the first in its own colour and
 #'   half transparent (recorded against generated, say).
 #' @param limits Colour the joints red in the frames where one of their
-#'   DoFs is outside the skeleton's joint limits ([dof_limits()]).
+#'   DoFs is outside the skeleton's joint limits (the limits of its
+#'   `.xmlskel` joints, see [hand_skeleton()]).
 #' @param markers Hand-over markers to draw on the hand as small spheres:
 #'   marker names from [hand_marker_set()] (for instance
 #'   [handpicked_markers()] or the markers a [fit_handover()] model uses), or

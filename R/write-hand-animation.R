@@ -117,7 +117,7 @@ write_hand_animation <- function(x, file, recording = 1L, view = "oblique", widt
                                 size = 3, colour = "grey30")
   }
   g <- g + ggplot2::labs(title = title, subtitle = paste0("{current_frame}; ", view_label(view))) +
-    gganimate::transition_manual(time)
+    gganimate::transition_manual(!!rlang::sym("time"))
   renderer <- if (format == "gif") gganimate::magick_renderer(loop = TRUE) else
     gganimate::ffmpeg_renderer(format = "mp4")
   anim <- gganimate::animate(g, nframes = ticks, fps = fps, width = width, height = height,
