@@ -13,17 +13,8 @@ import numpy as np
 
 from ._bridge import call, r, r_array, r_to_py
 from .errors import BadInputError
-from .grasps import Grasps
+from .grasps import Grasps, as_grasps as _as_grasps
 from .handles import GraspClassifier, GraspRecognizer, GraspModels, HandoverModel, RHandle, Skeleton
-
-
-def _as_grasps(x, arg="x"):
-    if isinstance(x, Grasps):
-        return x
-    if isinstance(x, np.ndarray) or isinstance(x, (list, tuple)):
-        return Grasps(x)
-    raise BadInputError(f"{arg} must be a handmotion.Grasps (or a list of frames x DoF arrays), "
-                        f"not {type(x).__name__}")
 
 
 def _check_count(value, name, minimum=1):

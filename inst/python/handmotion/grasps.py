@@ -236,3 +236,15 @@ def _default_dofs(p):
     from ._bridge import r
     ro = r()
     return [str(d) for d in ro.r("function(p) handmotion:::resolve_dofs(NULL, list(matrix(0, 1, p)))")(int(p))]
+
+
+def as_grasps(x, arg="x"):
+    """``x`` as a :class:`Grasps`: a Grasps as it is, a frames x DoF array or a list
+    of them converted; anything else is a :class:`BadInputError` naming ``arg``.
+    The one conversion every function of the package uses."""
+    if isinstance(x, Grasps):
+        return x
+    if isinstance(x, np.ndarray) or isinstance(x, (list, tuple)):
+        return Grasps(x)
+    raise BadInputError(f"{arg} must be a handmotion.Grasps (or a list of frames x DoF arrays), "
+                        f"not {type(x).__name__}")

@@ -1,6 +1,7 @@
 """Thin Python handles around R objects that have no natural Python form."""
 
 from ._bridge import call, r, r_to_py
+from .grasps import as_grasps as _as_grasps
 
 
 class RHandle:
@@ -63,12 +64,6 @@ class Skeleton(RHandle):
 
 class HandoverModel(RHandle):
     """A sparse-marker reconstruction model (R class ``handover_model``)."""
-
-
-def _as_grasps(x):
-    # api's check (imported here: api imports this module)
-    from .api import _as_grasps
-    return _as_grasps(x)
 
 
 def _labelled_matrix(mat):

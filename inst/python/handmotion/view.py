@@ -6,7 +6,7 @@ import os
 import tempfile
 
 from ._bridge import call, r
-from .api import _as_grasps
+from .grasps import as_grasps as _as_grasps
 from .errors import BadInputError
 
 
