@@ -145,15 +145,24 @@ hand_3d_inputs <- function(x, recording, rate, call) {
     check_rate(r, call = call)
     list(list(angles = m, unit = NULL, rate = r, label = label))
   }
-  if (inherits(x, "grasps")) return(from_grasps(x, pick = recording))
-  if (is.matrix(x)) return(from_matrix(x, "recording"))
-  if (is.list(x) && length(x) && !is.null(names(x)) && all(nzchar(names(x)))) {
-    return(unlist(Map(function(el, nm) {
+  hands <- if (inherits(x, "grasps")) {
+    from_grasps(x, pick = recording)
+  } else if (is.matrix(x)) {
+    from_matrix(x, "recording")
+  } else if (is.list(x) && length(x) && !is.null(names(x)) && all(nzchar(names(x)))) {
+    unlist(Map(function(el, nm) {
       if (inherits(el, "grasps")) from_grasps(el, label_prefix = nm) else from_matrix(el, nm)
-    }, x, names(x)), recursive = FALSE))
+    }, x, names(x)), recursive = FALSE)
+  } else {
+    hm_abort("{.arg x} must be a {.cls grasps} object, a recording matrix or a named list of them, not {.obj_type_friendly {x}}.",
+             "bad_input", argument = "x", call = call)
   }
-  hm_abort("{.arg x} must be a {.cls grasps} object, a recording matrix or a named list of them, not {.obj_type_friendly {x}}.",
-           "bad_input", argument = "x", call = call)
+  if (!length(hands)) hm_abort("There is no recording to show.", "bad_recording", argument = "x", call = call)
+  empty <- vapply(hands, function(h) h$label, character(1))[vapply(hands, function(h) nrow(h$angles) == 0L, logical(1))]
+  if (length(empty)) {
+    hm_abort("There is no frame to show in {.val {empty}}.", "bad_recording", argument = "x", call = call)
+  }
+  hands
 }
 
 resolve_recordings <- function(g, pick, call) {

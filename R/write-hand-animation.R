@@ -77,6 +77,10 @@ write_hand_animation <- function(x, file, recording = 1L, view = "oblique", widt
              "bad_input", argument = "x", call = call)
   }
   n_max <- max(vapply(hands, function(h) nrow(h$angles), integer(1)))
+  if (n_max < 2L) {
+    hm_abort("A video needs recordings of two or more frames; draw a single frame with {.code autoplot(hand_pose(x))}.",
+             "bad_recording", argument = "x", call = call)
+  }
   timing <- video_timing(n_max, rates, max_frames, format)
   ticks <- timing$frames
   fps <- timing$fps

@@ -61,6 +61,8 @@ test_that("bad arguments give classed errors", {
   expect_error(hand_3d(g, recording = 1, speed = 3), class = "handmotion_error_bad_input")
   expect_error(hand_3d(g, recording = 1, layout = "stacked"), class = "handmotion_error_bad_input")
   expect_error(hand_3d("hand"), class = "handmotion_error_bad_input")
+  empty <- matrix(0, 0, 16, dimnames = list(NULL, hust_dofs$name))
+  expect_error(hand_3d(list(none = empty)), "none", class = "handmotion_error_bad_recording")
   expect_error(hand_3d(list(a = g[1], b = matrix(1, 2, 2))), class = "handmotion_error_bad_input")
   g2 <- g[1]
   g2$rate <- 100

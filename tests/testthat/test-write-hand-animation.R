@@ -49,4 +49,6 @@ test_that("bad arguments give classed errors", {
   expect_error(write_hand_animation(rec, "hand.gif", width = 0), class = "handmotion_error_bad_input")
   expect_error(write_hand_animation(rec, "hand.gif", max_frames = 1), class = "handmotion_error_bad_input")
   expect_error(write_hand_animation("x", "hand.gif"), class = "handmotion_error_bad_input")
+  expect_error(write_hand_animation(rec[1, , drop = FALSE], "hand.gif"), "two or more frames",
+               class = "handmotion_error_bad_recording")
 })
