@@ -64,13 +64,23 @@
 #'   `seq(0, 1, length.out = L)` for a matrix (the thesis' normalised time).
 #' @param ncomp Number of components to keep.
 #' @param engine `"fast"` (default) or `"reference"` ([fda.usc::fdata2pc()]).
+#' @param scores How scores (and projections, residual norms) integrate:
+#'   `"trapezoid"` (default) is fda.usc's trapezoidal rule, as the thesis
+#'   computed them. The components are orthonormal under the uniform rule,
+#'   not the trapezoidal one, so trapezoidal scores of different components
+#'   are correlated and `mean + components %*% scores` misses part of a
+#'   curve's end points (where grasp curves vary most: the final posture).
+#'   `"least_squares"` integrates with the uniform weight `delta^2`: each
+#'   score is then the least-squares coefficient of the curve on its
+#'   component and the reconstruction is the curve's orthogonal projection.
 #' @return An object of class `fpca_fit`: a list with `mean` (length `L`),
 #'   `components` (`L x ncomp`), `scores` (`n x ncomp`), `eigenvalues` (all
 #'   non-zero eigenvalues of the covariance operator, decreasing),
 #'   `var_explained` (proportion of the total variance for each kept
-#'   component), `argvals`, `weights` (the trapezoidal quadrature weights used
-#'   for inner products and norms), `delta`, `rangeval`, `n`, `ncomp`,
-#'   `engine` and `notes` (character vector of recorded special cases).
+#'   component), `argvals`, `weights` (the quadrature weights used for inner
+#'   products and norms, by `score_rule`), `delta`, `rangeval`, `n`, `ncomp`,
+#'   `engine`, `score_rule` (`scores`) and `notes` (character vector of
+#'   recorded special cases).
 #' @seealso `fpca_project()`, `fpca_reconstruct()`, `fpca_residual_norm()`.
 #' @noRd
 #' @examples
@@ -79,9 +89,11 @@
 #' fit <- fpca_fit(Y, argvals = t, ncomp = 2)
 #' fit
 #' head(fit$scores)
-fpca_fit <- function(Y, argvals = NULL, ncomp = 2, engine = c("fast", "reference")) {
+fpca_fit <- function(Y, argvals = NULL, ncomp = 2, engine = c("fast", "reference"),
+                     scores = c("trapezoid", "least_squares")) {
   call <- rlang::caller_env()
   engine <- check_choice(engine, arg = "engine", call = rlang::current_env())
+  scores <- check_choice(scores, arg = "scores", call = rlang::current_env())
   cur <- fpca_curves(Y, argvals, call = call)
   # (more components than grid points are padded with zero components; the
   # bound only refuses absurd requests)
@@ -89,11 +101,12 @@ fpca_fit <- function(Y, argvals = NULL, ncomp = 2, engine = c("fast", "reference
   mean <- colMeans(cur$Y)
   Yc <- cur$Y - rep(mean, each = nrow(cur$Y))
   delta <- fpca_delta(cur$argvals, cur$rangeval)
-  weights <- trapezoid_weights(cur$argvals)
+  weights <- fpca_weights(cur$argvals, delta, scores)
   raw <- switch(engine,
     fast = fpca_engine_fast(Yc, ncomp),
     reference = fpca_engine_reference(cur, ncomp, call = call))
-  fit <- fpca_finish(raw, Yc, cur, mean, ncomp, delta, weights)
+  if (scores == "least_squares") raw$scores <- NULL  # fdata2pc's own are trapezoidal
+  fit <- fpca_finish(raw, Yc, cur, mean, ncomp, delta, weights, scores)
   fit$engine <- engine
   fit
 }
@@ -119,6 +132,15 @@ fpca_curves <- function(Y, argvals, arg = "Y", call = rlang::caller_env()) {
   if (is.null(rangeval)) rangeval <- range(argvals)
   storage.mode(Y) <- "double"
   list(Y = unname(Y), argvals = argvals, rangeval = as.numeric(rangeval))
+}
+
+# The quadrature weights of the inner products (scores, projections, norms)
+# under a score rule: fda.usc's trapezoidal rule, or the uniform weight
+# delta^2 under which the components are orthonormal, so that a score is the
+# least-squares coefficient of the curve on its component and
+# mean + components %*% scores is the curve's orthogonal projection.
+fpca_weights <- function(argvals, delta, rule = "trapezoid") {
+  if (identical(rule, "least_squares")) rep(delta^2, length(argvals)) else trapezoid_weights(argvals)
 }
 
 # Trapezoidal weights as fda.usc's "TRAPZ" rule applies them: on a grid that
@@ -189,7 +211,7 @@ fpca_engine_reference <- function(cur, ncomp, call) {
 
 # Shared tail of both engines: zero components, sign convention, scores,
 # variance explained, padding to ncomp.
-fpca_finish <- function(raw, Yc, cur, mean, ncomp, delta, weights) {
+fpca_finish <- function(raw, Yc, cur, mean, ncomp, delta, weights, score_rule = "trapezoid") {
   n <- nrow(Yc)
   L <- ncol(Yc)
   s2 <- sort(raw$s2, decreasing = TRUE)
@@ -230,14 +252,15 @@ fpca_finish <- function(raw, Yc, cur, mean, ncomp, delta, weights) {
   new_fpca_fit(mean = mean, components = comps, scores = scores,
                eigenvalues = s2[nonzero] * delta^2 / n, var_explained = var_explained,
                argvals = cur$argvals, weights = weights, delta = delta, rangeval = cur$rangeval,
-               engine = NA_character_, notes = notes)
+               engine = NA_character_, notes = notes, score_rule = score_rule)
 }
 
 # The one constructor of class "fpca_fit": every producer (fpca_fit()'s
 # engines, the constant stand-in of a model) goes through it, so every fit
 # has every field print(), predict() and the model code read.
 new_fpca_fit <- function(mean, components, scores, eigenvalues, var_explained, argvals, weights,
-                         delta, rangeval, engine, notes = character(), constant = FALSE) {
+                         delta, rangeval, engine, notes = character(), constant = FALSE,
+                         score_rule = "trapezoid") {
   components <- as.matrix(components)
   ncomp <- ncol(components)
   labels <- paste0("FPC", seq_len(ncomp))
@@ -248,7 +271,8 @@ new_fpca_fit <- function(mean, components, scores, eigenvalues, var_explained, a
     mean = as.numeric(mean), components = components, scores = scores,
     eigenvalues = eigenvalues, var_explained = var_explained,
     argvals = argvals, weights = weights, delta = delta, rangeval = rangeval,
-    n = nrow(scores), ncomp = ncomp, engine = engine, notes = notes, constant = constant),
+    n = nrow(scores), ncomp = ncomp, engine = engine, notes = notes, constant = constant,
+    score_rule = score_rule),
     class = "fpca_fit"))
 }
 
@@ -258,7 +282,8 @@ validate_fpca_fit <- function(x) {
   stopifnot(
     nrow(x$components) == L, length(x$argvals) == L, length(x$weights) == L,
     ncol(x$scores) == x$ncomp, length(x$var_explained) == x$ncomp,
-    is.numeric(x$delta), length(x$delta) == 1L, length(x$rangeval) == 2L
+    is.numeric(x$delta), length(x$delta) == 1L, length(x$rangeval) == 2L,
+    x$score_rule %in% c("trapezoid", "least_squares")
   )
   x
 }
@@ -382,9 +407,9 @@ fpca_new_curves <- function(fit, Ynew, call) {
 #' @export
 print.fpca_fit <- function(x, ...) {
   k <- ncol(x$components)
-  cat(sprintf("<fpca_fit> %d curve%s x %d points, %d component%s (%s engine)\n",
+  cat(sprintf("<fpca_fit> %d curve%s x %d points, %d component%s (%s engine%s)\n",
               x$n, if (x$n == 1) "" else "s", length(x$mean), k, if (k == 1) "" else "s",
-              x$engine))
+              x$engine, if (identical(x$score_rule, "least_squares")) ", least-squares scores" else ""))
   ve <- x$var_explained
   cat(sprintf("  variance explained: %s (total %s)\n",
               paste(sprintf("%.2f%%", 100 * ve), collapse = ", "),

@@ -38,26 +38,46 @@
 #' at zero, and the DoF is listed in `fallbacks`. The same holds for warping
 #' functions that do not vary (all recordings of one length, linear warps).
 #'
+#' **Defaults.** Arguments left `NULL` take the defaults of the chosen
+#' `dependence`:
+#'
+#' | | `ncomp` | `warp_ncomp` | `k` | `warping` | `fpc_scores` | `mixture_guard` |
+#' |---|---|---|---|---|---|---|
+#' | `"independent"` (the thesis) | 2 | 1 | 2 | `"dtw"` | `"trapezoid"` | `"none"` |
+#' | `"copula"` | 4 | 1 | 1 | `"linear"` | `"least_squares"` | `"bic"` |
+#'
+#' The copula model's were chosen by measurement on held-out subjects
+#' ([evaluate_generation()], `vignette("natural-grasps")`): with DTW the
+#' mid-motion posture of generated grasps varied a fifth less than recorded
+#' (the aligned curves and warps cannot be mapped back to every recorded
+#' frame, and truncated warps lose timing), with trapezoidal scores the final
+#' posture a twelfth less; linear time normalisation, least-squares scores
+#' and four FPCs per DoF remove most of both, and one Gaussian per score
+#' joined by the copula (a multivariate Gaussian with shrunk correlation)
+#' does as well as two-component mixtures there, at a fraction of the cost.
+#'
 #' @param x A [grasps()] object holding the recordings of one grasp type (or
 #'   give `grasp` to select one type from a larger set).
 #' @param grasp Optional grasp type (Feix name or id 1-33) to select from `x`.
-#' @param ncomp Number of FPCs per DoF (the thesis uses 2).
+#' @param ncomp Number of FPCs per DoF. `NULL` (default): 2 for
+#'   `dependence = "independent"` (the thesis), 4 for `"copula"` (see
+#'   Defaults).
 #' @param warp_ncomp Number of FPCs of the warping functions. `NULL`
-#'   (default): 1 for `dependence = "independent"` (the thesis), 3 for
-#'   `"copula"`: one warp FPC explains about two thirds of the warps'
-#'   variance, and with three the generated timing (duration, speed profile)
-#'   comes out closer to held-out recordings (measured in
-#'   `vignette("natural-grasps")`).
-#' @param k Number of mixture components (the thesis uses 2).
+#'   (default): 1 (the thesis; with linear time normalisation the warps vary
+#'   only by their duration, which one FPC carries exactly).
+#' @param k Number of mixture components per score mixture. `NULL`
+#'   (default): 2 for the independent model (the thesis), 1 for the copula
+#'   model (see Defaults).
 #' @param engine `"fast"` or `"reference"`, passed to the alignment, FPCA and
 #'   mixture steps; or a named list such as
 #'   `list(align = "fast", fpca = "reference", gmm = "reference")` to choose per
 #'   step.
 #' @param overlong The over-long rule, from [overlong_rule()].
-#' @param warping `"dtw"` (default) aligns by dynamic time warping, with the
-#'   linear fallback only when it fails; `"linear"` asks for linear warping of
-#'   every recording (the thesis' fallback, useful to separate the alignment
-#'   from the rest of the model).
+#' @param warping `"dtw"` aligns by dynamic time warping, with the linear
+#'   fallback only when it fails; `"linear"` asks for linear warping of every
+#'   recording (the thesis' fallback: time normalised to the template length,
+#'   so the timing stays in the curves). `NULL` (default): `"dtw"` for the
+#'   independent model (the thesis), `"linear"` for the copula model.
 #' @param max_stall Largest share of template frames a warp may spend on one
 #'   original frame before the recording counts as degenerately warped (see
 #'   [align_recordings()]).
@@ -83,7 +103,15 @@
 #'   (listed in `fallbacks` as `"mixture_guard"`). It removes the slivers
 #'   fitted to two or three outlying recordings (the thesis' Figure 5.6).
 #'   `"none"` fits the thesis' mixtures as they come. `NULL` (default):
-#'   `"bic"` for the copula model, `"none"` for the independent one.
+#'   `"bic"` for the copula model (it matters there only with `k > 1`),
+#'   `"none"` for the independent one.
+#' @param fpc_scores How FPC scores integrate over time (`fpca_fit()`):
+#'   `"trapezoid"`, fda.usc's rule as in the thesis, or `"least_squares"`,
+#'   under which the scores are the least-squares coefficients of each curve
+#'   on the FPCs, so mean plus FPCs times scores reconstructs the recording's
+#'   final posture in full (the trapezoidal rule halves the weight of the end
+#'   points, where grasps vary most). `NULL` (default): `"trapezoid"` for the
+#'   independent model, `"least_squares"` for the copula model.
 #' @return An object of class `grasp_model`: a list with `grasp`, `grasp_id`,
 #'   `dofs`, `rate`, `unit`, `target_length`, `argvals`, `n_input`, `n_used`,
 #'   `ids` (recordings used), `removed` (data frame: `id`, `n_frames`, `reason`,
@@ -109,29 +137,47 @@
 #' # fingers that move together
 #' mc <- fit_grasp_model(g, seed = 1, dependence = "copula")
 #' mc
-fit_grasp_model <- function(x, grasp = NULL, ncomp = 2, warp_ncomp = NULL, k = 2,
+fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k = NULL,
                             engine = c("fast", "reference"), overlong = overlong_rule(),
-                            warping = c("dtw", "linear"), max_stall = 0.25, seed = NULL,
+                            warping = NULL, max_stall = 0.25, seed = NULL,
                             keep_data = TRUE, dependence = c("independent", "copula"),
-                            mixture_guard = NULL) {
+                            mixture_guard = NULL, fpc_scores = NULL) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  check_whole(ncomp, "ncomp", max = 50, call = call)
-  check_whole(k, "k", max = 50, call = call)
-  engines <- resolve_engines(engine, call)
-  warping <- check_choice(warping, arg = "warping", call = call)
   dependence <- check_choice(dependence, arg = "dependence", call = call)
-  warp_ncomp <- warp_ncomp %||% if (dependence == "independent") 1L else 3L
-  check_whole(warp_ncomp, "warp_ncomp", max = 50, call = call)
-  mixture_guard <- mixture_guard %||% if (dependence == "independent") "none" else "bic"
-  mixture_guard <- check_choice(mixture_guard, c("none", "bic"), arg = "mixture_guard", call = call)
+  # what NULL means depends on the model (see model_defaults)
+  def <- model_defaults[[dependence]]
+  ncomp <- check_whole(ncomp %||% def$ncomp, "ncomp", max = 50, call = call)
+  k <- check_whole(k %||% def$k, "k", max = 50, call = call)
+  warp_ncomp <- check_whole(warp_ncomp %||% def$warp_ncomp, "warp_ncomp", max = 50, call = call)
+  engines <- resolve_engines(engine, call)
+  warping <- check_choice(warping %||% def$warping, c("dtw", "linear"), arg = "warping", call = call)
+  mixture_guard <- check_choice(mixture_guard %||% def$mixture_guard, c("none", "bic"),
+                                arg = "mixture_guard", call = call)
+  fpc_scores <- check_choice(fpc_scores %||% def$fpc_scores, c("trapezoid", "least_squares"),
+                             arg = "fpc_scores", call = call)
   x <- select_one_type(x, grasp, call)
   settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
                    k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,
                    keep_data = keep_data, gmm_max_iter = gmm_model_max_iter,
-                   dependence = dependence, mixture_guard = mixture_guard)
+                   dependence = dependence, mixture_guard = mixture_guard, fpc_scores = fpc_scores)
   with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))
 }
+
+# The settings each model takes when its arguments are left NULL. The
+# independent model is the thesis' (section 4.1); the copula model's were
+# chosen by measurement on held-out subjects (vignette("natural-grasps") and
+# NEWS): linear time normalisation keeps the timing in the curves, where the
+# FPCs and the copula carry it with the rest, instead of in DTW warps that
+# the inverse map cannot reproduce; least-squares scores reconstruct the
+# final posture in full; four FPCs per DoF carry the mid-motion variation;
+# one Gaussian per score is as good as two-component mixtures there at a
+# fraction of the cost (the guard still applies with k > 1).
+model_defaults <- list(
+  independent = list(ncomp = 2L, warp_ncomp = 1L, k = 2L, warping = "dtw",
+                     mixture_guard = "none", fpc_scores = "trapezoid"),
+  copula = list(ncomp = 4L, warp_ncomp = 1L, k = 1L, warping = "linear",
+                mixture_guard = "bic", fpc_scores = "least_squares"))
 
 fit_grasp_model_impl <- function(x, settings, engines, call) {
   t0 <- proc.time()[["elapsed"]]
@@ -157,7 +203,8 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
   names(fpca) <- dofs
   for (j in seq_len(p)) {
     Y <- matrix(aln$warped[, , j], n, L)
-    fpca[[j]] <- orient_components(fit_fpca_or_constant(Y, argvals, settings$ncomp, engines$fpca))
+    fpca[[j]] <- orient_components(fit_fpca_or_constant(Y, argvals, settings$ncomp, engines$fpca,
+                                                        settings$fpc_scores))
     if (isTRUE(fpca[[j]]$constant)) {
       fallbacks <- add_fallback(fallbacks, "fpca", dofs[j], "constant DoF: no variation to model, FPCs set to zero")
     } else if (length(fpca[[j]]$notes)) {
@@ -167,7 +214,8 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
   t_fpca <- proc.time()[["elapsed"]]
 
   # Warping functions in original frames: one FPC carries the duration.
-  warp_fit <- fit_fpca_or_constant(aln$warps, argvals, settings$warp_ncomp, engines$fpca)
+  warp_fit <- fit_fpca_or_constant(aln$warps, argvals, settings$warp_ncomp, engines$fpca,
+                                   settings$fpc_scores)
   warp_fit <- orient_warp_fpca(warp_fit)
   if (isTRUE(warp_fit$constant)) {
     fallbacks <- add_fallback(fallbacks, "warp_fpca", NA_character_,
@@ -289,7 +337,7 @@ prepare_alignment <- function(x, settings, engines, call) {
 # FPCA of one set of curves, or a zero-component stand-in when the curves do
 # not vary (a constant DoF or identical warps), so later steps never divide
 # by a zero variance.
-fit_fpca_or_constant <- function(Y, argvals, ncomp, engine) {
+fit_fpca_or_constant <- function(Y, argvals, ncomp, engine, score_rule = "trapezoid") {
   # total variance over time points (colSums rather than apply(Y, 2, var):
   # this runs once per DoF and type)
   n <- nrow(Y)
@@ -299,12 +347,12 @@ fit_fpca_or_constant <- function(Y, argvals, ncomp, engine) {
     return(new_fpca_fit(mean = colMeans(Y), components = matrix(0, ncol(Y), ncomp),
                         scores = matrix(0, n, ncomp), eigenvalues = rep(0, ncomp),
                         var_explained = rep(NA_real_, ncomp), argvals = argvals,
-                        weights = trapezoid_weights(argvals),
+                        weights = fpca_weights(argvals, fpca_delta(argvals, range(argvals)), score_rule),
                         delta = fpca_delta(argvals, range(argvals)), rangeval = range(argvals),
                         engine = engine, notes = "constant: the curves do not vary",
-                        constant = TRUE))
+                        constant = TRUE, score_rule = score_rule))
   }
-  fit <- fpca_fit(Y, argvals = argvals, ncomp = ncomp, engine = engine)
+  fit <- fpca_fit(Y, argvals = argvals, ncomp = ncomp, engine = engine, scores = score_rule)
   fit$constant <- FALSE
   fit
 }

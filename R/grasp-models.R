@@ -35,8 +35,9 @@
 #' @param x A [grasps()] object with labelled recordings.
 #' @param grasps The grasp types to fit (names or ids 1-33); every type
 #'   present in `x` by default.
-#' @param ... Passed to [fit_grasp_model()] (`ncomp`, `warp_ncomp`, `k`,
-#'   `engine`, `overlong`, `max_stall`, `keep_data`).
+#' @param ... Passed to [fit_grasp_model()] (`dependence`, `ncomp`, `warp_ncomp`, `k`,
+#'   `warping`, `fpc_scores`, `mixture_guard`, `engine`, `overlong`, `max_stall`,
+#'   `keep_data`).
 #' @param seed Seed of the per-type RNG streams; the same seed gives identical
 #'   models under any plan. `NULL` draws the streams from the current RNG (and
 #'   cannot be combined with `cache`).

@@ -78,8 +78,9 @@ bench_record(sprintf("fit %d models, %d recordings, sequential, elapsed", length
              seq_run$seconds, "s")
 bench_record(sprintf("fit %d models, sequential, CPU", length(seq_run$models)), seq_run$cpu, "s")
 
-# The copula model (issue 12): the thesis' fit plus the mixture guard and the
-# copula's correlation and quantile tables; target within 2x of the thesis'.
+# The copula model (issue 12): linear time normalisation, four least-squares
+# FPCs per DoF, one Gaussian per score joined by the copula's correlation and
+# quantile tables; target within 2x of the thesis' fit.
 t_cop <- system.time(ms_cop <- fit_grasp_models(g, seed = 1, dependence = "copula"))
 cat(sprintf("dependence = \"copula\", sequential: %.2f s elapsed, %.2f s CPU; %.2fx the thesis' model (target 2x: %s)\n\n",
             t_cop[["elapsed"]], cpu_of(t_cop), t_cop[["elapsed"]] / seq_run$seconds,

@@ -42,9 +42,11 @@ test_that("the copula model recovers a planted cross-DoF correlation; the indepe
 
 test_that("the copula keeps each score's marginal and carries the training correlation", {
   g <- simulate_grasps(subjects = 20, grasps = 3, seed = 3)
-  m <- fit_grasp_model(g, seed = 1, dependence = "copula")
+  # mixture marginals (k = 2) and three warp FPCs, so that the tabulated
+  # quantile functions are not Gaussian ones
+  m <- fit_grasp_model(g, seed = 1, dependence = "copula", ncomp = 2, k = 2, warp_ncomp = 3,
+                       warping = "dtw")
   cop <- m$dependence$copula
-  expect_equal(m$settings$warp_ncomp, 3L) # the copula model's default
   D_all <- length(m$dofs) * 2 + 3
   expect_equal(nrow(cop$columns), D_all)
   expect_equal(dim(cop$cor), c(D_all, D_all))
@@ -65,6 +67,42 @@ test_that("the copula keeps each score's marginal and carries the training corre
     want <- stats::approx(cop$z, cop$quantiles[, a], xout = stats::qnorm(c(0.1, 0.5, 0.9)))$y
     expect_equal(q, want, tolerance = 0.05 * stats::sd(S[, a]) / max(abs(want)))
   }
+})
+
+test_that("the copula model's defaults are the measured ones, each overridable", {
+  g <- simulate_grasps(subjects = 6, grasps = 3, objects = 2, trials = 2, seed = 3)
+  mc <- fit_grasp_model(g, seed = 1, dependence = "copula")
+  st <- mc$settings
+  expect_equal(list(st$ncomp, st$warp_ncomp, st$k, st$warping, st$fpc_scores, st$mixture_guard),
+               list(4L, 1L, 1L, "linear", "least_squares", "bic"))
+  expect_identical(mc$warping$method, "linear")
+  expect_false("warping" %in% mc$fallbacks$step) # asked for, not fallen back on
+  expect_true(all(vapply(mc$fpca, `[[`, character(1), "score_rule") == "least_squares"))
+  mi <- fit_grasp_model(g, seed = 1)
+  st <- mi$settings
+  expect_equal(list(st$ncomp, st$warp_ncomp, st$k, st$warping, st$fpc_scores, st$mixture_guard),
+               list(2L, 1L, 2L, "dtw", "trapezoid", "none"))
+  m2 <- fit_grasp_model(g, seed = 1, dependence = "copula", ncomp = 2, fpc_scores = "trapezoid")
+  expect_equal(c(m2$settings$ncomp, dim(m2$scores)[3]), c(2L, 2L))
+  expect_identical(m2$fpca[[1]]$score_rule, "trapezoid")
+  expect_error(fit_grasp_model(g, dependence = "copula", fpc_scores = "trapez"),
+               class = "handmotion_error_bad_input")
+})
+
+test_that("least-squares scores reconstruct the final posture the trapezoidal ones miss", {
+  g <- simulate_grasps(subjects = 12, grasps = 3, seed = 3)
+  fit <- function(rule) fit_grasp_model(g, seed = 1, dependence = "copula", fpc_scores = rule)
+  end_sd_ratio <- function(m) {
+    L <- m$target_length
+    rec <- vapply(seq_along(m$dofs), function(j) {
+      m$scores[, j, ] %*% m$basis$components[L, j, ] + m$basis$mean[L, j]
+    }, numeric(m$n_used))
+    stats::median(apply(rec, 2, stats::sd) / apply(m$data$warped[, L, ], 2, stats::sd))
+  }
+  ls <- end_sd_ratio(fit("least_squares"))
+  tz <- end_sd_ratio(fit("trapezoid"))
+  expect_gt(ls, 0.97)
+  expect_gt(ls - tz, 0.02)
 })
 
 test_that("shrink_correlation()'s lambda is Schafer and Strimmer's, from every pair's variance", {
@@ -165,7 +203,7 @@ test_that("print, summary and autoplot show the dependence", {
   g <- simulate_grasps(subjects = 8, grasps = 3, seed = 3)
   mc <- fit_grasp_model(g, seed = 1, dependence = "copula")
   mi <- fit_grasp_model(g, seed = 1)
-  expect_output(print(mc), "Gaussian copula over 35 scores")
+  expect_output(print(mc), "Gaussian copula over 65 scores") # 16 DoFs x 4 FPCs + 1 warp FPC
   expect_output(print(mi), "independent DoFs")
   expect_output(print(summary(mc)), "copula")
   p <- ggplot2::autoplot(mc, type = "dependence")

@@ -142,11 +142,14 @@ def write_bvh(x, file, **kwargs):
 
 
 def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", **kwargs):
-    """Fit one generative model per grasp type (DTW + FPCA + GMMs); returns a :class:`GraspModels`.
+    """Fit one generative model per grasp type (time warping + FPCA + score distributions); returns a :class:`GraspModels`.
 
-    ``dependence="independent"`` is the thesis' model (each DoF on its own);
-    ``"copula"`` joins all DoFs' scores and the warp by a Gaussian copula so that
-    generated fingers move together (R's ``fit_grasp_model()`` documents both).
+    ``dependence="independent"`` is the thesis' model (DTW, two FPCs per DoF, a mixture per
+    DoF, each DoF on its own); ``"copula"`` joins all DoFs' scores and the duration by a
+    Gaussian copula so that generated fingers move together (linear time normalisation, four
+    least-squares FPCs per DoF). Other keyword arguments (``ncomp``, ``k``, ``warping``,
+    ``fpc_scores``, ``mixture_guard``, ...) go to R's ``fit_grasp_model()``, which documents
+    both models and their defaults.
     """
     if dependence not in ("independent", "copula"):
         raise BadInputError(f"dependence must be 'independent' or 'copula', not {dependence!r}")

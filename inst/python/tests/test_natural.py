@@ -56,3 +56,16 @@ def test_evaluate_generation(hm, split, copula):
     np.testing.assert_allclose(same["generated"].values, t["generated"].values)
     with pytest.raises(hm.BadInputError):
         hm.evaluate_generation([copula], held, train)
+
+
+def test_copula_defaults_and_overrides_reach_r(hm, ro, split):
+    train = split[0]
+    m = hm.fit_grasp_models(train, grasps=["Large Diameter"], seed=1, dependence="copula")
+    settings = ro.r("function(m) m[['Large Diameter']]$settings")(m.robj)
+    assert list(settings.rx2("warping")) == ["linear"]
+    assert list(settings.rx2("fpc_scores")) == ["least_squares"]
+    assert list(settings.rx2("ncomp")) == [4]
+    m2 = hm.fit_grasp_models(train, grasps=["Large Diameter"], seed=1, dependence="copula",
+                             ncomp=2, warping="dtw")
+    s2 = ro.r("function(m) m[['Large Diameter']]$settings")(m2.robj)
+    assert list(s2.rx2("warping")) == ["dtw"] and list(s2.rx2("ncomp")) == [2]
