@@ -32,19 +32,28 @@ SEXP hm_copula_draw(SEXP n_, SEXP root, SEXP grid, SEXP quantiles) {
   GetRNGstate();
   for (R_xlen_t t = 0; t < (R_xlen_t) n * D; t++) E[t] = norm_rand();
   PutRNGstate();
+  /* column by column, each an axpy over contiguous memory (E %*% U)[, d] =
+   * sum_c E[, c] U[c, d]: the row-wise dot product strode n doubles per term
+   * and missed the cache on every one once n * D outgrew it */
   for (int d = 0; d < D; d++) {
+    double *v = V + (R_xlen_t) n * d;
+    for (int i = 0; i < n; i++) v[i] = 0;
+    for (int c = 0; c < D; c++) {
+      const double u = U[c + (R_xlen_t) D * d];
+      if (u == 0) continue; /* a triangular root has D(D-1)/2 zeros */
+      const double *e = E + (R_xlen_t) n * c;
+      for (int i = 0; i < n; i++) v[i] += e[i] * u;
+    }
+    R_CheckUserInterrupt();
     const double *q = Q + G * d;
     for (int i = 0; i < n; i++) {
-      if ((i & 65535) == 65535) R_CheckUserInterrupt();
-      double v = 0; /* (E %*% U)[i, d] */
-      for (int c = 0; c < D; c++) v += E[i + (R_xlen_t) n * c] * U[c + (R_xlen_t) D * d];
-      double pos = (v - z0) / h;
+      double pos = (v[i] - z0) / h;
       if (pos < 0) pos = 0;
       if (pos > (double) (G - 1)) pos = (double) (G - 1);
       R_xlen_t lo = (R_xlen_t) pos;
       if (lo > G - 2) lo = G - 2;
       const double f = pos - (double) lo;
-      V[i + (R_xlen_t) n * d] = q[lo] * (1 - f) + q[lo + 1] * f;
+      v[i] = q[lo] * (1 - f) + q[lo + 1] * f;
     }
   }
   UNPROTECT(1);
