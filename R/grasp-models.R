@@ -47,7 +47,7 @@
 #'   objects (names = grasp type), with attributes `failed` (data frame:
 #'   `grasp`, `message`, `class`) and `seed`.
 #' @seealso [summary.grasp_models()] (Tables 5.1 and 5.2), [generate()],
-#'   [project()], [classify()].
+#'   [predict.grasp_model()], [classify()].
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 1:2, objects = 2, trials = 2, seed = 1)

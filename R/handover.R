@@ -2,10 +2,10 @@
 # PCA of the reference joint angles, a locally weighted regression (LWR) per
 # query frame from the sparse markers to the principal components, a cone
 # filter over the component trajectories, back-projection to joint angles.
-# Marker placement and ranking are in R/markers.R; the baselines and the
-# evaluation helpers (search_markers(), handover_error(), compare_marker_sets(),
-# handover_pca_error()) are at the end of this file; the regression core is
-# in C (src/handover-lwr.c) with an R reference engine here.
+# Marker placement, ranking and selection are in R/markers.R; the search
+# baseline and the evaluation (handover_error(), compare_marker_sets()) in
+# R/handover-evaluate.R; reconstruction in R/handover-reconstruct.R; the
+# regression core is in C (src/handover-lwr.c).
 
 #' Fit a sparse-marker hand-over model
 #'
@@ -40,8 +40,8 @@
 #' components best, which is the default.
 #'
 #' @param reference A [grasps()] object recorded with the full marker set
-#'   (joint angles; markers are computed by [markers_from_angles()]).
-#' @param markers Marker names (see `hand_marker_set()`), or a number `n` to
+#'   (joint angles; markers are computed by [forward_kinematics()]).
+#' @param markers Marker names (see [select_markers()]), or a number `n` to
 #'   use `select_markers(reference, n)`.
 #' @param ncomp Number of principal components regressed and back-projected;
 #'   `NULL` for all (one per DoF).
@@ -54,7 +54,7 @@
 #' @param ridge Relative ridge penalty of the local regressions.
 #' @param eps Smallest marker distance (mm) used in the inverse-distance
 #'   weights.
-#' @param skeleton,... Passed to [markers_from_angles()] (e.g. `mapping`).
+#' @param skeleton,... Passed to [forward_kinematics()] (e.g. `mapping`).
 #' @return An object of class `handover_model`.
 #' @seealso [reconstruct()], [select_markers()], [compare_marker_sets()]
 #' @export
