@@ -139,22 +139,20 @@ no_failures <- function() data.frame(model = character(0), message = character(0
 # stacks the recordings once; if it fails, the models are projected one by one
 # so a single broken model costs only its own column.
 fpca_distances <- function(models, x, call = rlang::caller_env()) {
-  if (length(models) == 0L) {
-    hm_abort("{.arg models} holds no grasp models.", "bad_input", argument = "models", call = call)
-  }
-  types <- names(models)
-  if (is.null(types) || anyNA(types) || any(types == "")) {
-    types <- vapply(unclass(models), function(m) as.character(m$grasp), character(1))
-  }
-  ids <- x$meta$id
-  d <- matrix(NA_real_, length(ids), length(models), dimnames = list(ids, types))
-  failures <- no_failures()
   # types whose model could not be fitted can never be predicted: say so
-  unfitted <- attr(models, "failed")
-  if (is.data.frame(unfitted) && nrow(unfitted) > 0L) {
+  unfitted <- failed_types(models)
+  failures <- no_failures()
+  if (nrow(unfitted) > 0L) {
     failures <- rbind(failures, data.frame(model = unfitted$grasp,
                                            message = paste("not fitted:", unfitted$message)))
   }
+  models <- new_grasp_models(fitted_models(models))
+  if (length(models) == 0L) {
+    hm_abort("{.arg models} holds no fitted grasp models.", "bad_input", argument = "models", call = call)
+  }
+  types <- names(models)
+  ids <- x$meta$id
+  d <- matrix(NA_real_, length(ids), length(models), dimnames = list(ids, types))
   all_pr <- tryCatch(predict(models, x, details = FALSE), error = function(e) NULL)
   for (j in seq_along(models)) {
     pr <- if (!is.null(all_pr)) all_pr[[j]] else

@@ -103,7 +103,8 @@ evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5,
   if (!is.null(n)) n <- check_whole(n, "n", min = 5, max = 1e5, call = call)
   seed <- check_seed(seed, call = call)
   overlong <- as_overlong_rule(overlong, allow_null = TRUE, call = call)
-  types <- names(sets[[1]])
+  # the types every set could fit (a failed type has nothing to generate)
+  types <- Reduce(intersect, lapply(sets, function(s) names(fitted_models(s))))
   missing <- setdiff(types, as.character(unique(held_out$meta$grasp)))
   if (length(missing)) {
     hm_abort("{.arg held_out} has no recordings of {.val {missing}}.", "bad_input",

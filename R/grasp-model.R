@@ -266,7 +266,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
   if (settings$ncomp == 1L) var_explained <- matrix(var_explained, ncol = 1)
   dimnames(var_explained) <- list(dofs, paste0("FPC", seq_len(settings$ncomp)))
 
-  model <- list(
+  new_grasp_model(
     grasp = type,
     grasp_id = match(type, feix_levels()),
     dofs = dofs, rate = x$rate, unit = x$unit,
@@ -283,17 +283,58 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
     fallbacks = fallbacks,
     settings = settings, engine = engines,
     timing = c(align = t_align - t0, fpca = t_fpca - t_align, gmm = t_gmm - t_fpca,
-               total = t_gmm - t0)
+               total = t_gmm - t0),
+    limits = recorded_limits(x[prep$ids], dofs),
+    # the alignment as the aligner returned it (warped curves, warping
+    # functions, frame counts, degenerate warps): the model's data, kept once
+    alignment = if (isTRUE(settings$keep_data)) aln
   )
+}
+
+# The one constructor of class "grasp_model": the fitted parts in, the
+# derived ones (the generation sampler, the cross-DoF dependence) built here
+# so that every model has them, then the shapes checked.
+new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, argvals, n_input, n_used,
+                            ids, removed, warping, fpca, basis, var_explained, scores, gmm, warp,
+                            fallbacks, settings, engine, timing, limits, alignment = NULL) {
+  model <- list(grasp = grasp, grasp_id = grasp_id, dofs = dofs, rate = rate, unit = unit,
+                target_length = target_length, argvals = argvals, n_input = n_input, n_used = n_used,
+                ids = ids, removed = removed, warping = warping, fpca = fpca, basis = basis,
+                var_explained = var_explained, scores = scores, gmm = gmm, warp = warp,
+                fallbacks = fallbacks, settings = settings, engine = engine, timing = timing)
   model$sampler <- build_sampler(model)
   model$dependence <- list(type = settings$dependence,
                            copula = if (settings$dependence == "copula") fit_score_copula(model))
-  model$limits <- recorded_limits(x[prep$ids], dofs)
-  # the alignment as the aligner returned it (warped curves, warping
-  # functions, frame counts, degenerate warps): the model's data, kept once
-  if (isTRUE(settings$keep_data)) model$alignment <- aln
-  structure(model, class = "grasp_model")
+  model$limits <- limits
+  model$alignment <- alignment
+  validate_grasp_model(structure(model, class = "grasp_model"))
 }
+
+# Shapes that fit together: p DoFs, L template frames, n recordings used,
+# ncomp FPCs per DoF; one FPCA and one mixture per DoF; the kept alignment
+# (if any) holds exactly the recordings used.
+validate_grasp_model <- function(x) {
+  p <- length(x$dofs)
+  L <- x$target_length
+  n <- x$n_used
+  q <- x$settings$ncomp
+  stopifnot(
+    is.character(x$grasp), length(x$grasp) == 1L,
+    length(x$argvals) == L, n == length(x$ids), n <= x$n_input,
+    identical(names(x$fpca), x$dofs), identical(names(x$gmm), x$dofs),
+    all(vapply(x$fpca, inherits, logical(1), "fpca_fit")),
+    all(vapply(x$gmm, inherits, logical(1), "gmm_fit")),
+    has_dim(x$basis$mean, c(L, p)), has_dim(x$basis$components, c(L, p, q)),
+    has_dim(x$scores, c(n, p, q)), has_dim(x$var_explained, c(p, q)),
+    nrow(x$warp$components) == L, nrow(x$warp$scores) == n,
+    is.data.frame(x$removed), is.data.frame(x$fallbacks),
+    x$dependence$type %in% c("independent", "copula"),
+    is.null(x$alignment) || (inherits(x$alignment, "grasp_alignment") && dim(x$alignment$warped)[1] == n)
+  )
+  x
+}
+
+has_dim <- function(a, d) length(dim(a)) == length(d) && all(dim(a) == d)
 
 # Steps 1-2 (also used by the frame-PCA alternative): over-long removal, then
 # alignment to the mean frame count, with degenerate warps dropped and a

@@ -38,7 +38,7 @@ search_markers <- function(reference, n = 6, holdout = "grasp", exhaustive = FAL
   val_y <- do.call(rbind, reference$recordings[split$val])
   val_err <- function(set) {
     model <- handover_build(ref_all, ref_y, set, k = k, ridge = ridge, rate = reference$rate,
-                            call = call)
+                            unit = reference$unit, call = call)
     rec <- do.call(rbind, lapply(seq_along(val_mk), function(i) {
       reconstruct_one(model, val_mk[[i]][, marker_columns(set), drop = FALSE], names(val_mk)[i], call)$angles
     }))

@@ -29,7 +29,7 @@
 #'   residual norms), `distance` (one per recording), `ids`, `grasp` (the
 #'   model's type), `target_length` and, with `details`, `warped` and `fitted`
 #'   (lists of L x DoF matrices). For a model set, a named list of such
-#'   projections, one per model.
+#'   projections, one per fitted model (failed types have none).
 #' @seealso [classify()] ranks the distances of every model.
 #' @export
 #' @examples
@@ -49,12 +49,13 @@ predict.grasp_model <- function(object, newdata, details = TRUE, ...) {
 predict.grasp_models <- function(object, newdata, details = FALSE, ...) {
   call <- rlang::caller_env()
   check_grasps(newdata, "newdata", call = call)
-  if (length(object) == 0L) {
-    hm_abort("{.arg object} holds no grasp models.", "bad_input", argument = "object", call = call)
+  models <- fitted_models(object)
+  if (length(models) == 0L) {
+    hm_abort("{.arg object} holds no fitted grasp models.", "bad_input", argument = "object", call = call)
   }
-  check_projection_dofs(object[[1]], newdata, call)
-  st <- stack_recordings(newdata, object[[1]]$dofs)
-  lapply(unclass(object), function(m) project_stacked(m, st, details = details))
+  check_projection_dofs(models[[1]], newdata, call)
+  st <- stack_recordings(newdata, models[[1]]$dofs)
+  lapply(models, function(m) project_stacked(m, st, details = details))
 }
 
 check_projection_dofs <- function(model, x, call) {

@@ -96,8 +96,8 @@ test_that("FPCA classification is near 100% on planted well-separated types", {
   # every model fits its own type best (diagonal is the row minimum)
   expect_equal(distance_minima(tab)$model_min_own_type, 4L)
   # a model set where one type failed to fit: recorded and warned, never hidden
-  failed <- data.frame(grasp = "Tripod", message = "too few recordings", class = "x")
-  part <- structure(unclass(ms)[1:3], class = class(ms), failed = failed)
+  failed <- new_grasp_model_failed("Tripod", simpleError("too few recordings"))
+  part <- new_grasp_models(c(unclass(ms)[1:3], list(Tripod = failed)))
   expect_warning(clp <- classify(part, g), class = "handmotion_warning_projection_failed")
   expect_equal(clp$failures$model, "Tripod")
   expect_output(print(clp), "failed models: Tripod")
