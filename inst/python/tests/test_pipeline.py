@@ -14,6 +14,7 @@ def test_fit_and_summary(hm, models):
     assert len(s) == 3
     assert len(models) == 3
     assert set(models.grasp_types()) == {"Tripod", "Ring", "Power Sphere"}
+    assert models.failed() == {}
 
 
 def test_generate_returns_grasps_and_array(hm, models):
