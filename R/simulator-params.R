@@ -2,8 +2,9 @@
 # `sim_default_params()` states the defaults in code; data-raw/simulator-params.R
 # adds the per-type target frame counts (the simulator's calibration against
 # the thesis' Table 5.1) and stores the result in R/sysdata.rda as
-# `simulator_defaults`, which `simulator_params()` returns with any replacements. The pipeline never
-# reads these numbers: only the simulator does.
+# `simulator_defaults`, which `simulator_params()` returns with any
+# replacements (simulate_grasps(params = )). The pipeline never reads these
+# numbers: only the simulator does.
 
 #' @section Simulator parameters (`params`):
 #' `params` replaces any of these by name, e.g. `simulate_grasps(params =
