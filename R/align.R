@@ -106,7 +106,8 @@ dtw_pair_reference <- function(x, template, window) {
 #' reason in `fallback_reason`): each recording is resampled to `L` frames and
 #' its warping function runs linearly from 1 to `n_k`.
 #'
-#' Over-long recordings should be removed first ([find_overlong()]).
+#' Over-long recordings should be removed first (`find_overlong()`). Users
+#' meet the result as a fitted model's `alignment` ([fit_grasp_model()]).
 #'
 #' @param recordings A list of numeric matrices (frames x DoFs, same DoFs),
 #'   one grasp type; names are used as ids. A [grasps()] object is accepted.
@@ -137,7 +138,7 @@ dtw_pair_reference <- function(x, template, window) {
 #'   `feature_template` (the DBA template in the space DTW compared; with
 #'   `features = "raw"` it equals `template`, otherwise `template` is the mean
 #'   warped recording in data units).
-#' @seealso [find_overlong()], [autoplot.grasp_alignment()]
+#' @seealso [autoplot.grasp_alignment()]
 #' @examples
 #' set.seed(1)
 #' curve <- function(u) cbind(a = 50 * plogis((u - 0.5) / 0.08), b = 30 * sin(pi * u))
@@ -148,7 +149,7 @@ dtw_pair_reference <- function(x, template, window) {
 #' al <- align_recordings(recs)
 #' al
 #' dim(al$warped)
-#' @export
+#' @noRd
 align_recordings <- function(recordings, target_length = NULL, engine = c("fast", "reference"),
                              max_iter = 10, tol = 1e-3, max_stall = 0.25, window = NULL,
                              features = c("shape", "raw")) {

@@ -5,50 +5,12 @@
 # calibration target from the results, and only then lays the published values
 # (thesis_results) beside them. The pipeline never sees a thesis number.
 
-#' How closely the default data reproduce the thesis' figures
-#'
-#' Runs the pipeline on `x` (by default the package's default data,
-#' `simulate_grasps()`) and recomputes each figure the simulator was
-#' calibrated against (see the *Calibration* section of [simulator_params()]):
-#'
-#' * Table 5.1: the warping target length of every type (must equal the
-#'   thesis' exactly);
-#' * Table 5.2: the mean over DoFs of the variance explained by two FPCs, per
-#'   type (within 2 points) and overall;
-#' * Table 5.7: the cumulative variance of five last-frame PCs per type (within
-#'   0.05);
-#' * the in-sample accuracy of the last-frame PCA classifier (five PCs) and of
-#'   the FPCA classifier (within 5 points of the thesis' 64% and 35%, the
-#'   totals of the diagonals of Tables 5.8 and 5.6);
-#' * optionally (`held_out = TRUE`) the same two accuracies estimated by
-#'   leave-subject-out evaluation ([evaluate_loso()]), which must be lower than
-#'   the in-sample ones.
-#'
-#' Fitting all 33 models of the default data takes a minute or more; pass
-#' already fitted `models` and `last_frame` to avoid refitting.
-#'
-#' @param x A labelled [grasps()] object; `NULL` simulates the default data.
-#' @param models A [fit_grasp_models()] result for `x`, or `NULL` to fit one
-#'   (with `seed`).
-#' @param last_frame A [fit_last_frame_pca()] result for `x` with `k = 5`, or
-#'   `NULL` to fit one.
-#' @param seed Seed of the model fits.
-#' @param held_out Also run the leave-subject-out evaluations (slow for the
-#'   FPCA classifier: one refit of every model per fold).
-#' @param folds Number of subject groups held out in turn when `held_out`
-#'   (`NULL` for one fold per subject).
-#' @return An object of class `calibration_report`: a list with `types` (one
-#'   row per type: our `target_frames`, `mean_var`, `pc5`, `recall_fpca`,
-#'   `recall_last_frame`, each beside the thesis' value), `targets` (one row per
-#'   calibration target: `target`, `ours`, `thesis`, `tolerance`, `worst`
-#'   (largest absolute difference, for per-type targets) and `ok`), and
-#'   `held_out` (data frame of held-out and in-sample accuracies, or `NULL`).
-#' @seealso [simulator_params()], [thesis_table()]
-#' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 3, grasps = c(9, 22), objects = 2, trials = 2)
-#' rep <- calibration_report(g)
-#' rep$targets
+# How closely the default data reproduce the thesis' figures: runs the
+# pipeline on `x` (by default simulate_grasps()) and recomputes each figure
+# the simulator was calibrated against (Tables 5.1, 5.2, 5.7 and the two
+# in-sample accuracies; with `held_out` also leave-subject-out accuracies).
+# A maintainer's tool (data-raw/calibrate-simulator.R, the calibration tests);
+# users read the outcome in ?simulate_grasps.
 calibration_report <- function(x = NULL, models = NULL, last_frame = NULL, seed = 1,
                                held_out = FALSE, folds = 5) {
   call <- rlang::caller_env()

@@ -3,7 +3,7 @@
 #   fpca        every recording is fed to every grasp model: warped into the
 #               model's time by the model's mean warping function, projected on
 #               its FPCs, and scored by the L2 distance to that projection
-#               (eq. 4.4; computed by project()). Closest model wins.
+#               (eq. 4.4; computed by predict()). Closest model wins.
 #   last_frame  the same idea on the last frame only, with one ordinary PCA per
 #               type (R/last-frame-pca.R).
 # The distance matrix (recordings x models) is kept, so Table 5.3
@@ -17,7 +17,7 @@
 #' * `"fpca"` (Table 5.6): each recording is warped into each model's time by
 #'   the model's mean warping function, projected on the model's FPCs, and
 #'   scored by the L2 distance between the warped recording and its projection
-#'   (eq. 4.4, over all DoFs; see [project()]). `models` is a `grasp_models`
+#'   (eq. 4.4, over all DoFs; see [predict.grasp_model()]). `models` is a `grasp_models`
 #'   object from [fit_grasp_models()].
 #' * `"last_frame"` (Table 5.8): the Euclidean distance between the recording's
 #'   last frame and its projection on each type's first `k` PCs; `models` is a
@@ -54,9 +54,10 @@
 #'   `predictions` (data frame: `id`, `subject`, `truth`, `predicted`,
 #'   `distance` to the chosen model), `distances` (numeric matrix, recordings x
 #'   models), `method`, `target_length` (per model, `fpca` only) and `failures`.
-#'   Use [as_grasp_confusion()] for its confusion matrix and
-#'   [distance_table()] for the thesis' Table 5.3.
-#' @seealso [grasp_confusion()], [distance_table()], [evaluate_loso()]
+#'   Use [grasp_confusion()] for its confusion matrix and
+#'   `thesis_table("5.3", classification = )` for the thesis' Table 5.3 (the
+#'   mean distance per model and true type).
+#' @seealso [grasp_confusion()], [thesis_table()], [evaluate_loso()]
 #' @export
 #' @examples
 #' set.seed(1)
@@ -65,7 +66,7 @@
 #' lf <- fit_last_frame_pca(g, k = 2)
 #' cl <- classify(lf, g)
 #' cl
-#' as_grasp_confusion(cl)
+#' grasp_confusion(cl)
 classify <- function(models, x, method = c("fpca", "last_frame", "discriminant", "weighted_fpca"), ...) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
@@ -134,30 +135,28 @@ classifier_distances <- function(models, x, method, call = rlang::caller_env()) 
 
 no_failures <- function() data.frame(model = character(0), message = character(0))
 
-# Eq. 4.4 for every (recording, model) pair. project() on the whole model set
+# Eq. 4.4 for every (recording, model) pair. predict() on the whole model set
 # stacks the recordings once; if it fails, the models are projected one by one
 # so a single broken model costs only its own column.
 fpca_distances <- function(models, x, call = rlang::caller_env()) {
-  if (length(models) == 0L) {
-    hm_abort("{.arg models} holds no grasp models.", "bad_input", argument = "models", call = call)
-  }
-  types <- names(models)
-  if (is.null(types) || anyNA(types) || any(types == "")) {
-    types <- vapply(unclass(models), function(m) as.character(m$grasp), character(1))
-  }
-  ids <- x$meta$id
-  d <- matrix(NA_real_, length(ids), length(models), dimnames = list(ids, types))
-  failures <- no_failures()
   # types whose model could not be fitted can never be predicted: say so
-  unfitted <- attr(models, "failed")
-  if (is.data.frame(unfitted) && nrow(unfitted) > 0L) {
+  unfitted <- failed_types(models)
+  failures <- no_failures()
+  if (nrow(unfitted) > 0L) {
     failures <- rbind(failures, data.frame(model = unfitted$grasp,
                                            message = paste("not fitted:", unfitted$message)))
   }
-  all_pr <- tryCatch(project(models, x, details = FALSE), error = function(e) NULL)
+  models <- new_grasp_models(fitted_models(models))
+  if (length(models) == 0L) {
+    hm_abort("{.arg models} holds no fitted grasp models.", "bad_input", argument = "models", call = call)
+  }
+  types <- names(models)
+  ids <- x$meta$id
+  d <- matrix(NA_real_, length(ids), length(models), dimnames = list(ids, types))
+  all_pr <- tryCatch(predict(models, x, details = FALSE), error = function(e) NULL)
   for (j in seq_along(models)) {
     pr <- if (!is.null(all_pr)) all_pr[[j]] else
-      tryCatch(project(models[[j]], x, details = FALSE), error = function(e) e)
+      tryCatch(predict(models[[j]], x, details = FALSE), error = function(e) e)
     if (inherits(pr, "error")) {
       failures <- rbind(failures, data.frame(model = types[j],
                                              message = cli::ansi_strip(conditionMessage(pr))))
@@ -269,7 +268,7 @@ as.data.frame.grasp_classification <- function(x, row.names = NULL, optional = F
 #'   present in `x`, in Feix order), dimnames named `model` and `truth`.
 #'   `distance_minima()` counts its row and column minima.
 #' @seealso [classify()], `distance_minima()`
-#' @export
+#' @noRd
 #' @examples
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
@@ -305,7 +304,7 @@ distance_table <- function(models, x = NULL) {
 #' (column minimum on the diagonal), how many both, and how many models are the
 #' column minimum of no type.
 #'
-#' @param tab A [distance_table()] result.
+#' @param tab A `distance_table()` result.
 #' @return A one-row data frame: `models`, `types`, `model_min_own_type`,
 #'   `type_min_own_model`, `both`, `models_never_min`, and `most_attracting`
 #'   (the model that is the minimum of most types) with `n_attracted`.

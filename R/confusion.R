@@ -10,16 +10,20 @@
 #' `grasp_confusion()` cross-tabulates predicted against true grasp types,
 #' modelled on `yardstick::conf_mat()`. Rows are the predicted type (the model
 #' a recording was assigned to) and columns the true type, as in the thesis'
-#' Tables 5.6 and 5.8. `as_grasp_confusion()` builds one from the result of
-#' [classify()], from a data frame with `truth` and `predicted` columns, or from
-#' a square table.
+#' Tables 5.6 and 5.8. Given one argument it builds the matrix from the
+#' result of [classify()], from a data frame with `truth` and `predicted`
+#' columns, or from a square table (rows = prediction, columns = truth).
 #'
 #' Pairs where the truth or the prediction is missing cannot be tabulated; they
 #' are counted in `$n_missing_truth` and `$n_missing_predicted` and reported by
 #' `print()`, never dropped silently.
 #'
-#' @param truth True grasp types (factor or character).
-#' @param predicted Predicted grasp types (factor or character), same length.
+#' @param truth True grasp types (factor or character); or, without
+#'   `predicted`, a [classify()] result (`grasp_classification`), a data frame
+#'   with columns `truth` and `predicted`, or a square table / matrix with
+#'   rows = prediction and columns = truth.
+#' @param predicted Predicted grasp types (factor or character), as long as
+#'   `truth`.
 #' @param levels Class labels, in display order. By default the union of the
 #'   levels seen in `truth` and `predicted`, in Feix order when they are Feix
 #'   type names.
@@ -35,8 +39,16 @@
 #' cm <- grasp_confusion(truth, pred)
 #' cm
 #' summary(cm)
-grasp_confusion <- function(truth, predicted, levels = NULL) {
+#' grasp_confusion(data.frame(truth = truth, predicted = pred))
+grasp_confusion <- function(truth, predicted = NULL, levels = NULL) {
   call <- rlang::caller_env()
+  if (is.null(predicted)) {
+    if (!is.null(levels)) {
+      hm_abort("{.arg levels} goes with {.arg truth} and {.arg predicted} vectors.", "bad_input",
+               argument = "levels", call = call)
+    }
+    return(as_grasp_confusion(truth, call = call))
+  }
   new_confusion(truth, predicted, levels, call = call)
 }
 
@@ -94,22 +106,26 @@ confusion_levels <- function(truth, predicted) {
   unique(c(lev_of(predicted), lev_of(truth)))
 }
 
-#' @rdname grasp_confusion
+# grasp_confusion() of one object: the classification result, a data frame
+# or a table, each through new_confusion() / new_grasp_confusion().
 #' @importFrom rlang %||%
-#' @param x A [classify()] result (`grasp_classification`), a data frame with
-#'   columns `truth` and `predicted`, or a square table / matrix with rows =
-#'   prediction and columns = truth.
-#' @param ... Unused.
-#' @export
-as_grasp_confusion <- function(x, ...) {
+#' @noRd
+as_grasp_confusion <- function(x, ..., call = rlang::caller_env()) {
   UseMethod("as_grasp_confusion")
 }
 
 #' @export
-as_grasp_confusion.grasp_confusion <- function(x, ...) x
+as_grasp_confusion.default <- function(x, ..., call = rlang::caller_env()) {
+  hm_abort(c("{.arg truth} alone must be a classification, a data frame or a table, not {.obj_type_friendly {x}}.",
+             i = "Give {.arg predicted} to cross-tabulate two vectors."), "bad_input",
+           argument = "truth", call = call)
+}
 
 #' @export
-as_grasp_confusion.grasp_classification <- function(x, ...) {
+as_grasp_confusion.grasp_confusion <- function(x, ..., call = rlang::caller_env()) x
+
+#' @export
+as_grasp_confusion.grasp_classification <- function(x, ..., call = rlang::caller_env()) {
   p <- x$predictions
   # every model type and every true type present is a class of the matrix
   lev <- feix_order(unique(c(colnames(x$distances), as.character(stats::na.omit(p$truth)))))
@@ -117,25 +133,24 @@ as_grasp_confusion.grasp_classification <- function(x, ...) {
 }
 
 #' @export
-as_grasp_confusion.data.frame <- function(x, ...) {
+as_grasp_confusion.data.frame <- function(x, ..., call = rlang::caller_env()) {
   if (!all(c("truth", "predicted") %in% names(x))) {
     hm_abort("A data frame needs columns {.field truth} and {.field predicted}.", "bad_input",
-             argument = "x", call = rlang::caller_env())
+             argument = "truth", call = call)
   }
-  new_confusion(x$truth, x$predicted, call = rlang::caller_env())
+  new_confusion(x$truth, x$predicted, call = call)
 }
 
 #' @export
-as_grasp_confusion.table <- function(x, ...) {
-  as_grasp_confusion.matrix(unclass(x), ...)
+as_grasp_confusion.table <- function(x, ..., call = rlang::caller_env()) {
+  as_grasp_confusion.matrix(unclass(x), call = call)
 }
 
 #' @export
-as_grasp_confusion.matrix <- function(x, ...) {
-  call <- rlang::caller_env()
+as_grasp_confusion.matrix <- function(x, ..., call = rlang::caller_env()) {
   if (nrow(x) != ncol(x) || any(!is.finite(x)) || any(x < 0) || any(x != round(x))) {
     hm_abort("A confusion table must be square with non-negative integer counts.", "bad_input",
-             argument = "x", call = call)
+             argument = "truth", call = call)
   }
   lev <- rownames(x) %||% colnames(x) %||% as.character(seq_len(nrow(x)))
   new_grasp_confusion(as.table(matrix(as.integer(x), nrow(x), dimnames = list(Prediction = lev, Truth = lev))))

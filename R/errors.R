@@ -25,7 +25,9 @@
 #'   `no_files`, `file_exists`, `no_switch`, `no_segments`, and `bad_skeleton`
 #'   raised while reading an `.xmlskel` file.
 #' * `handmotion_error_fit_failed`: data that cannot be fitted.
-#'   Specific classes: `too_few_recordings`, `reference_too_small`.
+#'   Specific classes: `too_few_recordings`, `reference_too_small`,
+#'   `model_failed` (a grasp type whose model could not be fitted, asked for
+#'   by name).
 #' * `handmotion_error_missing_dependency`: a suggested package that a
 #'   function needs is not installed (no family).
 #'
@@ -52,7 +54,7 @@ error_families <- c(
   not_in_manifest = "bad_file", bad_manifest = "bad_file", no_files = "bad_file",
   file_exists = "bad_file", no_switch = "bad_file", no_segments = "bad_file",
   fit_failed = "fit_failed", too_few_recordings = "fit_failed",
-  reference_too_small = "fit_failed",
+  reference_too_small = "fit_failed", model_failed = "fit_failed",
   missing_dependency = NA_character_
 )
 

@@ -42,7 +42,7 @@
 #'   (the yardstick is "like real"), for the KS distance the training
 #'   recordings' distance.
 #'
-#' Over-long recordings (see [find_overlong()]) are left out of both real
+#' Over-long recordings (the rule of [fit_grasp_model()]) are left out of both real
 #' samples by default, with the threshold the models use (from each type's
 #' training frame counts): the thesis' models are fitted without them, as
 #' recordings that did not end with the grasp, so they are not part of what
@@ -66,8 +66,9 @@
 #' @param n Generated grasps (and training recordings) per type and
 #'   repetition; by default the number of held-out recordings of each type.
 #' @param reps Repetitions averaged.
-#' @param overlong An [overlong_rule()] whose over-long recordings are left
-#'   out of the real samples (per type, threshold from the training
+#' @param overlong The over-long rule of [fit_grasp_model()], `c(iqr_mult = ,
+#'   median_mult = )`, whose over-long recordings are left out of the real
+#'   samples (per type, threshold from the training
 #'   recordings), or `NULL` to keep every recording.
 #' @param seed Seed (the global RNG is restored afterwards).
 #' @return A data frame of class `generation_evaluation` with columns `model`,
@@ -88,7 +89,7 @@
 #' ev <- evaluate_generation(m, test, train, reps = 2)
 #' ev
 evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5,
-                                overlong = overlong_rule(), seed = 1) {
+                                overlong = c(iqr_mult = 3, median_mult = 1.5), seed = 1) {
   call <- rlang::caller_env()
   sets <- if (inherits(models, "grasp_models")) list(model = models) else models
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasp_models")) ||
@@ -101,11 +102,9 @@ evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5,
   reps <- check_whole(reps, "reps", max = 1000, call = call)
   if (!is.null(n)) n <- check_whole(n, "n", min = 5, max = 1e5, call = call)
   seed <- check_seed(seed, call = call)
-  if (!is.null(overlong) && !inherits(overlong, "overlong_rule")) {
-    hm_abort("{.arg overlong} must be made by {.fn overlong_rule} or be {.code NULL}.", "bad_input",
-             argument = "overlong", call = call)
-  }
-  types <- names(sets[[1]])
+  overlong <- as_overlong_rule(overlong, allow_null = TRUE, call = call)
+  # the types every set could fit (a failed type has nothing to generate)
+  types <- Reduce(intersect, lapply(sets, function(s) names(fitted_models(s))))
   missing <- setdiff(types, as.character(unique(held_out$meta$grasp)))
   if (length(missing)) {
     hm_abort("{.arg held_out} has no recordings of {.val {missing}}.", "bad_input",

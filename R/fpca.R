@@ -319,7 +319,7 @@ fpca_project <- function(fit, Ynew) {
 }
 
 # The one projection (scores and residual norms) of curves given as the
-# COLUMNS of Yt (L x m), unchecked, in the native kernel that project() uses
+# COLUMNS of Yt (L x m), unchecked, in the native kernel that predict.grasp_model() uses
 # for whole model sets (src/project-kernel.c): scores are <y - mean, phi_c>
 # with the quadrature weights, the residual norm is the weighted L2 norm of
 # y - mean - sum_c score_c phi_c (time weights multiply the quadrature

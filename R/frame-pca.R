@@ -30,7 +30,7 @@
 #' aligned data: the evidence for abandoning the approach.
 #'
 #' @param x A [grasps()] object of one grasp type, or an alignment from
-#'   [align_recordings()].
+#'   `align_recordings()`.
 #' @param d Number of PCs kept in each frame.
 #' @param k Number of FPCs of each PC's weight curve (and of each DoF in the
 #'   comparison).
@@ -52,9 +52,9 @@
 #'   PC), `gmm` (one `gmm_fit()` per PC), `reconstruction` (data frame: `id`,
 #'   `frame_pca_rmse`, `fpca_rmse`), `align_signs`, `d`, `k`, `ids`, `dofs`,
 #'   `grasp`.
-#' @seealso [autoplot.frame_pca_model()], [fit_grasp_model()] (the model that
+#' @seealso `autoplot.frame_pca_model()`, [fit_grasp_model()] (the model that
 #'   was kept).
-#' @export
+#' @noRd
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
 #' raw <- fit_frame_pca_model(g)
@@ -264,6 +264,7 @@ print.frame_pca_model <- function(x, ...) {
 #' @return A ggplot object.
 #' @export
 #' @method autoplot frame_pca_model
+#' @noRd
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
 #' ggplot2::autoplot(fit_frame_pca_model(g, align_signs = TRUE))

@@ -55,7 +55,7 @@ generics::generate
 #'
 #' **Joint limits.** With `limits = TRUE` every DoF whose recordings respect
 #' the default hand's joint limits ([hand_skeleton()], mapped by
-#' [default_joint_map()]; the ranges of the model's `limits` table, where
+#' [joint_map()]; the ranges of the model's `limits` table, where
 #' `enforced` is `TRUE`: at most 10% of the training frames outside) is kept
 #' inside its range by a smooth map on the template curve: the identity
 #' inside the range less a margin of 5% of its width, and beyond that an

@@ -10,9 +10,9 @@
 #' Fits the model of Jeppsson (2017, eq. 2.5) to the recordings of one grasp
 #' type:
 #' 1. recordings whose frame count is significantly longer than the rest are
-#'    removed by the documented rule of [find_overlong()] (`overlong`);
+#'    removed by a documented rule (`overlong`, see Over-long recordings);
 #' 2. the rest are aligned by multivariate dynamic time warping
-#'    ([align_recordings()]) to the type's mean frame count `L`; recordings with
+#'    (kept as `alignment`) to the type's mean frame count `L`; recordings with
 #'    a degenerate warp (one frame repeated over a long stretch, Figure 5.1)
 #'    are dropped, and linear warping is used only if the alignment fails;
 #' 3. functional PCA with `ncomp` components per DoF on the warped curves
@@ -25,6 +25,16 @@
 #'    recorded as `settings$gmm_max_iter`); when EM fails the mixture is
 #'    replaced by a single Gaussian with the sample mean and covariance
 #'    (Table 5.1).
+#'
+#' **Over-long recordings.** Jeppsson (2017, 4.1.2) removed "any recorded
+#' grasp with significantly longer frame count than the rest" without a
+#' rule; ours is a robust outlier fence: a recording is over-long when its
+#' frame count exceeds `max(Q3 + iqr_mult * IQR, median_mult * median)` of the
+#' frame counts of its grasp type. The IQR fence (`iqr_mult = 3`, Tukey's
+#' "far out") is robust to the over-long recordings themselves; the median
+#' floor (`median_mult = 1.5`) keeps a type whose lengths happen to be nearly
+#' equal (IQR close to 0) from losing ordinary recordings. The removed ones
+#' are listed in `removed`; `autoplot(x, type = "frame_counts")` draws them.
 #'
 #' **Sign convention.** Each DoF component is oriented so that its largest
 #' projection onto the first three Legendre polynomials on the template time
@@ -72,20 +82,22 @@
 #'   mixture steps; or a named list such as
 #'   `list(align = "fast", fpca = "reference", gmm = "reference")` to choose per
 #'   step.
-#' @param overlong The over-long rule, from [overlong_rule()].
+#' @param overlong The over-long rule, `c(iqr_mult = , median_mult = )` (see
+#'   Over-long recordings; a left-out value keeps its default).
 #' @param warping `"dtw"` aligns by dynamic time warping, with the linear
 #'   fallback only when it fails; `"linear"` asks for linear warping of every
 #'   recording (the thesis' fallback: time normalised to the template length,
 #'   so the timing stays in the curves). `NULL` (default): `"dtw"` for the
 #'   independent model (the thesis), `"linear"` for the copula model.
 #' @param max_stall Largest share of template frames a warp may spend on one
-#'   original frame before the recording counts as degenerately warped (see
-#'   [align_recordings()]).
+#'   original frame before the recording counts as degenerately warped (step
+#'   2 of the description).
 #' @param seed Optional seed for the mixture fits (the global RNG is restored
 #'   afterwards). With `NULL` the current RNG stream is used.
-#' @param keep_data Keep the warped curves and warping functions in the model
-#'   (needed by [autoplot.grasp_model()] for the data layers). Set to `FALSE`
-#'   to keep models small.
+#' @param keep_data Keep the alignment (warped curves, warping functions,
+#'   frame counts and degenerate warps) in the model, needed by
+#'   [autoplot.grasp_model()] for the data layers and the alignment picture.
+#'   Set to `FALSE` to keep models small.
 #' @param dependence How the DoFs are joined. `"independent"` (default) is
 #'   the thesis' model: each DoF's FPC scores and the warp scores are drawn
 #'   from their own mixtures, so fingers do not move together (the thesis'
@@ -121,13 +133,14 @@
 #'   (n x p x ncomp array), `gmm` (one `gmm_fit()` per DoF), `warp` (the warp
 #'   FPCA, scores and mixture), `fallbacks` (data frame: `step`, `dof`,
 #'   `reason`), `settings`, `engine`, `timing` (seconds per step) and, with
-#'   `keep_data`, `data` (warped array n x L x p, warps n x L, frame counts),
+#'   `keep_data`, `alignment` (a `grasp_alignment`: `warped` array n x L x p,
+#'   `warps` n x L, `n_frames`, `degenerate`, `method`, ...),
 #'   `dependence` (`type` and, for the copula, `copula`: its score columns,
 #'   correlation `cor`, `shrinkage` and tabulated marginal quantiles) and
 #'   `limits` (the joint limits per DoF, the share of recorded frames outside
 #'   them, and whether generation enforces them).
 #' @seealso [fit_grasp_models()] for every type at once, [generate()] and
-#'   [project()] to use a model, [autoplot.grasp_model()] to look at it.
+#'   [predict.grasp_model()] to project recordings onto a model, [autoplot.grasp_model()] to look at it.
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
@@ -138,7 +151,7 @@
 #' mc <- fit_grasp_model(g, seed = 1, dependence = "copula")
 #' mc
 fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k = NULL,
-                            engine = c("fast", "reference"), overlong = overlong_rule(),
+                            engine = c("fast", "reference"), overlong = c(iqr_mult = 3, median_mult = 1.5),
                             warping = NULL, max_stall = 0.25, seed = NULL,
                             keep_data = TRUE, dependence = c("independent", "copula"),
                             mixture_guard = NULL, fpc_scores = NULL) {
@@ -158,7 +171,7 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
                              arg = "fpc_scores", call = call)
   x <- select_one_type(x, grasp, call)
   settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
-                   k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,
+                   k = as.integer(k), overlong = as_overlong_rule(overlong, call = call), warping = warping, max_stall = max_stall,
                    keep_data = keep_data, gmm_max_iter = gmm_model_max_iter,
                    dependence = dependence, mixture_guard = mixture_guard, fpc_scores = fpc_scores)
   with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))
@@ -253,7 +266,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
   if (settings$ncomp == 1L) var_explained <- matrix(var_explained, ncol = 1)
   dimnames(var_explained) <- list(dofs, paste0("FPC", seq_len(settings$ncomp)))
 
-  model <- list(
+  new_grasp_model(
     grasp = type,
     grasp_id = match(type, feix_levels()),
     dofs = dofs, rate = x$rate, unit = x$unit,
@@ -270,18 +283,58 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
     fallbacks = fallbacks,
     settings = settings, engine = engines,
     timing = c(align = t_align - t0, fpca = t_fpca - t_align, gmm = t_gmm - t_fpca,
-               total = t_gmm - t0)
+               total = t_gmm - t0),
+    limits = recorded_limits(x[prep$ids], dofs),
+    # the alignment as the aligner returned it (warped curves, warping
+    # functions, frame counts, degenerate warps): the model's data, kept once
+    alignment = if (isTRUE(settings$keep_data)) aln
   )
+}
+
+# The one constructor of class "grasp_model": the fitted parts in, the
+# derived ones (the generation sampler, the cross-DoF dependence) built here
+# so that every model has them, then the shapes checked.
+new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, argvals, n_input, n_used,
+                            ids, removed, warping, fpca, basis, var_explained, scores, gmm, warp,
+                            fallbacks, settings, engine, timing, limits, alignment = NULL) {
+  model <- list(grasp = grasp, grasp_id = grasp_id, dofs = dofs, rate = rate, unit = unit,
+                target_length = target_length, argvals = argvals, n_input = n_input, n_used = n_used,
+                ids = ids, removed = removed, warping = warping, fpca = fpca, basis = basis,
+                var_explained = var_explained, scores = scores, gmm = gmm, warp = warp,
+                fallbacks = fallbacks, settings = settings, engine = engine, timing = timing)
   model$sampler <- build_sampler(model)
   model$dependence <- list(type = settings$dependence,
                            copula = if (settings$dependence == "copula") fit_score_copula(model))
-  model$limits <- recorded_limits(x[prep$ids], dofs)
-  if (isTRUE(settings$keep_data)) {
-    model$data <- list(warped = aln$warped, warps = aln$warps,
-                       n_frames = stats::setNames(x$meta$n_frames[match(prep$ids, x$meta$id)], prep$ids))
-  }
-  structure(model, class = "grasp_model")
+  model$limits <- limits
+  model$alignment <- alignment
+  validate_grasp_model(structure(model, class = "grasp_model"))
 }
+
+# Shapes that fit together: p DoFs, L template frames, n recordings used,
+# ncomp FPCs per DoF; one FPCA and one mixture per DoF; the kept alignment
+# (if any) holds exactly the recordings used.
+validate_grasp_model <- function(x) {
+  p <- length(x$dofs)
+  L <- x$target_length
+  n <- x$n_used
+  q <- x$settings$ncomp
+  stopifnot(
+    is.character(x$grasp), length(x$grasp) == 1L,
+    length(x$argvals) == L, n == length(x$ids), n <= x$n_input,
+    identical(names(x$fpca), x$dofs), identical(names(x$gmm), x$dofs),
+    all(vapply(x$fpca, inherits, logical(1), "fpca_fit")),
+    all(vapply(x$gmm, inherits, logical(1), "gmm_fit")),
+    has_dim(x$basis$mean, c(L, p)), has_dim(x$basis$components, c(L, p, q)),
+    has_dim(x$scores, c(n, p, q)), has_dim(x$var_explained, c(p, q)),
+    nrow(x$warp$components) == L, nrow(x$warp$scores) == n,
+    is.data.frame(x$removed), is.data.frame(x$fallbacks),
+    x$dependence$type %in% c("independent", "copula"),
+    is.null(x$alignment) || (inherits(x$alignment, "grasp_alignment") && dim(x$alignment$warped)[1] == n)
+  )
+  x
+}
+
+has_dim <- function(a, d) length(dim(a)) == length(d) && all(dim(a) == d)
 
 # Steps 1-2 (also used by the frame-PCA alternative): over-long removal, then
 # alignment to the mean frame count, with degenerate warps dropped and a

@@ -11,8 +11,12 @@
 #' Progress is reported through `progressr` (wrap the call in
 #' [progressr::with_progress()] or set `progressr::handlers(global = TRUE)` to
 #' see it). A type whose fit fails with a handmotion error (for example too few
-#' usable recordings) is recorded in `attr(, "failed")` instead of stopping
-#' the others.
+#' usable recordings) stays in the set as a failed model (class
+#' `grasp_model_failed`, with the error's message and class), like a null
+#' model in a fable, instead of stopping the others: `print()` and `summary()`
+#' list it, [generate()] and [classify()] skip it (saying so), and asking for
+#' it by name (`generate(ms, grasp = )`) is an error of class
+#' `handmotion_error_model_failed`.
 #'
 #' **Clusters and schedulers.** Any future plan works unchanged and gives the
 #' same models for the same seed (tested under sequential, multicore,
@@ -43,11 +47,12 @@
 #'   cannot be combined with `cache`).
 #' @param cache Optional folder for resumable fits (see Details); created if
 #'   needed.
-#' @return An object of class `grasp_models`: a named list of `grasp_model`
-#'   objects (names = grasp type), with attributes `failed` (data frame:
-#'   `grasp`, `message`, `class`) and `seed`.
+#' @return An object of class `grasp_models`: a list named by grasp type,
+#'   one `grasp_model` per fitted type and one `grasp_model_failed` (a list
+#'   with `grasp`, `grasp_id`, `message` and `class`) per type whose fit
+#'   failed; attribute `seed`.
 #' @seealso [summary.grasp_models()] (Tables 5.1 and 5.2), [generate()],
-#'   [project()], [classify()].
+#'   [predict.grasp_model()], [classify()].
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 1:2, objects = 2, trials = 2, seed = 1)
@@ -103,17 +108,10 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
       MoreArgs = list(args = args, progress = p), SIMPLIFY = FALSE, USE.NAMES = FALSE,
       future.seed = if (is.null(streams)) TRUE else streams[todo])
   }
+  # a failed type stays in the set, as a record of why
   failed <- vapply(fits, inherits, logical(1), what = "error")
-  fail_df <- data.frame(
-    grasp = types[failed],
-    message = vapply(fits[failed], function(e) {
-      gsub("\\s*\n\\s*", " ", cli::ansi_strip(conditionMessage(e)))
-    }, character(1)),
-    class = vapply(fits[failed], function(e) class(e)[1], character(1)),
-    stringsAsFactors = FALSE
-  )
-  rownames(fail_df) <- NULL
-  new_grasp_models(fits[!failed], failed = fail_df, seed = seed)
+  fits[failed] <- mapply(new_grasp_model_failed, types[failed], fits[failed], SIMPLIFY = FALSE)
+  new_grasp_models(fits, seed = seed)
 }
 
 # One type's fit for a worker. A top-level function, so the closure shipped to
@@ -152,12 +150,52 @@ cache_paths <- function(cache, parts, args, streams, call) {
   file.path(cache, paste0(gsub("[^A-Za-z0-9]+", "-", names(parts)), "-", keys, ".rds"))
 }
 
-new_grasp_models <- function(models, failed = NULL, seed = NULL) {
-  if (is.null(failed)) {
-    failed <- data.frame(grasp = character(), message = character(), class = character(),
-                         stringsAsFactors = FALSE)
-  }
-  structure(models, class = "grasp_models", failed = failed, seed = seed)
+# The one constructor of class "grasp_models": a list named by grasp type of
+# fitted models and failed ones.
+new_grasp_models <- function(models, seed = NULL) {
+  validate_grasp_models(structure(models, class = "grasp_models", seed = seed))
+}
+
+# Every element a model or a failure, named by its own type, once; the fitted
+# models share their DoFs, rate and unit (one set classifies one kind of
+# recording).
+validate_grasp_models <- function(x) {
+  m <- unclass(x)
+  ok <- vapply(m, function(e) inherits(e, "grasp_model") || inherits(e, "grasp_model_failed"), logical(1))
+  fitted <- m[vapply(m, inherits, logical(1), "grasp_model")]
+  same <- function(f) length(unique(lapply(fitted, f))) <= 1L
+  stopifnot(all(ok), !is.null(names(m)) || !length(m), !anyDuplicated(names(m)),
+            !length(m) || identical(names(m), vapply(m, function(e) as.character(e$grasp), "", USE.NAMES = FALSE)),
+            same(function(e) e$dofs), same(function(e) e$rate), same(function(e) e$unit))
+  x
+}
+
+# A type whose fit failed, from the error it raised: the set's null model.
+new_grasp_model_failed <- function(grasp, error) {
+  structure(list(grasp = grasp, grasp_id = match(grasp, feix_levels()),
+                 message = gsub("\\s*\n\\s*", " ", cli::ansi_strip(conditionMessage(error))),
+                 class = class(error)[1]),
+            class = "grasp_model_failed")
+}
+
+#' @export
+print.grasp_model_failed <- function(x, ...) {
+  cat(sprintf("<grasp_model_failed> %s: %s\n  (%s)\n", x$grasp, x$message, x$class))
+  invisible(x)
+}
+
+# The fitted models of a set (a plain named list) and its failed types (a
+# data frame: grasp, message, class).
+fitted_models <- function(x) {
+  m <- unclass(x)
+  attr(m, "seed") <- NULL
+  m[vapply(m, inherits, logical(1), "grasp_model")]
+}
+
+failed_types <- function(x) {
+  f <- unclass(x)[vapply(unclass(x), inherits, logical(1), "grasp_model_failed")]
+  data.frame(grasp = vapply(f, `[[`, "", "grasp"), message = vapply(f, `[[`, "", "message"),
+             class = vapply(f, `[[`, "", "class"), stringsAsFactors = FALSE, row.names = NULL)
 }
 
 #' @export
@@ -174,26 +212,44 @@ new_grasp_models <- function(models, failed = NULL, seed = NULL) {
   if (length(absent)) {
     hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input", argument = "i")
   }
-  new_grasp_models(unclass(x)[keep], failed = attr(x, "failed"), seed = attr(x, "seed"))
+  new_grasp_models(unclass(x)[keep], seed = attr(x, "seed"))
 }
 
-# Models chosen by grasp name or id, for generate().
+# Fitted models chosen by grasp name or id, for generate(): every fitted one
+# by default (a warning names the failed types), an error for a failed type
+# asked for by name.
 select_models <- function(x, grasp, call) {
-  if (is.null(grasp)) return(unclass(x))
+  failed <- failed_types(x)
+  if (is.null(grasp)) {
+    if (nrow(failed)) {
+      hm_warn(c("Skipping the grasp type{?s} whose model failed: {.val {failed$grasp}}.",
+                i = "See {.code print()} of the model set for the reasons."), "model_failed",
+              grasp = failed$grasp)
+    }
+    return(fitted_models(x))
+  }
   keep <- as.character(as_feix_grasp(grasp, call = call))
   absent <- setdiff(keep, names(x))
   if (length(absent)) {
     hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input",
              argument = "grasp", call = call)
   }
-  unclass(x)[keep]
+  bad <- failed[failed$grasp %in% keep, , drop = FALSE]
+  if (nrow(bad)) {
+    hm_abort(c("The model of {.val {bad$grasp}} could not be fitted, so it cannot generate.",
+               x = "{bad$message}"), "model_failed", argument = "grasp", grasp = bad$grasp, call = call)
+  }
+  fitted_models(x)[keep]
 }
 
 #' @export
 print.grasp_models <- function(x, ...) {
   s <- summary(x)
-  cat(sprintf("<grasp_models> %d grasp type model%s\n", length(x), if (length(x) == 1) "" else "s"))
-  if (length(x)) {
+  f <- failed_types(x)
+  s <- s[is.na(s$failed), , drop = FALSE]
+  cat(sprintf("<grasp_models> %d grasp type model%s%s\n", nrow(s), if (nrow(s) == 1) "" else "s",
+              if (nrow(f)) sprintf(", %d failed", nrow(f)) else ""))
+  if (nrow(s)) {
     cat(sprintf("  recordings used: %d of %d; target lengths %d to %d frames\n",
                 sum(s$n_used), sum(s$n_input), min(s$target_length), max(s$target_length)))
     cat(sprintf("  linear warping: %d type%s; EM fallbacks: %d DoF%s in %d type%s\n",
@@ -207,10 +263,7 @@ print.grasp_models <- function(x, ...) {
                 paste0(names(dep), " (", dep, " type", ifelse(dep == 1, "", "s"), ")", collapse = ", "),
                 sum(s$n_guarded)))
   }
-  f <- attr(x, "failed")
-  if (!is.null(f) && nrow(f)) {
-    cat(sprintf("  failed: %s\n", paste0(f$grasp, " (", f$message, ")", collapse = "; ")))
-  }
+  if (nrow(f)) cat(sprintf("  failed: %s\n", paste0(f$grasp, " (", f$message, ")", collapse = "; ")))
   invisible(x)
 }
 
@@ -229,13 +282,22 @@ print.grasp_models <- function(x, ...) {
 #'   `constant_dofs`, `dependence` (`"independent"` or `"copula"`),
 #'   `n_guarded` (mixtures the mixture guard replaced by one Gaussian), and `min_var`, `median_var`, `mean_var`, `max_var`: the
 #'   percentage of variance explained by the FPCs of each DoF, summarised over
-#'   DoFs. Types that failed to fit are listed in `attr(, "failed")`.
+#'   DoFs, and `failed`: `NA` for a fitted type, the error message for a type
+#'   whose fit failed (its other figures `NA`).
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 1:2, objects = 2, trials = 2, seed = 1)
 #' summary(fit_grasp_models(g, seed = 1))
 summary.grasp_models <- function(object, ...) {
   rows <- lapply(unclass(object), function(m) {
+    if (inherits(m, "grasp_model_failed")) {
+      return(data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n_input = NA_integer_, n_used = NA_integer_,
+                        n_overlong = NA_integer_, n_degenerate = NA_integer_, target_length = NA_integer_,
+                        warping = NA_character_, em_fallback = NA_character_, n_em_fallback = NA_integer_,
+                        constant_dofs = NA_character_, dependence = NA_character_, n_guarded = NA_integer_,
+                        min_var = NA_real_, median_var = NA_real_, mean_var = NA_real_, max_var = NA_real_,
+                        failed = m$message, stringsAsFactors = FALSE))
+    }
     ve <- 100 * rowSums(m$var_explained)
     fb <- m$fallbacks
     em <- fb$dof[fb$step == "mixture"]
@@ -250,7 +312,7 @@ summary.grasp_models <- function(object, ...) {
                dependence = m$dependence$type %||% "independent",
                n_guarded = sum(fb$step %in% c("mixture_guard", "warp_mixture_guard")),
                min_var = stat(min), median_var = stat(stats::median), mean_var = stat(mean),
-               max_var = stat(max), stringsAsFactors = FALSE)
+               max_var = stat(max), failed = NA_character_, stringsAsFactors = FALSE)
   })
   out <- if (length(rows)) do.call(rbind, rows) else
     data.frame(grasp_id = integer(), grasp = character(), n_input = integer(), n_used = integer(),
@@ -258,19 +320,21 @@ summary.grasp_models <- function(object, ...) {
                warping = character(), em_fallback = character(), n_em_fallback = integer(),
                constant_dofs = character(), dependence = character(), n_guarded = integer(),
                min_var = numeric(), median_var = numeric(),
-               mean_var = numeric(), max_var = numeric(), stringsAsFactors = FALSE)
+               mean_var = numeric(), max_var = numeric(), failed = character(), stringsAsFactors = FALSE)
   rownames(out) <- NULL
-  structure(out, class = c("summary_grasp_models", "data.frame"), failed = attr(object, "failed"))
+  structure(out, class = c("summary_grasp_models", "data.frame"))
 }
 
 #' @export
 print.summary_grasp_models <- function(x, ...) {
-  cat(sprintf("Grasp models: %d type%s\n", nrow(x), if (nrow(x) == 1) "" else "s"))
-  print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
-  f <- attr(x, "failed")
-  if (!is.null(f) && nrow(f)) {
+  d <- as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE)
+  bad <- !is.na(d$failed)
+  cat(sprintf("Grasp models: %d type%s%s\n", sum(!bad), if (sum(!bad) == 1) "" else "s",
+              if (any(bad)) sprintf(", %d failed", sum(bad)) else ""))
+  print(d[!bad, setdiff(names(d), "failed"), drop = FALSE], digits = 4, row.names = FALSE)
+  if (any(bad)) {
     cat("Failed types:\n")
-    print(f, row.names = FALSE)
+    print(d[bad, c("grasp", "failed"), drop = FALSE], row.names = FALSE)
   }
   invisible(x)
 }

@@ -372,27 +372,106 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
   )
 }
 
-#' Plot joint-angle trajectories of a grasps set
+#' Plot a grasps set: joint angles, hands, frame strips, frame counts
 #'
-#' One panel per DoF, one line per recording, coloured by grasp type or subject.
+#' * `type = "curves"` (default): one panel per DoF, one line per recording,
+#'   coloured by grasp type or subject.
+#' * `type = "poses"`: one solid hand per group (by default per grasp type)
+#'   at one frame, the way the thesis' Appendix A shows the last frame of a
+#'   recorded and a generated grasp for each of the 33 types. With `compare`
+#'   the sets' hands stand side by side in each panel, in order, named
+#'   underneath; several recordings of one group and set are overlaid.
+#' * `type = "strip"`: one recording of each set as a row of hands at equally
+#'   spaced fractions of its duration (0%, 20%, ..., 100% for `n_frames =
+#'   6`), the way the thesis' Tables 5.4 and 5.5 compare a recorded grasp
+#'   with a generated one (the columns are fractions of each grasp's own
+#'   duration, since the two rarely have the same number of frames); with
+#'   `compare` one row per set.
+#' * `type = "frame_counts"`: a histogram of the number of frames of every
+#'   recording, one panel per grasp type, coloured by whether the over-long
+#'   rule of [fit_grasp_model()] (`overlong`) removes the recording before
+#'   alignment; the rule's threshold is a dashed line (the left half of
+#'   Jeppsson (2017) Figure 5.1; [autoplot.grasp_alignment()] shows the
+#'   aligned recordings and their warping paths).
 #'
 #' @param object A [grasps()] object.
-#' @param colour Metadata column to colour by: `"grasp"` (default) or `"subject"`
-#'   (or any other metadata column).
-#' @param dofs DoFs to show (names or indices); all by default.
-#' @param max_recordings Draw at most this many recordings (a random sample,
-#'   seeded) so large sets stay readable and fast.
-#' @param ... Unused.
-#' @return A ggplot object.
+#' @param type `"curves"`, `"poses"`, `"strip"` or `"frame_counts"`.
+#' @param colour For `"curves"`: metadata column to colour by, `"grasp"`
+#'   (default) or `"subject"` (or any other metadata column).
+#' @param dofs For `"curves"`: DoFs to show (names or indices); all by
+#'   default.
+#' @param max_recordings For `"curves"`: draw at most this many recordings (a
+#'   random sample, seeded) so large sets stay readable and fast.
+#' @param compare For `"poses"` and `"strip"`: a named list of further
+#'   [grasps()] sets drawn beside `object`, e.g. `list(generated =
+#'   generate(models))`.
+#' @param label For `"poses"` and `"strip"`: the name of `object`'s set
+#'   (shown with `compare`; default `"x"`).
+#' @param frame For `"poses"`: frame to draw, `"last"` (default), `"first"` or
+#'   an index.
+#' @param by For `"poses"`: metadata column to group by (one panel per value).
+#' @param per_group For `"poses"`: recordings drawn per group and set (the
+#'   first ones).
+#' @param recording For `"strip"`: which recording of each set to draw, an
+#'   index or an id (recycled over the sets).
+#' @param n_frames For `"strip"`: number of frames drawn per recording (at
+#'   least 2).
+#' @param grasp For `"frame_counts"`: grasp types to show (names or ids
+#'   1-33); all labelled types by default.
+#' @param overlong For `"frame_counts"`: the over-long rule, as in
+#'   [fit_grasp_model()].
+#' @param binwidth For `"frame_counts"`: width of the histogram bins, in
+#'   frames.
+#' @param skeleton,view For `"poses"` and `"strip"`: a [hand_skeleton()] and
+#'   the viewing direction (see [autoplot.hand_pose()]).
+#' @param ... For `"poses"` and `"strip"`, passed to [forward_kinematics()].
+#' @return A ggplot object. For `"poses"` its layers' data have columns `set`
+#'   and `group`; for `"strip"` `set`, `id`, `frame` and `time` (the
+#'   fraction of the recording's duration, as a label); for
+#'   `"frame_counts"` `id`, `grasp`, `n_frames` and `status` (`"kept"` or
+#'   `"over-long"`).
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 3, grasps = c(1, 17), objects = 1, trials = 1, seed = 1)
 #' ggplot2::autoplot(g)
+#' ggplot2::autoplot(g, type = "poses", view = "radial")
+#' ggplot2::autoplot(g, type = "poses", label = "recorded", compare = list(again = g))
+#' ggplot2::autoplot(g, type = "strip", n_frames = 4)
+#' ggplot2::autoplot(g, type = "frame_counts")
 #' @method autoplot grasps
-autoplot.grasps <- function(object, colour = "grasp", dofs = NULL, max_recordings = 200, ...) {
+autoplot.grasps <- function(object, type = c("curves", "poses", "strip", "frame_counts"),
+                            colour = "grasp", dofs = NULL, max_recordings = 200,
+                            compare = NULL, label = NULL, frame = "last", by = "grasp", per_group = 1L,
+                            recording = 1L, n_frames = 6L, grasp = NULL,
+                            overlong = c(iqr_mult = 3, median_mult = 1.5), binwidth = 1,
+                            skeleton = hand_skeleton(), view = "oblique", ...) {
+  call <- rlang::caller_env()
+  type <- check_choice(type, arg = "type", call = rlang::current_env())
+  check_grasps(object, "object", call = call)
+  sets <- function() {
+    if (is.null(compare)) return(if (is.null(label)) object else stats::setNames(list(object), label))
+    if (!is.list(compare) || inherits(compare, "grasps") || is.null(names(compare)) ||
+        any(!nzchar(names(compare))) || !all(vapply(compare, inherits, logical(1), "grasps"))) {
+      hm_abort("{.arg compare} must be a named list of {.cls grasps} objects.", "bad_input",
+               argument = "compare", call = call)
+    }
+    c(stats::setNames(list(object), label %||% "x"), compare)
+  }
+  switch(type,
+    curves = plot_grasp_curves(object, colour, dofs, max_recordings, call),
+    poses = plot_pose_grid(sets(), frame = frame, by = by, per_group = per_group, skeleton = skeleton,
+                           view = view, ..., call = call),
+    strip = plot_frame_strip(sets(), recording = recording, n_frames = n_frames, skeleton = skeleton,
+                             view = view, ..., call = call),
+    frame_counts = plot_frame_counts(object, grasp = grasp, rule = as_overlong_rule(overlong, call = call),
+                                     binwidth = binwidth, call = call))
+}
+
+# Joint-angle curves: one panel per DoF, one line per recording.
+plot_grasp_curves <- function(object, colour, dofs, max_recordings, call) {
   if (!colour %in% names(object$meta)) {
     hm_abort("{.arg colour} must name a metadata column ({.val {names(object$meta)}}), not {.val {colour}}.",
-             "bad_input", argument = "colour")
+             "bad_input", argument = "colour", call = call)
   }
   if (length(object) > max_recordings) {
     keep <- sort(sample_seeded(length(object), max_recordings, seed = 1L))

@@ -28,8 +28,9 @@
 #'   DoFs is outside the skeleton's joint limits (the limits of its
 #'   `.xmlskel` joints, see [hand_skeleton()]).
 #' @param markers Hand-over markers to draw on the hand as small spheres:
-#'   marker names from [hand_marker_set()] (for instance
-#'   [handpicked_markers()] or the markers a [fit_handover()] model uses), or
+#'   marker names (see [select_markers()]; for instance
+#'   `select_markers(method = "handpicked")` or the markers a [fit_handover()]
+#'   model uses), or
 #'   `NULL` for none.
 #' @param speed Initial playback speed (0.1, 0.25, 0.5, 1 or 2).
 #' @param autoplay,loop Start playing at once; start again at the end.
@@ -43,7 +44,7 @@
 #' @param ... Passed to [forward_kinematics()] (`mapping`, `mode`,
 #'   `deactivate`).
 #' @return An htmlwidget of class `hand3d`.
-#' @seealso [animate_hand()] for a 2D page without WebGL,
+#' @seealso [write_hand_animation()] for videos and a 2D page without WebGL,
 #'   [autoplot.hand_pose()] for still pictures.
 #' @export
 #' @examples

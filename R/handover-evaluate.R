@@ -2,46 +2,15 @@
 # reconstruction error, marker-set comparisons, the PCA error per number of
 # components.
 
-#' Search-based marker selection (after Kang et al. 2012)
-#'
-#' The search baseline of the hand-over paper: choose the marker set with the
-#' least reconstruction error on held-out reference data. The reference is
-#' split by a metadata column (by default grasp type, so the search rewards
-#' generalisation to unseen motions): alternate values of `holdout` (after a
-#' seeded shuffle) form the validation part. The search is greedy forward
-#' selection (add the marker that lowers the validation error most, `n`
-#' times; about `13 n` reconstructions), or with `exhaustive = TRUE` every
-#' `choose(13, n)` set (1,716 for six markers: slow).
-#'
-#' @param reference A [grasps()] reference database.
-#' @param n Number of markers.
-#' @param holdout Metadata column whose values are split between fitting and
-#'   validation.
-#' @param exhaustive Try every set instead of the greedy search.
-#' @param max_frames Validation frames used per evaluation (whole recordings,
-#'   a seeded sample), to bound the cost.
-#' @param seed Seed for the split and the sample (the global RNG is left
-#'   untouched).
-#' @param skeleton,... Passed to [markers_from_angles()].
-#' @param k,ridge Passed to [fit_handover()].
-#' @return A character vector of `n` marker names, in the order the greedy
-#'   search added them; attribute `"search"`: a data frame of the evaluated
-#'   sets and their validation errors (degrees).
-#' @seealso [select_markers()], [compare_marker_sets()]
-#' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 2, grasps = 1:4, objects = 1, trials = 1)
-#' search_markers(g, n = 2, max_frames = 200)
+# Search-based marker selection (after Kang et al. 2012), reached through
+# select_markers(method = "search"), which documents it: greedy forward (or
+# exhaustive) selection by the reconstruction error on a held-out part of the
+# reference, split by the metadata column `holdout`.
 search_markers <- function(reference, n = 6, holdout = "grasp", exhaustive = FALSE,
                            max_frames = 1500, seed = 1, k = 256, ridge = 1e-3,
-                           skeleton = hand_skeleton(), ...) {
-  call <- rlang::caller_env()
-  check_grasps(reference, "reference", call = call)
+                           skeleton = hand_skeleton(), ..., call = rlang::caller_env()) {
+  check_grasps(reference, "x", call = call)
   cand <- hand_marker_set()$marker[hand_marker_set()$segment == "hand"]
-  if (!is.numeric(n) || length(n) != 1L || is.na(n) || n < 1 || n > length(cand) || n != round(n)) {
-    hm_abort("{.arg n} must be a whole number from 1 to {length(cand)}, not {.val {format(n)}}.",
-             "bad_markers", argument = "n", call = call)
-  }
   if (!holdout %in% names(reference$meta)) {
     hm_abort("{.arg holdout} must name a metadata column ({.val {names(reference$meta)}}), not {.val {holdout}}.",
              "bad_input", argument = "holdout", call = call)
@@ -69,7 +38,7 @@ search_markers <- function(reference, n = 6, holdout = "grasp", exhaustive = FAL
   val_y <- do.call(rbind, reference$recordings[split$val])
   val_err <- function(set) {
     model <- handover_build(ref_all, ref_y, set, k = k, ridge = ridge, rate = reference$rate,
-                            call = call)
+                            unit = reference$unit, call = call)
     rec <- do.call(rbind, lapply(seq_along(val_mk), function(i) {
       reconstruct_one(model, val_mk[[i]][, marker_columns(set), drop = FALSE], names(val_mk)[i], call)$angles
     }))
@@ -104,11 +73,24 @@ unit_factor <- function(unit) if (identical(unit, "rad")) 180 / pi else 1
 #' frame (mean over DoFs, then over frames), in degrees (radians are
 #' converted).
 #'
+#' With `by = "ncomp"` it is the error of the PCA alone (the paper's Figure
+#' 1): how well `truth` is described by the first `q` principal components of
+#' `reference`, for every `q`: the average joint-angle error per frame of
+#' projecting `truth` onto the reference PCA and back. `recon` is then not
+#' used.
+#'
 #' @param truth,recon [grasps()] objects with the same recordings (ids, frame
 #'   counts and DoFs), e.g. a test set and `reconstruct(model, test)`.
-#' @param by `"overall"` (one number), `"recording"`, `"frame"` or `"dof"`.
+#' @param by `"overall"` (one number), `"recording"`, `"frame"`, `"dof"`, or
+#'   `"ncomp"` (the PCA error per number of components, see Details).
+#' @param reference For `by = "ncomp"`: a [grasps()] object whose frames the
+#'   PCA is fitted on, or a `handover_model` (its PCA is used); `truth` by
+#'   default.
 #' @return A number (degrees) for `by = "overall"`, else a data frame with
-#'   column `error`.
+#'   column `error`. For `by = "ncomp"` a data frame of class
+#'   `handover_pca_error`: `ncomp`, `error` (degrees) and `variance`
+#'   (cumulative proportion of reference variance), with an [autoplot()]
+#'   method.
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 1, grasps = 1:2, objects = 1, trials = 1)
@@ -116,10 +98,19 @@ unit_factor <- function(unit) if (identical(unit, "rad")) 180 / pi else 1
 #' noisy$recordings <- lapply(g$recordings, function(r) r + 2)
 #' handover_error(g, noisy)
 #' handover_error(g, noisy, by = "recording")
-handover_error <- function(truth, recon, by = c("overall", "recording", "frame", "dof")) {
+#' pe <- handover_error(g, by = "ncomp")
+#' head(pe)
+#' ggplot2::autoplot(pe)
+handover_error <- function(truth, recon = NULL, by = c("overall", "recording", "frame", "dof", "ncomp"),
+                           reference = NULL) {
   call <- rlang::caller_env()
   by <- check_choice(by, arg = "by", call = rlang::current_env())
   check_grasps(truth, "truth", call = call)
+  if (by == "ncomp") return(handover_pca_error(reference %||% truth, truth, call = call))
+  if (is.null(recon)) {
+    hm_abort("Give {.arg recon}, e.g. {.code reconstruct(model, truth)}.", "bad_input",
+             argument = "recon", call = call)
+  }
   check_grasps(recon, "recon", call = call)
   if (!identical(truth$meta$id, recon$meta$id) || !identical(truth$meta$n_frames, recon$meta$n_frames) ||
       !identical(truth$dofs, recon$dofs)) {
@@ -150,8 +141,8 @@ handover_error <- function(truth, recon, by = c("overall", "recording", "frame",
 #' joint-angle error of reconstructing `test` (the paper's Figures 2 and 4).
 #' The default sets are the paper's comparison: our ranked 3- and 6-marker
 #' sets ([select_markers()]), the 6-marker set without PCA (`method =
-#' "direct"`, Figure 2), the hand-picked set ([handpicked_markers()]) and a
-#' search-based 6-marker set ([search_markers()]).
+#' "direct"`, Figure 2), the hand-picked set and a search-based 6-marker set
+#' (`select_markers(method = "handpicked")` and `"search"`).
 #'
 #' @param reference A [grasps()] reference database.
 #' @param test A [grasps()] test set (ideally unseen grasp types and subjects).
@@ -208,31 +199,13 @@ print.handover_comparison <- function(x, ...) {
   invisible(x)
 }
 
-#' PCA reconstruction error against the number of components
-#'
-#' How well the joint angles are described by the first `q` principal
-#' components of the reference (the paper's Figure 1): the average
-#' joint-angle error per frame of projecting `data` onto the reference PCA
-#' and back, for each `q`.
-#'
-#' @param reference A [grasps()] object (the PCA is fitted on its frames), or
-#'   a `handover_model` (its PCA is used).
-#' @param data A [grasps()] object to reconstruct; the reference by default.
-#' @return A data frame of class `handover_pca_error`: `ncomp`, `error`
-#'   (degrees) and `variance` (cumulative proportion of reference variance).
-#' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 2, grasps = 1:5, objects = 1, trials = 1)
-#' handover_pca_error(g)
-handover_pca_error <- function(reference, data = NULL) {
-  call <- rlang::caller_env()
+# The PCA error per number of components (handover_error(by = "ncomp")):
+# `data` projected onto the reference PCA (a grasps object's, or a
+# handover_model's) and back with its first q components, for every q.
+handover_pca_error <- function(reference, data = NULL, call = rlang::caller_env()) {
   if (inherits(reference, "handover_model")) {
     center <- reference$center; rot <- reference$rotation; sdev <- reference$sdev
     unit <- reference$unit
-    if (is.null(data)) {
-      hm_abort("Give {.arg data} (a grasps object) with a {.cls handover_model}.", "bad_input",
-               argument = "data", call = call)
-    }
   } else {
     check_grasps(reference, "reference", call = call)
     pca <- stats::prcomp(do.call(rbind, reference$recordings), center = TRUE, scale. = FALSE)
@@ -242,11 +215,10 @@ handover_pca_error <- function(reference, data = NULL) {
     unit <- reference$unit
     if (is.null(data)) data <- reference
   }
-  check_grasps(data, "data", call = call)
   x <- do.call(rbind, data$recordings)
   if (ncol(x) != nrow(rot)) {
-    hm_abort("{.arg data} has {ncol(x)} DoFs but the reference PCA {nrow(rot)}.", "bad_input",
-             argument = "data", call = call)
+    hm_abort("{.arg truth} has {ncol(x)} DoFs but the reference PCA {nrow(rot)}.", "bad_input",
+             argument = "truth", call = call)
   }
   xc <- sweep(x, 2, center)
   sc <- xc %*% rot

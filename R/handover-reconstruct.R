@@ -32,7 +32,7 @@
 #' ang <- outer(t, runif(16, 10, 60)) + outer(sin(2 * pi * t), runif(16, 0, 10))
 #' ref <- grasps(list(ang, ang[40:1, ] * 0.8), dofs = hust_dofs$name)
 #' fit <- fit_handover(ref, markers = c("index_tip", "ring_tip", "thumb_tip"), k = 30)
-#' mk <- markers_from_angles(ang, markers = fit$markers)
+#' mk <- forward_kinematics(ang, markers = fit$markers)
 #' mk[5, 1:3] <- NaN   # the index tip is occluded in frame 5
 #' rec <- reconstruct(fit, mk)
 #' attr(rec, "handover")$markers_used[[1]][1:6]

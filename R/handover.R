@@ -2,10 +2,10 @@
 # PCA of the reference joint angles, a locally weighted regression (LWR) per
 # query frame from the sparse markers to the principal components, a cone
 # filter over the component trajectories, back-projection to joint angles.
-# Marker placement and ranking are in R/markers.R; the baselines and the
-# evaluation helpers (search_markers(), handover_error(), compare_marker_sets(),
-# handover_pca_error()) are at the end of this file; the regression core is
-# in C (src/handover-lwr.c) with an R reference engine here.
+# Marker placement, ranking and selection are in R/markers.R; the search
+# baseline and the evaluation (handover_error(), compare_marker_sets()) in
+# R/handover-evaluate.R; reconstruction in R/handover-reconstruct.R; the
+# regression core is in C (src/handover-lwr.c).
 
 #' Fit a sparse-marker hand-over model
 #'
@@ -40,8 +40,8 @@
 #' components best, which is the default.
 #'
 #' @param reference A [grasps()] object recorded with the full marker set
-#'   (joint angles; markers are computed by [markers_from_angles()]).
-#' @param markers Marker names (see `hand_marker_set()`), or a number `n` to
+#'   (joint angles; markers are computed by [forward_kinematics()]).
+#' @param markers Marker names (see [select_markers()]), or a number `n` to
 #'   use `select_markers(reference, n)`.
 #' @param ncomp Number of principal components regressed and back-projected;
 #'   `NULL` for all (one per DoF).
@@ -54,7 +54,7 @@
 #' @param ridge Relative ridge penalty of the local regressions.
 #' @param eps Smallest marker distance (mm) used in the inverse-distance
 #'   weights.
-#' @param skeleton,... Passed to [markers_from_angles()] (e.g. `mapping`).
+#' @param skeleton,... Passed to [forward_kinematics()] (e.g. `mapping`).
 #' @return An object of class `handover_model`.
 #' @seealso [reconstruct()], [select_markers()], [compare_marker_sets()]
 #' @export
@@ -86,18 +86,14 @@ fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth =
   }
   ridge <- check_number(ridge, "ridge", min = 0, min_open = TRUE, call = call)
   eps <- check_number(eps, "eps", min = 0, min_open = TRUE, call = call)
-  model <- handover_build(ref_all, do.call(rbind, reference$recordings), markers,
-                          ncomp = ncomp, k = k, smooth = smooth, filter_size = filter_size,
-                          method = method, ridge = ridge, eps = eps, rate = reference$rate,
-                          call = call)
-  model$dofs <- reference$dofs
-  model$unit <- reference$unit
-  model$skeleton <- skeleton
-  model$fk_args <- list(...)
-  model$reference <- data.frame(recordings = length(reference), frames = nrow(ref_all),
-                                grasp_types = length(unique(stats::na.omit(reference$meta$grasp))),
-                                subjects = length(unique(stats::na.omit(reference$meta$subject))))
-  model
+  handover_build(ref_all, do.call(rbind, reference$recordings), markers,
+                 ncomp = ncomp, k = k, smooth = smooth, filter_size = filter_size,
+                 method = method, ridge = ridge, eps = eps, rate = reference$rate,
+                 unit = reference$unit, skeleton = skeleton, fk_args = list(...),
+                 reference = data.frame(recordings = length(reference), frames = nrow(ref_all),
+                                        grasp_types = length(unique(stats::na.omit(reference$meta$grasp))),
+                                        subjects = length(unique(stats::na.omit(reference$meta$subject)))),
+                 call = call)
 }
 
 # The model proper, from stacked reference marker positions (any superset of
@@ -105,7 +101,8 @@ fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth =
 # the marker search, which must not rerun forward kinematics per candidate.
 handover_build <- function(ref_all, ref_y, markers, ncomp = NULL, k = 256, smooth = TRUE,
                            filter_size = NULL, method = "pca", ridge = 1e-3, eps = 1e-6,
-                           rate = 50, call = rlang::caller_env()) {
+                           rate = 50, unit = "deg", skeleton = NULL, fk_args = list(),
+                           reference = NULL, call = rlang::caller_env()) {
   cols <- marker_columns(markers)
   ref_x <- ref_all[, cols, drop = FALSE]
   n_ref <- nrow(ref_y)
@@ -133,16 +130,45 @@ handover_build <- function(ref_all, ref_y, markers, ncomp = NULL, k = 256, smoot
   if (ncol(rot) < p) rot <- complete_basis(rot)
   scores <- sweep(ref_y, 2, pca$center) %*% rot
   direct <- if (method == "direct") global_linear_fit(ref_x, ref_y, ridge) else NULL
-  structure(list(
+  new_handover_model(
     markers = markers, method = method, ncomp = ncomp, k = k, k_used = k_used,
     ridge = ridge, eps = eps, smooth = isTRUE(smooth), filter_size = as.integer(filter_size),
     center = pca$center, rotation = rot,
     sdev = c(pca$sdev, rep(0, p - length(pca$sdev)))[seq_len(p)],
     ref_x = ref_x, ref_scores = scores, direct = direct,
-    dofs = colnames(ref_y), rate = rate, unit = "deg", skeleton = NULL, fk_args = list(),
-    reference = data.frame(recordings = NA_integer_, frames = n_ref, grasp_types = NA_integer_,
-                           subjects = NA_integer_)
-  ), class = "handover_model")
+    dofs = colnames(ref_y), rate = rate, unit = unit, skeleton = skeleton, fk_args = fk_args,
+    reference = reference %||% data.frame(recordings = NA_integer_, frames = n_ref,
+                                          grasp_types = NA_integer_, subjects = NA_integer_))
+}
+
+# The one constructor of class "handover_model" (fit_handover() and the
+# marker search both build through handover_build(), which ends here).
+new_handover_model <- function(markers, method, ncomp, k, k_used, ridge, eps, smooth, filter_size,
+                               center, rotation, sdev, ref_x, ref_scores, direct, dofs, rate, unit,
+                               skeleton, fk_args, reference) {
+  validate_handover_model(structure(list(
+    markers = markers, method = method, ncomp = ncomp, k = k, k_used = k_used, ridge = ridge,
+    eps = eps, smooth = smooth, filter_size = filter_size, center = center, rotation = rotation,
+    sdev = sdev, ref_x = ref_x, ref_scores = ref_scores, direct = direct, dofs = dofs, rate = rate,
+    unit = unit, skeleton = skeleton, fk_args = fk_args, reference = reference
+  ), class = "handover_model"))
+}
+
+# Shapes that fit together: p DoFs (a full p x p rotation), 3 reference
+# marker columns per marker, one score row per reference frame.
+validate_handover_model <- function(x) {
+  p <- length(x$dofs)
+  stopifnot(
+    is.character(x$markers), length(x$markers) >= 1L, x$method %in% c("pca", "direct"),
+    identical(colnames(x$ref_x), marker_columns(x$markers)),
+    has_dim(x$rotation, c(p, p)), length(x$center) == p, length(x$sdev) == p,
+    nrow(x$ref_scores) == nrow(x$ref_x), ncol(x$ref_scores) == p,
+    x$ncomp >= 1L, x$ncomp <= p, x$k_used >= 1L, x$k_used <= nrow(x$ref_x),
+    x$method == "pca" || is.list(x$direct),
+    x$unit %in% c("deg", "rad", "raw"), is.null(x$skeleton) || inherits(x$skeleton, "hand_skeleton"),
+    is.data.frame(x$reference)
+  )
+  x
 }
 
 # Extend an orthonormal basis with fewer columns than rows to a full one.

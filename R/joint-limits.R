@@ -13,13 +13,13 @@
 #' @param x A numeric frames x DoF matrix (with DoF column names) or a
 #'   [grasps()] object.
 #' @param skeleton A [hand_skeleton()].
-#' @param mapping A joint mapping (see [graspdb14_joint_map()]); chosen from
+#' @param mapping A joint mapping (see [joint_map()]); chosen from
 #'   the DoF names by default.
 #' @param unit Angle unit of a matrix `x` (`"deg"` or `"rad"`).
 #' @return An object of the same class as `x` with clamped angles and
 #'   attributes `"clamped"` (number of values changed), `"clamped_by_dof"`
 #'   (named counts) and `"unclamped"` (DoFs without limits).
-#' @export
+#' @noRd
 #' @examples
 #' rec <- matrix(c(120, -50, 40), 3, 16, dimnames = list(NULL, hust_dofs$name))
 #' out <- clamp_to_limits(rec)

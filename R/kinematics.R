@@ -26,12 +26,12 @@
 #' thumb's base, the hand's long axis through the thumb's carpometacarpal
 #' joint). Turns about parent axes are applied before the joint's own.
 #'
-#' * `graspdb14_joint_map()` is Table 5.1 of the GraspDB14 report: the 23
+#' * `joint_map("graspdb14")` is Table 5.1 of the GraspDB14 report: the 23
 #'   CyberGlove sensors on the default skeleton, with one correction (below).
 #'   Sensors the report marks as discarded (`I-AA`, `P-Arch`) have
 #'   `axis = NA`. The GraspDB14 files store flexion as negative angles and the
 #'   report's viewer applies every angle negated, so `sign = -1` throughout.
-#' * `hust_joint_map()` drives the same skeleton from the 16 HUST DoFs. It is
+#' * `joint_map("hust")` drives the same skeleton from the 16 HUST DoFs. It is
 #'   the GraspDB14 mapping carried over through the sensor correspondence of
 #'   [cyberglove_sensors] (`CMC1 = -T-TMCJ`, `ABD1 = TI-AA`, flexions
 #'   negated): `CMC1` turns the thumb across the palm like `T-TMCJ` (sign 1),
@@ -39,9 +39,10 @@
 #'   flexion about x of its joint (sign 1). So a GraspDB14 recording and its
 #'   [graspdb14_to_hust()] conversion give the same hand (up to the finger
 #'   spread sensors HUST does not have).
-#' * `default_joint_map(dofs)` picks between them from the DoF names
-#'   (case, hyphens and underscores ignored; `T-TMJ` and `T-TMCJ` both name
-#'   the thumb rotation sensor) and keeps the rows for `dofs`, in their order.
+#' * `joint_map(dofs = )` picks between them from the DoF names (case,
+#'   hyphens and underscores ignored; `T-TMJ` and `T-TMCJ` both name the thumb
+#'   rotation sensor) and keeps the rows for `dofs`, in their order. This is
+#'   the mapping [forward_kinematics()] uses when given none.
 #'
 #' @section The thumb rotation (`T-TMCJ`, `CMC1`):
 #' Table 5.1 of the report maps `T-TMCJ` ("thumb rotating across palm") to
@@ -69,16 +70,46 @@
 #' To get Table 5.1 literally, set `axis = "z"`, `frame = "joint"` in the
 #' `T-TMCJ` row.
 #'
-#' @param dofs DoF names, e.g. `x$dofs` of a [grasps()] object.
+#' @param source `"hust"` or `"graspdb14"`; by default chosen from `dofs`.
+#' @param dofs DoF names, e.g. `x$dofs` of a [grasps()] object: keep (and
+#'   order) the rows for these DoFs.
 #' @return A data frame (`dof`, `joint`, `axis`, `sign`, `scale`, `frame`).
 #' @references Stollenwerk, K., Hinkenjann, A. and Klein, R. GraspDB14
 #'   technical report, Table 5.1, and the GraspDB14 MATLAB tools
 #'   (`constructSensor2JointMap.m`, `readXMLSKEL.m`).
 #' @export
 #' @examples
-#' hust_joint_map()
-#' graspdb14_joint_map()[1:5, ]
-#' default_joint_map(c("MCP2", "PIP2"))
+#' joint_map("hust")
+#' joint_map("graspdb14")[1:5, ]
+#' joint_map(dofs = c("MCP2", "PIP2"))
+joint_map <- function(source = NULL, dofs = NULL) {
+  call <- rlang::caller_env()
+  if (!is.null(dofs) && (!is.character(dofs) || anyNA(dofs))) {
+    hm_abort("{.arg dofs} must be DoF names, not {.obj_type_friendly {dofs}}.", "bad_input",
+             argument = "dofs", call = call)
+  }
+  if (is.null(source)) {
+    if (is.null(dofs)) {
+      hm_abort("Give {.arg source} ({.val hust} or {.val graspdb14}) or {.arg dofs}.", "bad_input",
+               argument = "source", call = call)
+    }
+    return(default_joint_map_impl(dofs, call))
+  }
+  source <- check_choice(source, c("hust", "graspdb14"), arg = "source", call = call)
+  m <- if (source == "hust") hust_joint_map() else graspdb14_joint_map()
+  if (is.null(dofs)) return(m)
+  idx <- match(dof_key(dofs), dof_key(m$dof))
+  if (anyNA(idx)) {
+    bad <- dofs[is.na(idx)]
+    hm_abort("Not in the {.val {source}} mapping: {.val {bad}}.", "bad_mapping", argument = "dofs", call = call)
+  }
+  out <- m[idx, , drop = FALSE]
+  out$dof <- dofs
+  rownames(out) <- NULL
+  out
+}
+
+# The two built-in mappings (documented under joint_map()).
 graspdb14_joint_map <- function() {
   data.frame(
     dof = c("T-TMCJ", "T-MCPJ", "T-IPJ", "TI-AA", "I-MCPJ", "I-PIPJ", "I-DIPJ", "I-AA",
@@ -93,8 +124,6 @@ graspdb14_joint_map <- function() {
     frame = c("parent", rep("joint", 22)), stringsAsFactors = FALSE)
 }
 
-#' @rdname graspdb14_joint_map
-#' @export
 hust_joint_map <- function() {
   data.frame(
     dof = c("CMC1", "ABD1", "MCP1", "IP1", "MCP2", "PIP2", "DIP2", "MCP3", "PIP3", "DIP3",
@@ -103,12 +132,6 @@ hust_joint_map <- function() {
               "mf-pip", "mf-dip", "rf-mcp", "rf-pip", "rf-dip", "lf-mcp", "lf-pip", "lf-dip"),
     axis = c("y", "z", rep("x", 14)), sign = c(1, -1, rep(1, 14)), scale = 1,
     frame = c("parent", rep("joint", 15)), stringsAsFactors = FALSE)
-}
-
-#' @rdname graspdb14_joint_map
-#' @export
-default_joint_map <- function(dofs) {
-  default_joint_map_impl(dofs, call = rlang::caller_env())
 }
 
 dof_key <- function(x) {
@@ -179,7 +202,7 @@ check_mapping <- function(mapping, skeleton, call) {
 #' Poses a [hand_skeleton()] with every frame of a recording and returns the
 #' position of every joint, relative to the root (wrist), in millimetres.
 #' The DoFs drive joint axes as given by `mapping` (Table 5.1 of the
-#' GraspDB14 report for CyberGlove sensors, see [graspdb14_joint_map()]);
+#' GraspDB14 report for CyberGlove sensors, see [joint_map()]);
 #' DoFs the mapping does not use are listed in the result's `"fk"`
 #' attribute, never dropped silently.
 #'
@@ -194,8 +217,8 @@ check_mapping <- function(mapping, skeleton, call) {
 #' @param x A numeric matrix (frames x DoF, with DoF column names), or a
 #'   [grasps()] object.
 #' @param skeleton A [hand_skeleton()].
-#' @param mapping A joint mapping (see [graspdb14_joint_map()]); by default
-#'   chosen from the DoF names with [default_joint_map()].
+#' @param mapping A joint mapping (see [joint_map()]); by default chosen
+#'   from the DoF names, `joint_map(dofs = )`.
 #' @param mode `"plain"`, `"full"` or `"fixed-root"` (see Details).
 #' @param deactivate DoFs to treat as zero: DoF names, column numbers, or
 #'   joint names (every DoF driving that joint), like GraspDB14's
@@ -204,7 +227,14 @@ check_mapping <- function(mapping, skeleton, call) {
 #'   `"last"`.
 #' @param unit Angle unit of a matrix `x` (`"deg"` or `"rad"`); a `grasps`
 #'   object carries its own.
-#' @return For a matrix, an array `[frames, joints, 3]` (mm) with dimnames
+#' @param markers `NULL` for joint positions, or virtual hand-over marker
+#'   names ([select_markers()] lists them; `TRUE` for the 13 hand markers)
+#'   for marker positions instead: each marker sits on its bone at a fixed
+#'   fraction from its joint (see [fit_handover()]), in mm relative to the
+#'   root link.
+#' @return With `markers`, a frames x (3 * markers) matrix with columns
+#'   `<marker>.x`, `<marker>.y`, `<marker>.z` for a matrix `x`, a list of
+#'   them (named by recording id) for a `grasps` object. Otherwise, for a matrix, an array `[frames, joints, 3]` (mm) with dimnames
 #'   `list(NULL, joint names, c("x", "y", "z"))`; for a `grasps` object, a list
 #'   of such arrays named by recording id (also for a set of one). Each array has an attribute `"fk"`: a list with `mode`, the
 #'   `mapping` rows applied, `deactivated` and `ignored` DoFs.
@@ -218,10 +248,17 @@ check_mapping <- function(mapping, skeleton, call) {
 #' fist <- flat
 #' fist[, grep("^(MCP|PIP|DIP)[2-5]", colnames(fist))] <- 80
 #' forward_kinematics(fist, skel)[1, "mf-tip", ]
+#' forward_kinematics(fist, skel, markers = c("index_tip", "thumb_tip"))
 forward_kinematics <- function(x, skeleton = hand_skeleton(), mapping = NULL,
                                mode = c("plain", "full", "fixed-root"),
-                               deactivate = NULL, frames = NULL, unit = NULL) {
+                               deactivate = NULL, frames = NULL, unit = NULL, markers = NULL) {
   call <- rlang::caller_env()
+  if (!is.null(markers)) {
+    if (isTRUE(markers)) markers <- NULL   # the 13 hand markers
+    else check_marker_names(markers, call = call)
+    return(markers_from_angles(x, skeleton = skeleton, markers = markers, mapping = mapping,
+                               mode = mode, deactivate = deactivate, frames = frames, unit = unit))
+  }
   mode <- check_choice(mode, arg = "mode", call = rlang::current_env())
   check_skeleton(skeleton, call = call)
   input <- fk_input(x, unit, call)

@@ -31,8 +31,7 @@
 #'   (`"hand"` or `"forearm"`), `joint` (skeleton joint it rides on), `toward`
 #'   (joint the bone points to, or `NA`), `fraction`, and `x`, `y`, `z`
 #'   (offset in mm).
-#' @seealso [markers_from_angles()], [rank_markers()], [handpicked_markers()]
-#' @export
+#' @noRd
 #' @examples
 #' hand_marker_set()
 hand_marker_set <- function() {
@@ -69,7 +68,7 @@ hand_marker_set <- function() {
 #' the middle and ring fingers, whose motion must then be inferred.
 #'
 #' @return A character vector of six marker names from `hand_marker_set()`.
-#' @export
+#' @noRd
 #' @examples
 #' handpicked_markers()
 handpicked_markers <- function() {
@@ -92,8 +91,9 @@ handpicked_markers <- function() {
 #' @param ... Passed to [forward_kinematics()] (e.g. `mapping`).
 #' @return For a matrix, a frames x (3 * markers) matrix with columns
 #'   `<marker>.x`, `<marker>.y`, `<marker>.z`; for a grasps object a list of
-#'   such matrices, named by recording id.
-#' @export
+#'   such matrices, named by recording id. Users reach it as
+#'   `forward_kinematics(x, markers = )`.
+#' @noRd
 #' @examples
 #' ang <- matrix(0, 2, 16, dimnames = list(NULL, hust_dofs$name))
 #' ang[2, ] <- 40
@@ -209,12 +209,12 @@ stack_markers <- function(x, skeleton, call = rlang::caller_env(), ...) {
 #' ranked.
 #'
 #' @param reference A [grasps()] object (markers are computed by
-#'   [markers_from_angles()]) or a frames x (3 * markers) marker matrix with
+#'   [forward_kinematics()]) or a frames x (3 * markers) marker matrix with
 #'   columns named `<marker>.x` etc.
 #' @param weighting `"eigenvalue"` (the paper's choice) or `"equal"`.
 #' @param n_components For `weighting = "equal"`, the number of leading
 #'   components counted; default half the dimension.
-#' @param skeleton,... Passed to [markers_from_angles()] for a grasps object.
+#' @param skeleton,... Passed to [forward_kinematics()] for a grasps object.
 #' @return A data frame of class `marker_ranking`, ordered from most to least
 #'   influential: `rank`, `marker`, `influence`, `share` (influence / total);
 #'   attributes `eigenvalues` and `weighting`.
@@ -285,27 +285,82 @@ print.marker_ranking <- function(x, ...) {
 
 #' Select a sparse marker set
 #'
-#' The top `n` markers of [rank_markers()]. Because the sets are prefixes of
-#' one ranking they are nested: the 3-marker set is inside the 6-marker set,
-#' so recording more markers only adds markers (the paper's Section 5).
+#' The hand carries 13 virtual markers (after Figure 3 of Wheatland, Joerg
+#' and Zordan: the five fingertips `thumb_tip`, `index_tip`, `middle_tip`,
+#' `ring_tip`, `little_tip`; the middle knuckles `thumb_ip`, `index_pip`,
+#' `middle_pip`, `ring_pip`, `little_pip`; the base knuckles `thumb_mcp`,
+#' `index_mcp`, `little_mcp`), plus three forearm markers on the root link
+#' (`forearm_radial`, `forearm_ulnar`, `forearm_dorsal`), which are constant
+#' relative to it and only drawn. `select_markers()` chooses `n` of the hand
+#' markers by one of three methods:
 #'
-#' @param x A [grasps()] reference, a marker matrix, or a `marker_ranking`.
-#' @param n Number of markers, 1 to the number ranked (13).
-#' @param ... Passed to [rank_markers()] when `x` is not a ranking.
-#' @return A character vector of `n` marker names, most influential first.
-#' @seealso [fit_handover()], [handpicked_markers()], [search_markers()]
+#' * `"ranked"` (the paper's): the top `n` of [rank_markers()]. Because the
+#'   sets are prefixes of one ranking they are nested: the 3-marker set is
+#'   inside the 6-marker set, so recording more markers only adds markers
+#'   (the paper's Section 5).
+#' * `"handpicked"`: the manually chosen six-marker baseline after Hoyet et
+#'   al. (2012): the tips of the thumb, index and little finger, the thumb IP
+#'   joint and the index and little-finger base knuckles. Like the paper's set
+#'   it has no marker on the middle and ring fingers. `x` is not needed and
+#'   `n` must be 6.
+#' * `"search"` (after Kang et al. 2012): the set with the least
+#'   reconstruction error on held-out reference data. The reference `x` is
+#'   split by a metadata column (`holdout`, by default grasp type, so the
+#'   search rewards generalisation to unseen motions): alternate values (after
+#'   a seeded shuffle) form the validation part. The search is greedy forward
+#'   selection (add the marker that lowers the validation error most, `n`
+#'   times; about `13 n` reconstructions), or with `exhaustive = TRUE` every
+#'   `choose(13, n)` set (1,716 for six markers: slow).
+#'
+#' @param x A [grasps()] reference (a marker matrix or a `marker_ranking`
+#'   also do for `"ranked"`; `NULL` for `"handpicked"`).
+#' @param n Number of markers, 1 to 13.
+#' @param method `"ranked"`, `"handpicked"` or `"search"`.
+#' @param ... For `"ranked"`, passed to [rank_markers()] (`weighting`, ...);
+#'   for `"search"`: `holdout` (metadata column split between fitting and
+#'   validation, default `"grasp"`), `exhaustive` (default `FALSE`),
+#'   `max_frames` (validation frames per evaluation, whole recordings, a
+#'   seeded sample; default 1500), `seed` (default 1; the global RNG is left
+#'   untouched), `k` and `ridge` (passed to [fit_handover()]) and `skeleton`
+#'   and the [forward_kinematics()] arguments.
+#' @return A character vector of `n` marker names, most influential (or, for
+#'   the search, first added) first. The search adds attribute `"search"`: a
+#'   data frame of the evaluated sets and their validation errors (degrees).
+#' @seealso [fit_handover()], [compare_marker_sets()]
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:4, objects = 1, trials = 1)
 #' r <- rank_markers(g)
 #' select_markers(r, 3)
 #' select_markers(r, 6)
-select_markers <- function(x, n = 6, ...) {
+#' select_markers(method = "handpicked")
+#' select_markers(g, n = 2, method = "search", max_frames = 200)
+select_markers <- function(x = NULL, n = 6, method = c("ranked", "handpicked", "search"), ...) {
   call <- rlang::caller_env()
-  rk <- if (inherits(x, "marker_ranking")) x else rank_markers(x, ...)
-  if (!is.numeric(n) || length(n) != 1L || is.na(n) || n < 1 || n > nrow(rk) || n != round(n)) {
-    hm_abort("{.arg n} must be a whole number from 1 to {nrow(rk)}, not {.val {format(n)}}.",
+  method <- check_choice(method, arg = "method", call = rlang::current_env())
+  n_max <- sum(hand_marker_set()$segment == "hand")
+  if (!is.numeric(n) || length(n) != 1L || is.na(n) || n < 1 || n > n_max || n != round(n)) {
+    hm_abort("{.arg n} must be a whole number from 1 to {n_max}, not {.val {format(n)}}.",
              "bad_markers", argument = "n", call = call)
   }
-  rk$marker[seq_len(n)]
+  switch(method,
+    handpicked = {
+      if (n != 6) {
+        hm_abort("The hand-picked set has 6 markers; {.arg n} is {n}.", "bad_markers",
+                 argument = "n", call = call)
+      }
+      handpicked_markers()
+    },
+    search = search_markers(x, n = n, ..., call = call),
+    ranked = {
+      if (is.null(x)) {
+        hm_abort("Ranking markers needs a reference {.arg x}.", "bad_input", argument = "x", call = call)
+      }
+      rk <- if (inherits(x, "marker_ranking")) x else rank_markers(x, ...)
+      if (n > nrow(rk)) {
+        hm_abort("{.arg n} must be a whole number from 1 to {nrow(rk)}, not {.val {format(n)}}.",
+                 "bad_markers", argument = "n", call = call)
+      }
+      rk$marker[seq_len(n)]
+    })
 }

@@ -4,30 +4,15 @@
 # the frame counts of one grasp type, so ordinary length variation survives
 # and recordings that kept running after the grasp (2-3x as long) do not.
 
-#' Rule for over-long recordings
-#'
-#' A recording is over-long when its frame count exceeds
-#' `max(Q3 + iqr_mult * IQR, median_mult * median)` of the frame counts of its
-#' grasp type. The IQR fence is robust to the over-long recordings themselves;
-#' the median floor keeps a type whose lengths happen to be nearly equal (IQR
-#' close to 0) from losing ordinary recordings.
-#'
-#' @param iqr_mult Multiple of the interquartile range added to the upper
-#'   quartile (default 3, Tukey's "far out" fence).
-#' @param median_mult Recordings shorter than this multiple of the median
-#'   frame count are never removed (default 1.5).
-#' @return An object of class `overlong_rule`: `list(iqr_mult, median_mult)`.
-#' @seealso [find_overlong()]
-#' @examples
-#' overlong_rule()
-#' overlong_rule(iqr_mult = 2)
-#' @export
+# The rule as an object (class overlong_rule): a recording is over-long when
+# its frame count exceeds max(Q3 + iqr_mult * IQR, median_mult * median) of
+# the frame counts of its grasp type (documented under fit_grasp_model()'s
+# `overlong`).
 overlong_rule <- function(iqr_mult = 3, median_mult = 1.5) {
   call <- rlang::caller_env()
   overlong_check_mult(iqr_mult, "iqr_mult", call)
   overlong_check_mult(median_mult, "median_mult", call)
-  structure(list(iqr_mult = iqr_mult, median_mult = median_mult),
-            class = "overlong_rule")
+  as_overlong_rule(c(iqr_mult = iqr_mult, median_mult = median_mult), call = call)
 }
 
 #' @export
@@ -37,29 +22,13 @@ print.overlong_rule <- function(x, ...) {
   invisible(x)
 }
 
-#' Find over-long recordings
-#'
-#' Flags the recordings of one grasp type whose frame count is much longer
-#' than the rest (see [overlong_rule()]), to be removed before time warping.
-#' Call it once per grasp type and keep the ids it flags: the removal is part
-#' of the model's record.
-#'
-#' @param n_frames Integer (or numeric) vector of frame counts, one per
-#'   recording of one grasp type. Missing values are an error.
-#' @param rule An [overlong_rule()].
-#' @return A logical vector as long as `n_frames`, `TRUE` = remove; names are
-#'   kept. `overlong_threshold()` gives the frame count above which recordings
-#'   are removed.
-#' @examples
-#' n <- c(40, 42, 38, 45, 41, 39, 44, 43, 110)
-#' find_overlong(n)
-#' @export
+# TRUE for the recordings of one grasp type whose frame count is over the
+# rule's threshold (removed before time warping).
 find_overlong <- function(n_frames, rule = overlong_rule()) {
   call <- rlang::caller_env()
   n_frames > overlong_threshold_impl(n_frames, rule, call)
 }
 
-#' @noRd
 overlong_threshold <- function(n_frames, rule = overlong_rule()) {
   overlong_threshold_impl(n_frames, rule, rlang::caller_env())
 }
@@ -81,6 +50,25 @@ overlong_threshold_impl <- function(n_frames, rule, call) {
   }
   q <- stats::quantile(n_frames, c(0.25, 0.5, 0.75), names = FALSE, type = 7)
   max(q[3] + rule$iqr_mult * (q[3] - q[1]), rule$median_mult * q[2])
+}
+
+# The `overlong` argument of the verbs: a named numeric c(iqr_mult =,
+# median_mult =) (either may be left out: its default is used), a rule
+# object, or NULL where `allow_null` (no removal).
+as_overlong_rule <- function(x, allow_null = FALSE, arg = "overlong", call = rlang::caller_env()) {
+  if (is.null(x) && allow_null) return(NULL)
+  if (inherits(x, "overlong_rule")) return(x)
+  known <- c("iqr_mult", "median_mult")
+  if (!is.numeric(x) || !length(x) || is.null(names(x)) || !all(names(x) %in% known) ||
+      anyDuplicated(names(x))) {
+    hm_abort(c("{.arg {arg}} must be a named number vector {.code c(iqr_mult = 3, median_mult = 1.5)}{if (allow_null) ' or NULL' else ''}.",
+               x = "Got {describe_value(x)}."), "bad_input", argument = arg, call = call)
+  }
+  x <- as.list(x)
+  rule <- list(iqr_mult = x$iqr_mult %||% 3, median_mult = x$median_mult %||% 1.5)
+  overlong_check_mult(rule$iqr_mult, "iqr_mult", call)
+  overlong_check_mult(rule$median_mult, "median_mult", call)
+  structure(rule, class = "overlong_rule")
 }
 
 overlong_check_mult <- function(x, arg, call) {

@@ -9,14 +9,18 @@
 #' against warped frame). Recordings dropped for a degenerate warp are drawn
 #' in red; under the linear fallback the paths are straight lines.
 #'
-#' @param object A `grasp_alignment` from [align_recordings()].
+#' @param object A `grasp_alignment`: the `alignment` a fitted model keeps
+#'   ([fit_grasp_model()] with `keep_data = TRUE`, the default); also drawn by
+#'   `autoplot(model, type = "alignment")`.
 #' @param type `"both"` (two panels), `"histogram"` or `"paths"`.
 #' @param ... Unused.
 #' @return A ggplot object.
 #' @examples
-#' curve <- function(u) cbind(a = 50 * plogis((u - 0.5) / 0.08), b = 30 * sin(pi * u))
-#' recs <- lapply(30:40, function(n) curve(seq(0, 1, length.out = n)^(n / 35)))
-#' autoplot(align_recordings(recs))
+#' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
+#' m <- fit_grasp_model(g, seed = 1)
+#' m$alignment
+#' ggplot2::autoplot(m$alignment)
+#' ggplot2::autoplot(m$alignment, type = "paths")
 #' @method autoplot grasp_alignment
 #' @export
 autoplot.grasp_alignment <- function(object, type = c("both", "histogram", "paths"), ...) {

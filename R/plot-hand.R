@@ -266,35 +266,11 @@ autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, ...) {
   g
 }
 
-#' A grid of hand poses, e.g. recorded vs generated per grasp type
-#'
-#' Draws one pose per group (by default per grasp type), the way the
-#' thesis' Appendix A shows the last frame of a recorded and a generated
-#' grasp for each of the 33 types. Give several sets as a named list to get
-#' one column per set.
-#'
-#' @param x A [grasps()] object, or a named list of them (e.g.
-#'   `list(recorded = g, generated = generate(models))`).
-#' @param frame Frame to draw: `"last"` (default), `"first"` or an index.
-#' @param by Metadata column to group by (one row of panels per value).
-#' @param per_group Recordings drawn per group and set (the first ones).
-#' @param skeleton A [hand_skeleton()].
-#' @param view See [autoplot.hand_pose()].
-#' @param ... Passed to [forward_kinematics()].
-#' @return A ggplot object, one panel per group; with several sets their
-#'   hands stand side by side in each panel, in the order of `x`, named
-#'   underneath. Its layers' data have columns `set` and `group`.
-#' @export
-#' @examples
-#' flat <- matrix(0, 5, 16)
-#' bent <- flat
-#' bent[, 5:16] <- 70
-#' g <- grasps(list(flat, bent, bent), meta = data.frame(grasp = c(1, 2, 2)))
-#' plot_pose_grid(g)
-#' plot_pose_grid(list(recorded = g, generated = g), view = "radial")
+# The last (or first, or a chosen) frame of one recording per group, the
+# thesis' Appendix A; several sets (a named list) stand side by side in each
+# panel. Reached through autoplot(<grasps>, type = "poses"), which documents it.
 plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
-                           skeleton = hand_skeleton(), view = "oblique", ...) {
-  call <- rlang::caller_env()
+                           skeleton = hand_skeleton(), view = "oblique", ..., call = rlang::caller_env()) {
   sets <- if (inherits(x, "grasps")) list(x) else x
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasps"))) {
     hm_abort("{.arg x} must be a {.cls grasps} object or a list of them.", "bad_input",

@@ -3,25 +3,12 @@
 # (Fig. 1), marker-set comparison (Figs. 2 and 4), component trajectories
 # (Fig. 5). The hand itself is drawn by autoplot.hand_pose() (R/plot-hand.R).
 
-#' Draw marker sets on the hand
-#'
-#' The hand in its rest pose with the full marker set (open circles) and the
-#' markers of each set filled, one panel per set (the paper's Figure 3).
-#'
-#' @param sets A named list of marker-name vectors, e.g.
-#'   `list("ranked (3)" = select_markers(ref, 3), "hand-picked (6)" = handpicked_markers())`.
-#' @param skeleton A [hand_skeleton()].
-#' @param view Viewing direction, see [autoplot.hand_pose()]; `"back"` by default.
-#' @param forearm Also draw the three forearm markers.
-#' @return A ggplot object; its marker layer's data has columns `set`,
-#'   `marker` and `selected`.
-#' @export
-#' @examples
-#' plot_marker_sets(list(`hand-picked (6)` = handpicked_markers(),
-#'                       `tips (3)` = c("thumb_tip", "index_tip", "middle_tip")))
-plot_marker_sets <- function(sets = list(`full set (13)` = hand_marker_set()$marker[1:13]),
-                             skeleton = hand_skeleton(), view = "back", forearm = TRUE) {
-  call <- rlang::caller_env()
+# Marker sets on the hand in its rest pose (the paper's Figure 3), drawn by
+# autoplot(<hand_skeleton>, markers = ): the full marker set with open
+# symbols, each set's markers filled, one panel per set. The marker layer's
+# data has columns `set`, `marker` and `selected`.
+plot_marker_sets <- function(sets, skeleton = hand_skeleton(), view = "back", forearm = TRUE,
+                             call = rlang::caller_env()) {
   if (is.character(sets)) sets <- list(sets)
   if (!is.list(sets) || !length(sets)) {
     hm_abort("{.arg sets} must be a named list of marker-name vectors.", "bad_input",
@@ -60,14 +47,14 @@ plot_marker_sets <- function(sets = list(`full set (13)` = hand_marker_set()$mar
 #'
 #' The paper's Figure 1.
 #'
-#' @param object A `handover_pca_error` from [handover_pca_error()].
+#' @param object A `handover_pca_error` from `handover_error(by = "ncomp")`.
 #' @param ... Unused.
 #' @return A ggplot object.
 #' @export
 #' @method autoplot handover_pca_error
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:5, objects = 1, trials = 1)
-#' ggplot2::autoplot(handover_pca_error(g))
+#' ggplot2::autoplot(handover_error(g, by = "ncomp"))
 autoplot.handover_pca_error <- function(object, ...) {
   df <- as.data.frame(unclass(object)[names(object)])
   ggplot2::ggplot(df, ggplot2::aes(x = .data$ncomp, y = .data$error)) +
@@ -113,20 +100,24 @@ autoplot.handover_comparison <- function(object, ...) {
 #' angles ("ground truth", projected onto the model's reference PCA) and of
 #' one or more reconstructions (the paper's Figure 5).
 #'
-#' @param model A `handover_model` whose PCA defines the components.
+#' @param object A `handover_model` ([fit_handover()]) whose PCA defines the
+#'   components.
 #' @param truth A [grasps()] object with the original recordings.
 #' @param reconstructions A named list of [grasps()] reconstructions of
 #'   `truth`, e.g. `list("6 markers" = r6, "3 markers" = r3)`.
 #' @param recording Recording to show (index or id).
 #' @param components Components to show.
+#' @param ... Unused.
 #' @return A ggplot object; its data has columns `time`, `component`,
 #'   `score` and `source`.
 #' @export
+#' @method autoplot handover_model
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:3, objects = 1, trials = 1)
 #' fit <- fit_handover(g[-1], markers = 3)
-#' plot_handover_components(fit, g[1], list(`3 markers` = reconstruct(fit, g[1])))
-plot_handover_components <- function(model, truth, reconstructions, recording = 1, components = 1:4) {
+#' ggplot2::autoplot(fit, g[1], list(`3 markers` = reconstruct(fit, g[1])))
+autoplot.handover_model <- function(object, truth, reconstructions, recording = 1, components = 1:4, ...) {
+  model <- object
   call <- rlang::caller_env()
   check_grasps(truth, "truth", call = call)
   if (inherits(reconstructions, "grasps")) reconstructions <- list(reconstruction = reconstructions)

@@ -1,7 +1,7 @@
 # Pictures of a fitted grasp model, after the thesis' figures: 5.4 (warped
 # samples with the mean and mean +- FPCs), 5.5 (a sample and its projection),
 # 5.6 (mixture density contours of every DoF) and the warping functions of
-# 5.1/5.2. Data layers need the model's kept data (keep_data = TRUE).
+# 5.1/5.2. Data layers need the model's kept alignment (keep_data = TRUE).
 
 #' Plot a grasp model
 #'
@@ -16,14 +16,17 @@
 #'   density), with the training scores as points.
 #' * `type = "warps"`: the warping functions (original frame against template
 #'   frame) in grey, their mean in red.
+#' * `type = "alignment"` (Figures 5.1 and 5.2): the frame counts of the
+#'   aligned recordings and their warping paths, degenerate ones in red;
+#'   [autoplot.grasp_alignment()] of `object$alignment` draws one panel.
 #' * `type = "dependence"`: the correlation between the DoFs' first FPC
 #'   scores the model generates with, as a heat map: the Gaussian copula's
 #'   for `dependence = "copula"`, the identity for the thesis' independent
 #'   model (see [fit_grasp_model()]).
 #'
 #' @param object A `grasp_model` from [fit_grasp_model()].
-#' @param type `"fpca"`, `"projection"`, `"mixture"`, `"warps"` or
-#'   `"dependence"`.
+#' @param type `"fpca"`, `"projection"`, `"mixture"`, `"warps"`,
+#'   `"alignment"` or `"dependence"`.
 #' @param dof DoFs to show (names or indices); all by default.
 #' @param recording For `"projection"`: which recording (index or id) of the
 #'   training data, or of `newdata` when given.
@@ -41,7 +44,8 @@
 #' ggplot2::autoplot(m, type = "mixture", dof = 1:4)
 #' mc <- fit_grasp_model(g, seed = 1, dependence = "copula")
 #' ggplot2::autoplot(mc, type = "dependence")
-autoplot.grasp_model <- function(object, type = c("fpca", "projection", "mixture", "warps", "dependence"),
+autoplot.grasp_model <- function(object, type = c("fpca", "projection", "mixture", "warps", "alignment",
+                                                  "dependence"),
                                  dof = NULL, recording = 1, newdata = NULL, max_recordings = 100, ...) {
   type <- check_choice(type, arg = "type", call = rlang::current_env())
   dofs <- plot_model_dofs(object, dof)
@@ -50,6 +54,10 @@ autoplot.grasp_model <- function(object, type = c("fpca", "projection", "mixture
     projection = plot_model_projection(object, dofs, recording, newdata),
     mixture = plot_model_mixture(object, dofs),
     warps = plot_model_warps(object, max_recordings),
+    alignment = {
+      plot_model_needs_data(object, "alignment")
+      autoplot.grasp_alignment(object$alignment)
+    },
     dependence = plot_model_dependence(object, dofs))
 }
 
@@ -84,7 +92,7 @@ plot_model_dofs <- function(object, dof) {
 }
 
 plot_model_needs_data <- function(object, what) {
-  if (is.null(object$data)) {
+  if (is.null(object$alignment)) {
     hm_abort(c("This plot needs the model's {what}, but the model was fitted with {.code keep_data = FALSE}.",
                i = "Refit with {.code keep_data = TRUE}, or give {.arg newdata}."),
              "bad_input", argument = "object")
@@ -102,8 +110,8 @@ plot_model_fpca <- function(object, dofs, max_recordings) {
   L <- object$target_length
   frame <- seq_len(L)
   parts <- list()
-  if (!is.null(object$data)) {
-    W <- object$data$warped
+  if (!is.null(object$alignment)) {
+    W <- object$alignment$warped
     keep <- seq_len(min(dim(W)[1], max_recordings))
     parts <- lapply(keep, function(i) {
       M <- matrix(W[i, , ], L, dimnames = list(NULL, object$dofs))
@@ -151,12 +159,12 @@ plot_model_projection <- function(object, dofs, recording, newdata) {
       hm_abort("{.arg recording} must pick one of the model's {length(ids)} training recording{?s}.",
                "bad_input", argument = "recording")
     }
-    warped <- matrix(object$data$warped[i, , ], object$target_length, dimnames = list(NULL, object$dofs))
+    warped <- matrix(object$alignment$warped[i, , ], object$target_length, dimnames = list(NULL, object$dofs))
     S <- matrix(object$scores[i, , ], length(object$dofs))
     id <- ids[i]
   } else {
     check_grasps(newdata, arg = "newdata")
-    pr <- project(object, newdata[recording])
+    pr <- predict(object, newdata[recording])
     warped <- pr$warped[[1]]
     S <- matrix(pr$scores[1, , ], length(object$dofs))
     id <- pr$ids[1]
@@ -223,8 +231,8 @@ plot_model_warps <- function(object, max_recordings) {
   L <- object$target_length
   frame <- seq_len(L)
   df <- data.frame(frame = frame, value = object$warp$mean, group = "mean", kind = "mean")
-  if (!is.null(object$data)) {
-    W <- object$data$warps
+  if (!is.null(object$alignment)) {
+    W <- object$alignment$warps
     keep <- seq_len(min(nrow(W), max_recordings))
     df <- rbind(data.frame(frame = rep(frame, times = length(keep)), value = as.vector(t(W[keep, , drop = FALSE])),
                            group = rep(rownames(W)[keep], each = L), kind = "recording"), df)

@@ -5,30 +5,10 @@
 # drawn as hands at the same fractions of their durations). The drawing
 # itself reuses the hand-pose helpers of R/plot-hand.R.
 
-#' Frame counts of grasp recordings, with the over-long ones marked
-#'
-#' A histogram of the number of frames of every recording, one panel per
-#' grasp type, coloured by whether the over-long rule of [find_overlong()]
-#' removes the recording before alignment; the rule's threshold is a dashed
-#' line. This is the left half of Jeppsson (2017) Figure 5.1 before the
-#' over-long removal (see [autoplot.grasp_alignment()] for the recordings that
-#' were aligned and their warping paths).
-#'
-#' @param x A [grasps()] object.
-#' @param grasp Grasp types to show (names or ids 1-33); all labelled types by
-#'   default.
-#' @param rule The over-long rule, from [overlong_rule()].
-#' @param binwidth Width of the histogram bins, in frames.
-#' @return A ggplot object; its data has columns `id`, `grasp`, `n_frames`
-#'   and `status` (`"kept"` or `"over-long"`).
-#' @seealso [find_overlong()], [fit_grasp_model()]
-#' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 6, grasps = c(3, 15), objects = 2, trials = 2, seed = 1)
-#' plot_frame_counts(g)
-plot_frame_counts <- function(x, grasp = NULL, rule = overlong_rule(), binwidth = 1) {
-  call <- rlang::caller_env()
-  check_grasps(x, call = call)
+# Frame counts per grasp type with the over-long recordings marked (the left
+# half of Figure 5.1); autoplot(<grasps>, type = "frame_counts").
+plot_frame_counts <- function(x, grasp = NULL, rule = overlong_rule(), binwidth = 1,
+                              call = rlang::caller_env()) {
   types <- thesis_plot_types(x, grasp, call)
   parts <- lapply(types, function(type) {
     m <- x$meta[!is.na(x$meta$grasp) & as.character(x$meta$grasp) == type, , drop = FALSE]
@@ -52,34 +32,10 @@ plot_frame_counts <- function(x, grasp = NULL, rule = overlong_rule(), binwidth 
     ggplot2::theme_minimal()
 }
 
-#' Frame strips: a grasp drawn as hands over time (Tables 5.4 and 5.5)
-#'
-#' Draws one recording of each set as a row of hands at equally spaced
-#' fractions of its duration (0%, 20%, ..., 100% for `n_frames = 6`), the
-#' way the thesis' Tables 5.4 and 5.5 compare a recorded grasp with a
-#' generated one. Since a generated grasp and a recording rarely have the same
-#' number of frames, the columns are fractions of each grasp's own duration.
-#'
-#' @param x A [grasps()] object, or a named list of them (e.g.
-#'   `list(recorded = g, generated = generate(models))`), one row each.
-#' @param recording Which recording of each set to draw: an index or an id
-#'   (recycled over the sets).
-#' @param n_frames Number of frames drawn per recording (at least 2).
-#' @param skeleton A [hand_skeleton()].
-#' @param view See [autoplot.hand_pose()].
-#' @param ... Passed to [forward_kinematics()].
-#' @return A ggplot object; its data has columns `set`, `id`, `frame` and
-#'   `time` (the fraction of the recording's duration, as a label).
-#' @seealso [plot_pose_grid()] for the last frames of many types (Appendix A).
-#' @export
-#' @examples
-#' rec <- matrix(0, 20, 16, dimnames = list(NULL, hust_dofs$name))
-#' rec[, c("MCP3", "PIP3", "MCP4", "PIP4")] <- seq(0, 80, length.out = 20)
-#' g <- grasps(list(rec), meta = data.frame(grasp = "Index Finger Extension"))
-#' plot_frame_strip(list(recorded = g, again = g), n_frames = 4)
+# One recording of each set as a row of hands at equally spaced fractions of
+# its duration (Tables 5.4 and 5.5); autoplot(<grasps>, type = "strip").
 plot_frame_strip <- function(x, recording = 1L, n_frames = 6L, skeleton = hand_skeleton(),
-                             view = "oblique", ...) {
-  call <- rlang::caller_env()
+                             view = "oblique", ..., call = rlang::caller_env()) {
   sets <- if (inherits(x, "grasps")) list(x) else x
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasps"))) {
     hm_abort("{.arg x} must be a {.cls grasps} object or a list of them, not {.obj_type_friendly {x}}.",

@@ -7,18 +7,19 @@
 
 #' Project recordings onto a grasp model
 #'
-#' Each recording of `x` (any length) is warped to the model's template time
-#' by the model's mean warping function \eqn{\bar w}, normalised to \[0, 1\]
-#' and mapped onto the recording's frames `1..n`, and evaluated there by
-#' linear interpolation. Each DoF is then projected onto the model's FPCs
-#' (`fpca_project()`); the residual norm per DoF is the L2 norm of the warped
-#' curve minus its projection (`fpca_residual_norm()`), and `distance` is
-#' the square root of the sum over DoFs of the squared residual norms
-#' (eq. 4.4 over the whole hand).
+#' `predict()` on a fitted model projects recordings onto it. Each recording
+#' of `newdata` (any length) is warped to the model's template time by the
+#' model's mean warping function \eqn{\bar w}, normalised to \[0, 1\] and
+#' mapped onto the recording's frames `1..n`, and evaluated there by linear
+#' interpolation. Each DoF is then projected onto the model's FPCs; the
+#' residual norm per DoF is the L2 norm of the warped curve minus its
+#' projection, and `distance` is the square root of the sum over DoFs of the
+#' squared residual norms (eq. 4.4 over the whole hand), the distance the
+#' FPCA classifier ranks.
 #'
 #' @param object A `grasp_model` ([fit_grasp_model()]) or a `grasp_models`
 #'   set ([fit_grasp_models()]).
-#' @param x A [grasps()] object with the model's DoFs.
+#' @param newdata A [grasps()] object with the model's DoFs.
 #' @param details Keep the warped and fitted curves (`TRUE` by default for one
 #'   model, `FALSE` for a model set, where they would take
 #'   recordings x models x frames x DoFs of memory).
@@ -28,51 +29,41 @@
 #'   residual norms), `distance` (one per recording), `ids`, `grasp` (the
 #'   model's type), `target_length` and, with `details`, `warped` and `fitted`
 #'   (lists of L x DoF matrices). For a model set, a named list of such
-#'   projections, one per model.
+#'   projections, one per fitted model (failed types have none).
 #' @seealso [classify()] ranks the distances of every model.
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
 #' m <- fit_grasp_model(g, seed = 1)
-#' pr <- project(m, g[1:3])
+#' pr <- predict(m, g[1:3])
 #' pr$distance
-project <- function(object, x, ...) UseMethod("project")
-
-#' @rdname project
-#' @export
-project.grasp_model <- function(object, x, details = TRUE, ...) {
+predict.grasp_model <- function(object, newdata, details = TRUE, ...) {
   call <- rlang::caller_env()
-  check_grasps(x, call = call)
-  check_projection_dofs(object, x, call)
-  project_stacked(object, stack_recordings(x, object$dofs), details = details)
+  check_grasps(newdata, "newdata", call = call)
+  check_projection_dofs(object, newdata, call)
+  project_stacked(object, stack_recordings(newdata, object$dofs), details = details)
 }
 
-#' @rdname project
+#' @rdname predict.grasp_model
 #' @export
-project.grasp_models <- function(object, x, details = FALSE, ...) {
+predict.grasp_models <- function(object, newdata, details = FALSE, ...) {
   call <- rlang::caller_env()
-  check_grasps(x, call = call)
-  if (length(object) == 0L) {
-    hm_abort("{.arg object} holds no grasp models.", "bad_input", argument = "object", call = call)
+  check_grasps(newdata, "newdata", call = call)
+  models <- fitted_models(object)
+  if (length(models) == 0L) {
+    hm_abort("{.arg object} holds no fitted grasp models.", "bad_input", argument = "object", call = call)
   }
-  check_projection_dofs(object[[1]], x, call)
-  st <- stack_recordings(x, object[[1]]$dofs)
-  lapply(unclass(object), function(m) project_stacked(m, st, details = details))
-}
-
-#' @rdname project
-#' @param newdata A [grasps()] object (for `predict()`).
-#' @export
-predict.grasp_model <- function(object, newdata, ...) {
-  project.grasp_model(object, newdata, ...)
+  check_projection_dofs(models[[1]], newdata, call)
+  st <- stack_recordings(newdata, models[[1]]$dofs)
+  lapply(models, function(m) project_stacked(m, st, details = details))
 }
 
 check_projection_dofs <- function(model, x, call) {
   missing <- setdiff(model$dofs, x$dofs)
   if (length(missing)) {
-    hm_abort(c("{.arg x} lacks the model's DoF{?s} {.val {missing}}.",
+    hm_abort(c("{.arg newdata} lacks the model's DoF{?s} {.val {missing}}.",
                i = "The model of {.val {model$grasp}} was fitted on {.val {model$dofs}}."),
-             "bad_input", argument = "x", call = call)
+             "bad_input", argument = "newdata", call = call)
   }
 }
 

@@ -4,13 +4,13 @@
 #' (2017) (30 subjects x 33 Feix grasp types x 3 objects x 3 trials = 8910
 #' recordings of 16 finger joint angles at 50 Hz, in degrees) is not
 #' distributable, so `simulate_grasps()` generates recordings like it from a
-#' biomechanical model, seeded and documented. Every parameter is in
-#' [simulator_params()].
+#' biomechanical model, seeded and documented. Every parameter is listed in
+#' the section Simulator parameters and can be replaced through `params`.
 #'
 #' @section The model:
 #' * **Final posture** per grasp type, from the Feix taxonomy (which fingers
 #'   wrap, which stay extended, thumb opposition, pad vs palm contact; see
-#'   `simulator_params()$posture_notes`).
+#'   the parameter `posture_notes`).
 #' * **Reach-to-grasp time course**: from a relaxed rest posture the hand
 #'   opens to a peak aperture (fingers extend, thumb abducts) and then closes
 #'   onto the final posture, holding it for a few frames. Both phases follow
@@ -31,7 +31,7 @@
 #' variation, clipped so no ordinary recording looks over-long). For each type
 #' the drawn lengths of the ordinary (not over-long) recordings are then
 #' rescaled and rounded by largest remainders so that their mean is *exactly*
-#' the type's target (`simulator_params()$target_frames`, at 50 Hz; at other
+#' the type's target (parameter `target_frames`, at 50 Hz; at other
 #' rates the target is scaled by `rate / 50` and the total rounded).
 #' With `overlong = TRUE` about `overlong_fraction` of each type's recordings
 #' (10 of 270 by default) are 2-3 times the type's median length: a long
@@ -60,13 +60,14 @@
 #' @param rate Sampling rate in Hz (at least 10).
 #' @param seed Random seed (a whole number).
 #' @param overlong Plant the over-long recordings (`TRUE`) or not.
-#' @param params Simulator parameters from [simulator_params()].
+#' @param params `NULL` for the calibrated defaults, or a named list of
+#'   simulator parameters to replace (see Simulator parameters).
 #' @return A [grasps()] object in degrees. Metadata columns: `id`, `grasp`,
 #'   `subject` (`"S01"`, ...), `object` (`"small"`, `"medium"`, `"large"` for
 #'   three objects), `trial`, `n_frames`, `source` (`"simulated"`),
 #'   `overlong` and `stalled` (logical: planted anomalies) and `object_size`
 #'   (relative size, 1 = the type's typical object).
-#' @seealso [simulator_params()], [grasps()]
+#' @seealso [grasps()]
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 3, grasps = c("Medium Wrap", "Tripod"), seed = 1)
@@ -74,7 +75,7 @@
 #' summary(g)
 #' head(g$meta)
 simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 3, rate = 50, seed = 1,
-                            overlong = TRUE, params = simulator_params()) {
+                            overlong = TRUE, params = NULL) {
   call <- rlang::caller_env()
   subjects <- check_whole(subjects, "subjects", max = 1e5, call = call)
   objects <- check_whole(objects, "objects", max = 1e5, call = call)
@@ -95,7 +96,11 @@ simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 
     hm_abort("{.arg overlong} must be {.code TRUE} or {.code FALSE}.", "bad_input",
              argument = "overlong", call = call)
   }
-  params <- check_simulator_params(params, call = call)
+  if (!is.null(params) && (!is.list(params) || (length(params) && is.null(names(params))))) {
+    hm_abort("{.arg params} must be a named list of simulator parameters, not {.obj_type_friendly {params}}.",
+             "bad_params", argument = "params", call = call)
+  }
+  params <- do.call(simulator_params, c(params, list(.call = call)))
 
   streams <- sim_streams(as.integer(seed))
   subj <- sim_subject_draws(streams[34L], subjects, ncol(params$loadings))

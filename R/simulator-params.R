@@ -2,20 +2,19 @@
 # `sim_default_params()` states the defaults in code; data-raw/simulator-params.R
 # adds the per-type target frame counts (the simulator's calibration against
 # the thesis' Table 5.1) and stores the result in R/sysdata.rda as
-# `simulator_defaults`, which `simulator_params()` returns. The pipeline never
-# reads these numbers: only the simulator does.
+# `simulator_defaults`, which `simulator_params()` returns with any
+# replacements (simulate_grasps(params = )). The pipeline never reads these
+# numbers: only the simulator does.
 
-#' Parameters of the HUST-like grasp simulator
-#'
-#' Returns the list of every parameter [simulate_grasps()] uses, so it can be
-#' inspected, modified and passed back through `simulate_grasps(params = )`.
+#' @section Simulator parameters (`params`):
+#' `params` replaces any of these by name, e.g. `simulate_grasps(params =
+#' list(noise_sd = 0, drift_sd = 0))`; the rest keep their calibrated values.
 #' Angles are in degrees (flexion positive), durations in frames at the
 #' reference rate of 50 Hz (they are rescaled for other rates). The 4 DIP
 #' joints are not parameters of their own: each follows its PIP joint
 #' (`dip_pip_ratio`), so posture-type elements cover the 12 *driven* DoFs
 #' `CMC1 ABD1 MCP1 IP1 MCP2 PIP2 MCP3 PIP3 MCP4 PIP4 MCP5 PIP5`.
 #'
-#' @section Elements:
 #' **Grasp types**
 #' * `target_frames`: data frame (`id`, `name`, `frames`): the mean frame count
 #'   at 50 Hz of the ordinary (not over-long) recordings of each type. Taken
@@ -111,7 +110,7 @@
 #'   recordings. `c(0, 0)` turns stalls off.
 #'   `stall_fraction`: range of the stall's share of the recording.
 #'
-#' @section Calibration:
+#' @section Calibration of the default data:
 #' The defaults make the pipeline, run with all its defaults on the default
 #' data (`simulate_grasps()`, seed 1), a documented twin of the HUST data of
 #' Jeppsson (2017), chapter 5. `data-raw/calibrate-simulator.R` (rerun it
@@ -129,8 +128,9 @@
 #' 3. `posture_spread` again at the final `preshape`.
 #'
 #' The frame counts (`target_frames`) are Table 5.1's, exactly.
-#' [calibration_report()] recomputes every figure from the package's outputs
-#' and lays the thesis' beside it. Achieved on the default data:
+#' `calibration_report()` (internal, run by `data-raw/calibrate-simulator.R`)
+#' recomputes every figure from the package's outputs and lays the thesis'
+#' beside it. Achieved on the default data:
 #' | figure (thesis) | target | achieved |
 #' |---|---|---|
 #' | Table 5.1 target frames | equal for all 33 types | equal for all 33 |
@@ -149,24 +149,20 @@
 #' floor); the per-type recalls, first PCs and confusions were not calibrated
 #' and differ from the thesis'.
 #'
-#' @param ... Elements to replace, by name (e.g. `noise_sd = 0`).
-#' @return A named list (see Elements), validated.
-#' @seealso [simulate_grasps()]
-#' @export
-#' @examples
-#' p <- simulator_params()
-#' names(p)
-#' head(p$target_frames)
-#' p$posture_notes[17, ]
-#' quiet <- simulator_params(noise_sd = 0, drift_sd = 0)
-simulator_params <- function(...) {
-  call <- rlang::caller_env()
+#' @rdname simulate_grasps
+#' @name simulate_grasps
+NULL
+
+# Every simulator parameter, with the named ones replaced (and validated);
+# documented in the sections of ?simulate_grasps above.
+simulator_params <- function(..., .call = rlang::caller_env()) {
+  call <- .call
   p <- simulator_defaults
   over <- list(...)
   if (length(over) > 0L) {
     nm <- names(over)
     if (is.null(nm) || any(nm == "")) {
-      hm_abort("Every argument of {.fn simulator_params} must be named.", "bad_input",
+      hm_abort("Every simulator parameter must be named.", "bad_input",
                argument = "...", call = call)
     }
     unknown <- setdiff(nm, names(p))
@@ -253,11 +249,11 @@ sim_default_params <- function(target_frames) {
 check_simulator_params <- function(p, arg = "params", call = rlang::caller_env()) {
   bad <- function(el, what) {
     hm_abort(c("Simulator parameter {.field {el}} in {.arg {arg}} {what}.",
-               i = "See {.help handmotion::simulator_params} for every element."),
+               i = "See {.help handmotion::simulate_grasps} for every element."),
              "bad_params", argument = arg, parameter = el, call = call)
   }
   if (!is.list(p)) {
-    hm_abort("{.arg {arg}} must be a list from {.fn simulator_params}, not {.obj_type_friendly {p}}.",
+    hm_abort("{.arg {arg}} must be a named list of simulator parameters, not {.obj_type_friendly {p}}.",
              "bad_params", argument = arg, call = call)
   }
   need <- names(simulator_defaults)

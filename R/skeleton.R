@@ -372,16 +372,32 @@ print.hand_skeleton <- function(x, ...) {
 
 #' Draw a hand skeleton in its rest pose
 #'
+#' With `markers`, the hand-over marker sets instead (the figure of
+#' Wheatland, Joerg and Zordan's Figure 3): the full marker set (13 hand
+#' markers and 3 on the forearm, see [select_markers()]) with open symbols
+#' and each set's markers filled, one panel per set.
+#'
 #' @param object A [hand_skeleton()].
 #' @param view Viewing direction, see [hand_pose()].
-#' @param labels Label the joints with their names?
+#' @param labels Label the joints with their names? (Not with `markers`.)
+#' @param markers `NULL`, or marker sets to draw: a named list of marker-name
+#'   vectors (one panel each), e.g. `list("ranked (3)" = select_markers(ref,
+#'   3), "hand-picked (6)" = select_markers(method = "handpicked"))`, or one
+#'   vector.
 #' @param ... Passed to [autoplot.hand_pose()].
-#' @return A ggplot object.
+#' @return A ggplot object. With `markers`, its marker layer's data has
+#'   columns `set`, `marker` and `selected`.
 #' @export
 #' @method autoplot hand_skeleton
 #' @examples
 #' ggplot2::autoplot(hand_skeleton(), view = "back")
-autoplot.hand_skeleton <- function(object, view = "back", labels = TRUE, ...) {
+#' ggplot2::autoplot(hand_skeleton(), markers = list(
+#'   `hand-picked (6)` = select_markers(method = "handpicked"),
+#'   `tips (3)` = c("thumb_tip", "index_tip", "middle_tip")))
+autoplot.hand_skeleton <- function(object, view = "back", labels = TRUE, markers = NULL, ...) {
+  if (!is.null(markers)) {
+    return(plot_marker_sets(markers, skeleton = object, view = view, call = rlang::caller_env()))
+  }
   pose <- skeleton_rest_pose(object)
   ggplot2::autoplot(pose, view = view, labels = labels, ...)
 }

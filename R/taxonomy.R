@@ -32,7 +32,7 @@
 #' Published results of Jeppsson (2017), chapter 5, for comparison
 #'
 #' The thesis' published values, kept only as a comparison column beside the
-#' package's own results (the `table_5_*()` functions). No computation in the
+#' package's own results ([thesis_table()]). No computation in the
 #' package takes these numbers as input.
 #'
 #' @format A list:

@@ -26,9 +26,6 @@
 #' * `"5.7"` (`fit`, optional `pcs`): cumulative variance explained by the
 #'   first PCs of last-frame PCA per type.
 #'
-#' The numbered functions `table_5_1()` ... `table_5_8()` and
-#' `table_5_3_claims()` of earlier versions are deprecated aliases.
-#'
 #' @param id Which table: `"5.1"`, `"5.2"`, `"5.3"`, `"5.3 claims"`, `"5.6"`,
 #'   `"5.7"` or `"5.8"`.
 #' @param ... The table's inputs, named as listed above: `models` (a
@@ -48,7 +45,7 @@
 #' thesis_table("5.2", models = ms)
 #' cl <- classify(ms, g)
 #' thesis_table("5.3", classification = cl)
-#' thesis_table("5.6", confusion = as_grasp_confusion(cl))
+#' thesis_table("5.6", confusion = grasp_confusion(cl))
 #' lf <- fit_last_frame_pca(g, k = 2)
 #' thesis_table("5.7", fit = lf, pcs = 1:3)
 thesis_table <- function(id = c("5.1", "5.2", "5.3", "5.3 claims", "5.6", "5.7", "5.8"), ...) {
@@ -68,38 +65,6 @@ thesis_table <- function(id = c("5.1", "5.2", "5.3", "5.3 claims", "5.6", "5.7",
              "bad_input", argument = "...", call = call)
   }
   do.call(build, args)
-}
-
-# Deprecated numbered aliases (0.1.0): each says once per session what to call instead.
-#' @rdname handmotion-deprecated
-#' @export
-table_5_1 <- function(models) deprecated_alias("table_5_1()", 'thesis_table("5.1", models = )', thesis_table_5_1(models))
-#' @rdname handmotion-deprecated
-#' @export
-table_5_2 <- function(models) deprecated_alias("table_5_2()", 'thesis_table("5.2", models = )', thesis_table_5_2(models))
-#' @rdname handmotion-deprecated
-#' @export
-table_5_3 <- function(classification, x = NULL) {
-  deprecated_alias("table_5_3()", 'thesis_table("5.3", classification = )', thesis_table_5_3(classification, x))
-}
-#' @rdname handmotion-deprecated
-#' @export
-table_5_3_claims <- function(classification, x = NULL) {
-  deprecated_alias("table_5_3_claims()", 'thesis_table("5.3 claims", classification = )',
-                   thesis_table_5_3_claims(classification, x))
-}
-#' @rdname handmotion-deprecated
-#' @export
-table_5_6 <- function(confusion, held_out = NULL) {
-  deprecated_alias("table_5_6()", 'thesis_table("5.6", confusion = )', thesis_table_5_6(confusion, held_out))
-}
-#' @rdname handmotion-deprecated
-#' @export
-table_5_7 <- function(fit, pcs = 1:5) deprecated_alias("table_5_7()", 'thesis_table("5.7", fit = )', thesis_table_5_7(fit, pcs))
-#' @rdname handmotion-deprecated
-#' @export
-table_5_8 <- function(confusion, held_out = NULL) {
-  deprecated_alias("table_5_8()", 'thesis_table("5.8", confusion = )', thesis_table_5_8(confusion, held_out))
 }
 
 thesis_table_5_1 <- function(models) {

@@ -69,6 +69,8 @@ fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ...)
     hm_abort("{.arg models} must be a {.cls grasp_models} fit, not {.obj_type_friendly {models}}.",
              "bad_input", argument = "models", call = call)
   }
+  # the types that have a model (a failed type cannot be a class)
+  models <- new_grasp_models(fitted_models(models), seed = attr(models, "seed"))
   types <- names(models)
   missing <- setdiff(types, as.character(unique(x$meta$grasp)))
   if (length(missing)) {

@@ -4,7 +4,7 @@
 # side by side and keep one clock, so a recorded and a generated grasp can be
 # compared in one file.
 
-#' Write hand motion as a GIF or MP4 video
+#' Write hand motion as a GIF or MP4 video, or a light HTML page
 #'
 #' Draws each frame as [autoplot.hand_pose()] does (solid hands, shaded by
 #' depth) and writes the animation with gganimate: a GIF through the magick
@@ -26,10 +26,18 @@
 #' `max_frames = 30`, 30 frames at 25 per second. The picture is `width` x
 #' `height` pixels.
 #'
+#' **HTML.** A file ending in `.html` gets one self-contained page instead:
+#' every frame an SVG drawing of the finger chains and the palm, shown in
+#' turn by a few lines of JavaScript at the recording's rate, with
+#' play/pause and a frame slider; no external assets, so it opens offline and
+#' can be attached anywhere. It draws one hand (`x` a `grasps`, a matrix, or
+#' an array from [forward_kinematics()]), `width` pixels square, and needs
+#' neither gganimate nor WebGL ([hand_3d()] is the interactive 3D view).
+#'
 #' @param x A [grasps()] object (the recording picked by `recording`), one
 #'   recording (a frames x DoF matrix), or a named list of these (each one
-#'   hand).
-#' @param file Output path ending in `.gif` or `.mp4`.
+#'   hand; not for HTML).
+#' @param file Output path ending in `.gif`, `.mp4` or `.html`.
 #' @param recording For a `grasps`, which recording (index or id).
 #' @param view See [autoplot.hand_pose()].
 #' @param width,height Size in pixels.
@@ -40,8 +48,7 @@
 #' @param ... Passed to [forward_kinematics()].
 #' @return `file`, invisibly, with attributes `frames` (number of video
 #'   frames) and `fps`.
-#' @seealso [hand_3d()] to turn the hand interactively, [animate_hand()] for
-#'   a light HTML page.
+#' @seealso [hand_3d()] to turn the hand interactively.
 #' @export
 #' @examples
 #' \donttest{
@@ -50,13 +57,26 @@
 #'                           max_frames = 12, width = 320, height = 240)
 #' attr(f, "frames")
 #' }
+#' h <- write_hand_animation(g[1], tempfile(fileext = ".html"), max_frames = 40)
+#' file.exists(h)
 write_hand_animation <- function(x, file, recording = 1L, view = "oblique", width = 480L, height = 480L,
                                  max_frames = 150L, rate = NULL, skeleton = hand_skeleton(), ...) {
   call <- rlang::caller_env()
   check_skeleton(skeleton, call = call)
-  if (!is.character(file) || length(file) != 1L || is.na(file) || !grepl("\\.(gif|mp4)$", tolower(file))) {
-    hm_abort("{.arg file} must be one path ending in {.file .gif} or {.file .mp4}.", "bad_input",
+  if (!is.character(file) || length(file) != 1L || is.na(file) || !grepl("\\.(gif|mp4|html)$", tolower(file))) {
+    hm_abort("{.arg file} must be one path ending in {.file .gif}, {.file .mp4} or {.file .html}.", "bad_input",
              argument = "file", call = call)
+  }
+  if (grepl("\\.html$", tolower(file))) {
+    if (is.list(x) && !inherits(x, "grasps")) {
+      hm_abort(c("An HTML page draws one hand; {.arg x} is a list of {length(x)}.",
+                 i = "Write a {.file .gif} or {.file .mp4} to compare hands, or use {.fn hand_3d}."),
+               "bad_input", argument = "x", call = call)
+    }
+    check_whole(width, "width", min = 16, max = 4096, call = call)
+    check_whole(max_frames, "max_frames", min = 2, max = 10000, call = call)
+    return(write_hand_html(x, file, skeleton = skeleton, view = view, recording = recording, fps = rate,
+                           max_frames = max_frames, size = width, call = call, ...))
   }
   check_whole(width, "width", min = 16, max = 4096, call = call)
   check_whole(height, "height", min = 16, max = 4096, call = call)

@@ -27,7 +27,7 @@ bench_record("200 frames, frame-by-frame / vectorised", as.numeric(loop$median) 
 
 # GraspDB14 sensors with the wrist (23 DoFs, mode "full") on 10,000 frames
 nf <- bq(10000, 1000)
-g <- matrix(runif(nf * 23, -1.2, 0.3), 10000, 23, dimnames = list(NULL, graspdb14_joint_map()$dof))
+g <- matrix(runif(nf * 23, -1.2, 0.3), 10000, 23, dimnames = list(NULL, joint_map("graspdb14")$dof))
 g <- g[seq_len(nf), , drop = FALSE]
 b <- bench::mark(forward_kinematics(g, skel, unit = "rad", mode = "full"), iterations = bq(10, 2), check = FALSE)
 cat(sprintf("GraspDB14 23 sensors, full mode, %d frames: median %.0f ms (%.2f ms per 100 frames)\n",

@@ -8,7 +8,7 @@
 #   * in-sample accuracy of the last-frame PCA classifier: 64% +/- 5
 #   * in-sample accuracy of the FPCA classifier:           35% +/- 5
 # Only simulator parameters are tuned; the pipeline runs with its defaults
-# and never sees a thesis number. The knobs (see ?simulator_params):
+# and never sees a thesis number. The knobs (see ?simulate_grasps):
 #   factor_scale[type]   subject factors in the final posture -> Table 5.7 pc5
 #   posture_spread       distinctness of the final postures (all types, one
 #                        multiplier)                      -> last-frame accuracy

@@ -1,5 +1,5 @@
 # Builds R/sysdata.rda: `simulator_defaults`, every default parameter of the
-# HUST-like simulator (see ?simulator_params), including its calibration: the
+# HUST-like simulator (see ?simulate_grasps), including its calibration: the
 # per-type target frame counts of Table 5.1 of Jeppsson (2017), the mean frame
 # count of each grasp type's recordings after over-long ones were removed.
 # Only the simulator uses these numbers; the modelling pipeline never sees them.
@@ -23,7 +23,7 @@ target_frames <- data.frame(id = tab$grasp_id, name = tab$grasp_name,
 simulator_defaults <- sim_default_params(target_frames)
 
 # --- calibration: the values data-raw/calibrate-simulator.R found -----------
-# (simulator parameters only; see the Calibration section of ?simulator_params)
+# (simulator parameters only; see the Calibration section of ?simulate_grasps)
 cal_file <- file.path("data-raw", "simulator-calibration.csv")
 if (file.exists(cal_file)) {
   cal <- utils::read.csv(cal_file, stringsAsFactors = FALSE)

@@ -17,7 +17,7 @@ test_that("the closest model wins; rows without distances get NA", {
   expect_equal(p$distance, c(1, 2, 3, NA))
   expect_output(print(cl), "accuracy 66.7% \\(2 of 3")
   expect_output(print(cl), "1 recording\\(s\\) without a prediction")
-  cm <- as_grasp_confusion(cl)
+  cm <- grasp_confusion(cl)
   expect_equal(cm$levels, c("Large Diameter", "Palmar Pinch", "Tripod"))
   expect_equal(cm$n_missing_predicted, 1L)
   expect_equal(cm$table["Palmar Pinch", "Tripod"], 1L)
@@ -54,7 +54,7 @@ test_that("last-frame classification is near 100% on planted well-separated type
   expect_s3_class(cl, "grasp_classification")
   expect_equal(cl$method, "last_frame")
   expect_equal(dim(cl$distances), c(length(g), 5L))
-  acc <- summary(as_grasp_confusion(cl))
+  acc <- summary(grasp_confusion(cl))
   expect_gte(acc$estimate[acc$metric == "accuracy"], 0.98)
   # same result from a fitted model; the method follows from its class
   fit <- fit_last_frame_pca(g, k = 5)
@@ -77,7 +77,7 @@ test_that("one-type data: every recording goes to the only type, accuracy 1", {
   g <- planted_types(types = 17, subjects = 3, trials = 3)
   cl <- classify(fit_last_frame_pca(g, k = 2), g)
   expect_true(all(cl$predictions$predicted == "Index Finger Extension"))
-  cm <- as_grasp_confusion(cl)
+  cm <- grasp_confusion(cl)
   expect_equal(cm$levels, "Index Finger Extension")
   expect_equal(summary(cm)$estimate[1], 1)
 })
@@ -96,8 +96,8 @@ test_that("FPCA classification is near 100% on planted well-separated types", {
   # every model fits its own type best (diagonal is the row minimum)
   expect_equal(distance_minima(tab)$model_min_own_type, 4L)
   # a model set where one type failed to fit: recorded and warned, never hidden
-  failed <- data.frame(grasp = "Tripod", message = "too few recordings", class = "x")
-  part <- structure(unclass(ms)[1:3], class = class(ms), failed = failed)
+  failed <- new_grasp_model_failed("Tripod", simpleError("too few recordings"))
+  part <- new_grasp_models(c(unclass(ms)[1:3], list(Tripod = failed)))
   expect_warning(clp <- classify(part, g), class = "handmotion_warning_projection_failed")
   expect_equal(clp$failures$model, "Tripod")
   expect_output(print(clp), "failed models: Tripod")
@@ -115,7 +115,7 @@ test_that("summary, autoplot and as.data.frame of a classification", {
   b <- ggplot2::ggplot_build(ggplot2::autoplot(cl))
   expect_equal(nrow(b$data[[1]]), 4)
   expect_equal(as.data.frame(cl), cl$predictions)
-  expect_snapshot(print(as_grasp_confusion(cl)))
+  expect_snapshot(print(grasp_confusion(cl)))
 })
 
 test_that("classify() needs fitted models and takes nothing else (it never fits silently)", {

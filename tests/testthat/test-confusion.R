@@ -66,12 +66,15 @@ test_that("as.data.frame gives the long form and round-trips through a table", {
   expect_named(d, c("predicted", "truth", "n"))
   expect_equal(nrow(d), 9)
   expect_equal(d$n[d$predicted == "B" & d$truth == "A"], 2L)
-  back <- as_grasp_confusion(cm$table)
+  back <- grasp_confusion(cm$table)
   expect_equal(unclass(back$table), unclass(cm$table))
   expect_equal(summary(back)$estimate, summary(cm)$estimate)
-  from_df <- as_grasp_confusion(data.frame(truth = known_truth, predicted = known_pred))
+  from_df <- grasp_confusion(data.frame(truth = known_truth, predicted = known_pred))
   expect_equal(unclass(from_df$table), unclass(cm$table))
-  expect_error(as_grasp_confusion(matrix(1:6, 2)), class = "handmotion_error_bad_input")
+  expect_error(grasp_confusion(matrix(1:6, 2)), class = "handmotion_error_bad_input")
+  expect_error(grasp_confusion(list(1)), class = "handmotion_error_bad_input")
+  expect_error(grasp_confusion(cm$table, levels = "A"), class = "handmotion_error_bad_input")
+  expect_identical(grasp_confusion(cm), cm)
 })
 
 test_that("printed confusion and summary are stable", {

@@ -97,7 +97,7 @@ test_that("least-squares scores reconstruct the final posture the trapezoidal on
     rec <- vapply(seq_along(m$dofs), function(j) {
       m$scores[, j, ] %*% m$basis$components[L, j, ] + m$basis$mean[L, j]
     }, numeric(m$n_used))
-    stats::median(apply(rec, 2, stats::sd) / apply(m$data$warped[, L, ], 2, stats::sd))
+    stats::median(apply(rec, 2, stats::sd) / apply(m$alignment$warped[, L, ], 2, stats::sd))
   }
   ls <- end_sd_ratio(fit("least_squares"))
   tz <- end_sd_ratio(fit("trapezoid"))

@@ -72,8 +72,8 @@ test_that("the warp is eq. 2.5's: length round(w(L)) and values at the inverted 
   }
   # lengths follow the training lengths (mean and spread within 15 %)
   big <- generate(m, n = 2000, seed = 1)
-  expect_equal(mean(big$meta$n_frames), mean(m$data$n_frames), tolerance = 0.05)
-  expect_equal(stats::sd(big$meta$n_frames), stats::sd(m$data$n_frames), tolerance = 0.15)
+  expect_equal(mean(big$meta$n_frames), mean(m$alignment$n_frames), tolerance = 0.05)
+  expect_equal(stats::sd(big$meta$n_frames), stats::sd(m$alignment$n_frames), tolerance = 0.15)
 })
 
 test_that("generated scores follow the fitted mixture (and a wrong sampler fails the test)", {

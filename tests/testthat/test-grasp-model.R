@@ -43,10 +43,10 @@ test_that("the mixture on FPC1 finds the two planted modes", {
 test_that("warping functions are in original frames and one FPC carries the length", {
   g <- planted_grasps(n = 50, p = 2, len_sd = 5, seed = 13)
   m <- fit_grasp_model(g, warping = "linear", seed = 1)
-  nk <- m$data$n_frames
+  nk <- m$alignment$n_frames
   L <- m$target_length
-  expect_equal(unname(m$data$warps[, L]), unname(as.numeric(nk)))
-  expect_equal(unname(m$data$warps[, 1]), rep(1, 50))
+  expect_equal(unname(m$alignment$warps[, L]), unname(as.numeric(nk)))
+  expect_equal(unname(m$alignment$warps[, 1]), rep(1, 50))
   expect_gt(m$warp$fpca$var_explained[1], 0.999)
   # positive warp score = longer grasp
   expect_gt(cor(m$warp$scores[, 1], nk), 0.999)
@@ -65,6 +65,11 @@ test_that("over-long recordings are removed by the documented rule and recorded"
   expect_false(any(c("r3", "r7") %in% m$ids))
   # the target length is the mean of what is kept
   expect_equal(m$target_length, as.integer(round(mean(g2$meta$n_frames[-c(3, 7)]))))
+  # the rule is an argument: a fence far out keeps them, a bad one is refused
+  loose <- fit_grasp_model(g2, warping = "linear", seed = 1, overlong = c(iqr_mult = 100, median_mult = 5))
+  expect_equal(loose$n_used, 30L)
+  expect_error(fit_grasp_model(g2, overlong = c(iqr = 1)), class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_model(g2, overlong = c(iqr_mult = -1)), class = "handmotion_error_bad_input")
 })
 
 test_that("the DTW path keeps the books: used + removed = input", {
@@ -73,8 +78,8 @@ test_that("the DTW path keeps the books: used + removed = input", {
   expect_true(m$warping$method %in% c("dtw", "linear"))
   expect_equal(m$n_used + nrow(m$removed), m$n_input)
   expect_equal(dim(m$scores), c(m$n_used, 3L, 2L))
-  expect_equal(dim(m$data$warped), c(m$n_used, m$target_length, 3L))
-  expect_identical(rownames(m$data$warps), m$ids)
+  expect_equal(dim(m$alignment$warped), c(m$n_used, m$target_length, 3L))
+  expect_identical(rownames(m$alignment$warps), m$ids)
   if (m$warping$method == "linear") expect_true("warping" %in% m$fallbacks$step)
 })
 
@@ -221,7 +226,7 @@ test_that("a model on linear warps can be drawn, whether asked for or fallen bac
   expect_identical(fell$warping$method, "linear")
   expect_match(fell$fallbacks$reason[fell$fallbacks$step == "warping"], "linear warping")
   expect_s3_class(ggplot2::ggplot_build(autoplot(fell, type = "warps")), "ggplot_built")
-  expect_equal(fell$data$warps, asked$data$warps)
+  expect_equal(fell$alignment$warps, asked$alignment$warps)
 })
 
 test_that("the FPCA of a constant DoF prints and has every field of an fpca_fit", {

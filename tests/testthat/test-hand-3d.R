@@ -40,7 +40,7 @@ test_that("joints are flagged exactly in the frames where a DoF breaks its limit
 
 test_that("overlay, markers and named lists", {
   g <- simulate_grasps(subjects = 1, grasps = 17, objects = 1, trials = 2, seed = 1)
-  w <- hand_3d(list(recorded = g[1], generated = g[2]), layout = "overlay", markers = handpicked_markers())
+  w <- hand_3d(list(recorded = g[1], generated = g[2]), layout = "overlay", markers = select_markers(method = "handpicked"))
   r <- w$x$recordings
   expect_equal(vapply(r, `[[`, character(1), "label"),
                paste0(c("recorded: ", "generated: "), g$meta$id, " (Index Finger Extension)"))
@@ -48,8 +48,8 @@ test_that("overlay, markers and named lists", {
   expect_false(is.null(r[[2]]$colour))
   expect_equal(r[[2]]$opacity, 0.5)
   expect_equal(r[[2]]$offset, c(0, 0, 0))
-  # six markers per frame, where markers_from_angles() puts them
-  m <- markers_from_angles(g$recordings[[1]], markers = handpicked_markers())
+  # six markers per frame, where forward_kinematics(markers = ) puts them
+  m <- forward_kinematics(g$recordings[[1]], markers = select_markers(method = "handpicked"))
   expect_length(r[[1]]$markers, length(m))
   expect_equal(r[[1]]$markers[1:3], unname(m[1, 1:3]), tolerance = 0.006)
 })
@@ -74,7 +74,7 @@ test_that("the widget page draws a hand that moves, without script errors, in a 
   skip_if_not_installed("magick")
   g <- simulate_grasps(subjects = 1, grasps = 17, objects = 1, trials = 1, seed = 1)
   page <- file.path(withr::local_tempdir(), "hand.html")
-  w <- hand_3d(g, limits = TRUE, markers = handpicked_markers(), loop = FALSE)
+  w <- hand_3d(g, limits = TRUE, markers = select_markers(method = "handpicked"), loop = FALSE)
   htmlwidgets::saveWidget(w, page, selfcontained = FALSE)
   n <- g$meta$n_frames[1]
   dom <- browser_dom(page, 1000 * n / g$rate + 500)

@@ -27,7 +27,7 @@ test_that("ranked 6 markers beat 3, the no-PCA regression and the hand-picked se
   e6 <- handover_error(test, reconstruct(fit_handover(ref, m6), test))
   e3 <- handover_error(test, reconstruct(fit_handover(ref, m3), test))
   e_direct <- handover_error(test, reconstruct(fit_handover(ref, m6, method = "direct"), test))
-  e_hand <- handover_error(test, reconstruct(fit_handover(ref, handpicked_markers()), test))
+  e_hand <- handover_error(test, reconstruct(fit_handover(ref, select_markers(method = "handpicked")), test))
   # a useful reconstruction: well under the spread of the test angles themselves
   spread <- mean(abs(sweep(do.call(rbind, test$recordings), 2, colMeans(do.call(rbind, ref$recordings)))))
   expect_lt(e6, spread / 3)
@@ -39,7 +39,7 @@ test_that("ranked 6 markers beat 3, the no-PCA regression and the hand-picked se
 test_that("LWR on all components equals LWR straight to the angles (why 'direct' is global)", {
   ref <- split$ref
   fit <- fit_handover(ref, markers = 3, smooth = FALSE)
-  q <- markers_from_angles(split$test[1], markers = fit$markers)[[1]]
+  q <- forward_kinematics(split$test[1], markers = fit$markers)[[1]]
   y <- do.call(rbind, ref$recordings)
   direct_local <- lwr_predict(fit$ref_x, y, q, fit$k_used, fit$ridge, fit$eps)
   via_pca <- reconstruct(fit, split$test[1])$recordings[[1]]
@@ -52,7 +52,7 @@ test_that("LWR on all components equals LWR straight to the angles (why 'direct'
 test_that("a marker matrix query gives the same result as the grasps query; columns may be reordered", {
   fit <- fit_handover(split$ref, markers = 4)
   g1 <- split$test[1]
-  mk <- markers_from_angles(g1, markers = fit$markers)[[1]]
+  mk <- forward_kinematics(g1, markers = fit$markers)[[1]]
   a <- reconstruct(fit, g1)$recordings[[1]]
   b <- reconstruct(fit, mk)
   expect_equal(unname(b$recordings[[1]]), unname(a))
@@ -60,7 +60,7 @@ test_that("a marker matrix query gives the same result as the grasps query; colu
   expect_equal(reconstruct(fit, rev_cols)$recordings[[1]], b$recordings[[1]])
   expect_equal(predict(fit, mk)$recordings[[1]], b$recordings[[1]])
   # extra named markers (e.g. the full set) are ignored
-  all13 <- markers_from_angles(g1)[[1]]
+  all13 <- forward_kinematics(g1, markers = TRUE)[[1]]
   expect_equal(reconstruct(fit, all13)$recordings[[1]], b$recordings[[1]])
   # unnamed columns are refused: in another order they would give a wrong hand
   expect_error(reconstruct(fit, unname(mk)), class = "handmotion_error_bad_markers")
@@ -70,7 +70,7 @@ test_that("a marker matrix query gives the same result as the grasps query; colu
 test_that("wrong marker sets are refused with classed errors", {
   ref <- split$ref
   fit <- fit_handover(ref, markers = c("thumb_tip", "index_tip", "ring_tip"))
-  mk <- markers_from_angles(split$test[1], markers = fit$markers)[[1]]
+  mk <- forward_kinematics(split$test[1], markers = fit$markers)[[1]]
   expect_error(reconstruct(fit, unname(mk[, 1:6])), class = "handmotion_error_bad_markers")
   expect_error(reconstruct(fit, mk[, 1:6]), class = "handmotion_error_bad_markers")
   expect_error(reconstruct(fit, mk[0, ]), class = "handmotion_error_bad_markers")
@@ -101,7 +101,7 @@ test_that("a reference too small for the regression is a classed error", {
 
 test_that("occluded (NaN) markers are dropped per frame, and fully occluded frames are an error", {
   fit <- fit_handover(split$ref, markers = 6)
-  mk <- markers_from_angles(split$test[1], markers = fit$markers)[[1]]
+  mk <- forward_kinematics(split$test[1], markers = fit$markers)[[1]]
   full <- reconstruct(fit, mk)
   occ <- mk
   occ[5:9, 1:3] <- NaN           # first marker hidden for five frames
@@ -162,28 +162,31 @@ test_that("handover_error is the mean absolute angle error per frame in degrees"
 })
 
 test_that("PCA reconstruction error falls with the number of components (Figure 1)", {
-  pe <- handover_pca_error(split$ref)
+  pe <- handover_error(split$ref, by = "ncomp")
   expect_s3_class(pe, "handover_pca_error")
   expect_equal(nrow(pe), 16)
   expect_true(all(diff(pe$error) <= 1e-9))
   expect_lt(pe$error[16], 1e-8)
   expect_equal(pe$variance[16], 1)
-  held <- handover_pca_error(split$ref, split$test)
+  held <- handover_error(split$test, by = "ncomp", reference = split$ref)
   expect_gt(held$error[2], pe$error[2] * 0.5)
   fit <- fit_handover(split$ref, markers = 3)
-  expect_equal(handover_pca_error(fit, split$test)$error, held$error)
+  expect_equal(handover_error(split$test, by = "ncomp", reference = fit)$error, held$error)
+  expect_error(handover_error(split$test), class = "handmotion_error_bad_input")   # no recon
   b <- ggplot2::ggplot_build(ggplot2::autoplot(pe))
   expect_equal(nrow(b$data[[1]]), 16)
 })
 
 test_that("search-based selection returns a logged greedy set", {
-  s <- search_markers(split$ref, n = 2, max_frames = 150, k = 64)
+  s <- select_markers(split$ref, n = 2, method = "search", max_frames = 150, k = 64)
   expect_length(s, 2)
   log <- attr(s, "search")
   expect_equal(nrow(log), 13 + 12)
   expect_equal(s[1], sub(",.*", "", log$set[log$step == 1][which.min(log$error[log$step == 1])]))
-  expect_error(search_markers(split$ref, n = 2, holdout = "nope"), class = "handmotion_error_bad_input")
-  expect_error(search_markers(split$ref[split$ref$meta$grasp == split$ref$meta$grasp[1]], n = 2),
+  expect_error(select_markers(split$ref, n = 2, method = "search", holdout = "nope"),
+               class = "handmotion_error_bad_input")
+  expect_error(select_markers(split$ref[split$ref$meta$grasp == split$ref$meta$grasp[1]], n = 2,
+                              method = "search"),
                class = "handmotion_error_reference_too_small")
 })
 
@@ -203,7 +206,8 @@ test_that("compare_marker_sets tabulates and plots the comparison", {
 })
 
 test_that("the figures build: markers on the hand, component trajectories, ranking", {
-  p <- plot_marker_sets(list(`hand-picked` = handpicked_markers(), tips = c("thumb_tip", "index_tip")))
+  p <- ggplot2::autoplot(hand_skeleton(), markers = list(`hand-picked` = select_markers(method = "handpicked"),
+                                                         tips = c("thumb_tip", "index_tip")))
   b <- ggplot2::ggplot_build(p)
   # the marker layer is the one whose data says which markers are recorded
   marks <- Filter(function(l) "selected" %in% names(l$data), b$plot$layers)[[1]]$data
@@ -211,7 +215,7 @@ test_that("the figures build: markers on the hand, component trajectories, ranki
   expect_equal(nrow(marks), 2 * 16)
   fit <- fit_handover(split$ref, markers = 3)
   rec <- reconstruct(fit, split$test[1])
-  p5 <- plot_handover_components(fit, split$test[1], list(`3 markers` = rec), components = 1:2)
+  p5 <- ggplot2::autoplot(fit, split$test[1], list(`3 markers` = rec), components = 1:2)
   d5 <- ggplot2::ggplot_build(p5)$plot$data
   expect_setequal(levels(d5$source), c("ground truth", "3 markers"))
   # with all components and smoothing the plotted scores are the model's smoothed scores
@@ -242,7 +246,7 @@ test_that("hand-over runs on the real GraspDB14 samples (radians, CyberGlove map
 
 test_that("the C regression engine agrees with the R reference engine", {
   fit <- fit_handover(split$ref, markers = 4, smooth = FALSE)
-  q <- markers_from_angles(split$test[1:2], markers = fit$markers)
+  q <- forward_kinematics(split$test[1:2], markers = fit$markers)
   q <- do.call(rbind, q)
   for (k in c(20, 256, nrow(fit$ref_x))) {
     a <- lwr_predict(fit$ref_x, fit$ref_scores, q, k, fit$ridge, fit$eps)

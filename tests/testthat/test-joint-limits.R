@@ -17,7 +17,7 @@ test_that("angles outside the limits are clamped and counted, the rest untouched
 
 test_that("clamping respects the mapping's sign and the unit", {
   s <- hand_skeleton()
-  x <- matrix(0, 2, 23, dimnames = list(NULL, graspdb14_joint_map()$dof))
+  x <- matrix(0, 2, 23, dimnames = list(NULL, joint_map("graspdb14")$dof))
   x[1, "I-PIPJ"] <- -150 * pi / 180   # flexion is negative in GraspDB14 files
   x[2, "I-PIPJ"] <- 10 * pi / 180     # = 10 degrees of hyperextension
   out <- clamp_to_limits(x, s, unit = "rad")
@@ -48,7 +48,7 @@ test_that("every joint axis a default joint map drives has its own declared rang
   # a limit lost in data-raw (th-mcp's once sat inside a comment) leaves a
   # driven axis on generic or empty limits; this catches it for both maps
   skel <- hand_skeleton()
-  for (map in list(hust_joint_map(), graspdb14_joint_map())) {
+  for (map in list(joint_map("hust"), joint_map("graspdb14"))) {
     used <- map[!is.na(map$axis) & map$frame == "joint" & map$sign * map$scale != 0, ]
     j <- as.matrix(skel$joints[match(used$joint, skel$joints$name), skeleton_limit_cols])
     lo <- j[cbind(seq_len(nrow(j)), match(paste0("rot", used$axis, "_min"), colnames(j)))]

@@ -1,5 +1,5 @@
 hust <- function(n = 1, value = 0) matrix(value, n, 16, dimnames = list(NULL, hust_dofs$name))
-gdb <- function(n = 1, value = 0) matrix(value, n, 23, dimnames = list(NULL, graspdb14_joint_map()$dof))
+gdb <- function(n = 1, value = 0) matrix(value, n, 23, dimnames = list(NULL, joint_map("graspdb14")$dof))
 dist <- function(a, b) sqrt(sum((a - b)^2))
 
 test_that("the flat pose puts the middle fingertip 150-220 mm from the wrist", {
@@ -21,7 +21,7 @@ test_that("GraspDB14's skeleton and sensors: flat pose and real recording", {
   expect_lte(d, 220)
   raw <- utils::read.table(shared_file("data", "graspdb14", "01_11_ex03-rad-004-grasp-su04.txt"))
   a <- as.matrix(raw[, 8:30])
-  colnames(a) <- graspdb14_joint_map()$dof
+  colnames(a) <- joint_map("graspdb14")$dof
   p <- forward_kinematics(a, s, unit = "rad", mode = "full")
   expect_equal(dim(p), c(282L, 25L, 3L))
   expect_true(all(is.finite(p)))
@@ -134,9 +134,16 @@ test_that("grasps in, arrays or a list of arrays out", {
 })
 
 test_that("mappings: defaults, custom, unknown DoFs and missing joints", {
-  expect_equal(default_joint_map(c("PIP2", "MCP2"))$joint, c("if-pip", "if-mcp"))
-  expect_equal(default_joint_map(c("t_tmj", "w-fe"))$joint, c("th-tmc", "root"))
-  expect_error(default_joint_map(c("a", "b")), class = "handmotion_error_bad_mapping")
+  expect_equal(joint_map(dofs = c("PIP2", "MCP2"))$joint, c("if-pip", "if-mcp"))
+  expect_equal(joint_map(dofs = c("t_tmj", "w-fe"))$joint, c("th-tmc", "root"))
+  expect_error(joint_map(dofs = c("a", "b")), class = "handmotion_error_bad_mapping")
+  expect_identical(joint_map("hust"), hust_joint_map())
+  expect_equal(nrow(joint_map("graspdb14")), 23L)
+  expect_equal(joint_map("graspdb14", dofs = c("w_fe", "T-TMJ"))$dof, c("w_fe", "T-TMJ"))
+  expect_equal(joint_map("graspdb14", dofs = c("w_fe", "T-TMJ"))$joint, c("root", "th-tmc"))
+  expect_error(joint_map("hust", dofs = "W-FE"), class = "handmotion_error_bad_mapping")
+  expect_error(joint_map(), class = "handmotion_error_bad_input")
+  expect_error(joint_map("hust2"), class = "handmotion_error_bad_input")
   x <- matrix(c(0, 90), 1, dimnames = list(NULL, c("a", "b")))
   m <- data.frame(dof = "b", joint = "mf-pip", axis = "x", sign = 1, scale = 1)
   p <- forward_kinematics(x, mapping = m)
@@ -164,7 +171,7 @@ test_that("a turn about the parent's axis: GraspDB14's thumb rotation about the 
   expect_equal(attr(p, "fk")$mapping$frame[attr(p, "fk")$mapping$dof == "T-TMCJ"], "parent")
   # the fingers do not move
   expect_equal(unname(p[1, "if-tip", ]), unname(rest["if-tip", ]))
-  m <- graspdb14_joint_map()
+  m <- joint_map("graspdb14")
   m$frame[1] <- "grandparent"
   expect_error(forward_kinematics(x, s, mapping = m), class = "handmotion_error_bad_mapping")
   # a mapping without a frame column means the joint's own axes
@@ -182,7 +189,7 @@ test_that("the real power-sphere hold puts the thumb in front of the palm, oppos
   expect_lt(p["th-tip", "y"], p["th-mcp", "y"] - 30)
   expect_lt(p["th-tip", "z"], -30)                     # on the palm side
   expect_lt(sqrt(sum((p["th-tip", ] - p["if-tip", ])^2)), 40)
-  m <- graspdb14_joint_map()
+  m <- joint_map("graspdb14")
   m[1, c("axis", "frame")] <- c("z", "joint")
   literal <- forward_kinematics(g, s, frames = 120, mapping = m)[[1]][1, , ]
   expect_gt(literal["th-tip", "y"], 0)

@@ -7,9 +7,11 @@ test_that("the full marker set has 13 hand and 3 forearm markers on skeleton joi
   jn <- hand_skeleton()$joints$name
   expect_true(all(ms$joint %in% jn))
   expect_true(all(stats::na.omit(ms$toward) %in% jn))
-  expect_true(all(handpicked_markers() %in% ms$marker))
+  hp <- select_markers(method = "handpicked")
+  expect_true(all(hp %in% ms$marker))
   # the hand-picked set, like Hoyet et al.'s, leaves the middle and ring fingers bare
-  expect_false(any(grepl("^(middle|ring)", handpicked_markers())))
+  expect_false(any(grepl("^(middle|ring)", hp)))
+  expect_error(select_markers(method = "handpicked", n = 3), class = "handmotion_error_bad_markers")
 })
 
 test_that("markers sit on the forward-kinematics joints, relative to the root", {
@@ -89,6 +91,21 @@ test_that("selected sets are nested prefixes of the ranking", {
   expect_error(select_markers(rk, 0), class = "handmotion_error_bad_markers")
   expect_error(select_markers(rk, 14), class = "handmotion_error_bad_markers")
   expect_error(select_markers(rk, 2.5), class = "handmotion_error_bad_markers")
+  expect_error(select_markers(n = 3), class = "handmotion_error_bad_input")   # ranking needs x
+  expect_error(select_markers(rk, 3, method = "rank"), class = "handmotion_error_bad_input")
+})
+
+test_that("forward_kinematics(markers = ) gives the marker positions", {
+  ang <- matrix(0, 3, 16, dimnames = list(NULL, hust_dofs$name))
+  ang[2, ] <- 30
+  expect_equal(forward_kinematics(ang, markers = c("index_tip", "thumb_tip")),
+               markers_from_angles(ang, markers = c("index_tip", "thumb_tip")))
+  expect_equal(ncol(forward_kinematics(ang, markers = TRUE)), 39)
+  g <- grasps(list(ang, ang[3:1, ]), dofs = hust_dofs$name)
+  m <- forward_kinematics(g, markers = "index_tip")
+  expect_named(m, g$meta$id)
+  expect_equal(m[[2]], markers_from_angles(ang[3:1, ], markers = "index_tip"))
+  expect_error(forward_kinematics(ang, markers = "nose_tip"), class = "handmotion_error_bad_markers")
 })
 
 test_that("forearm markers are not ranked and bad marker matrices are refused", {

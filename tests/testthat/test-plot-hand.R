@@ -58,15 +58,16 @@ test_that("views project as documented", {
   expect_error(view_matrix("sideways"), class = "handmotion_error_bad_input")
 })
 
-test_that("plot_pose_grid() draws one panel per group and set", {
+test_that("autoplot(type = \"poses\") draws one panel per group and set", {
   flat <- hust(5)
   bent <- hust(5, 60)
   g <- grasps(list(flat, bent, bent), meta = data.frame(grasp = c(1, 2, 2)))
-  p <- plot_pose_grid(g)
+  p <- ggplot2::autoplot(g, type = "poses")
   expect_equal(length(unique(geom_data(p, "GeomPolygon")$PANEL)), 2L)
   bones <- unique(p$layers[[1]]$data[p$layers[[1]]$data$kind == "bone", c("id", "piece")])
   expect_equal(nrow(bones), 2L * 24L)      # one recording per type
-  gg <- plot_pose_grid(list(recorded = g, generated = g[2:3]), view = "radial")
+  gg <- ggplot2::autoplot(g, type = "poses", label = "recorded", compare = list(generated = g[2:3]),
+                          view = "radial")
   b <- ggplot2::ggplot_build(gg)
   expect_equal(nrow(b$layout$layout), 2L)        # one panel per type, sets side by side
   # in each panel the generated hand stands right of the recorded one, without overlap
@@ -79,6 +80,7 @@ test_that("plot_pose_grid() draws one panel per group and set", {
   expect_equal(sort(as.character(txt$label)), c("generated", "recorded", "recorded"))
   expect_true(all(txt$y < min(pts$y)))
   expect_setequal(as.character(unique(gg$layers[[2]]$data$set)), c("recorded", "generated"))
-  expect_error(plot_pose_grid(g, by = "colour"), class = "handmotion_error_bad_input")
-  expect_error(plot_pose_grid(list(1)), class = "handmotion_error_bad_input")
+  expect_error(ggplot2::autoplot(g, type = "poses", by = "colour"), class = "handmotion_error_bad_input")
+  expect_error(ggplot2::autoplot(g, type = "poses", compare = list(1)), class = "handmotion_error_bad_input")
+  expect_error(ggplot2::autoplot(g, type = "poses", compare = g), class = "handmotion_error_bad_input")
 })

@@ -33,10 +33,10 @@ test_that("projection plot shows a recording and its FPC projection (Figure 5.5)
   expect_equal(nrow(d), 2L * L * 3L)
   expect_setequal(unique(d$colour), c("grey50", "red"))
   grey_d1 <- d$y[d$PANEL == 1 & d$colour == "grey50"]
-  expect_equal(grey_d1, unname(m$data$warped["r3", , "d1"]))
+  expect_equal(grey_d1, unname(m$alignment$warped["r3", , "d1"]))
   red_d1 <- d$y[d$PANEL == 1 & d$colour == "red"]
   expect_lt(max(abs(red_d1 - grey_d1)), 1)          # 2 FPCs explain the planted curves
-  # a new recording through project()
+  # a new recording through predict()
   nd <- planted_grasps(n = 1, p = 3, seed = 62)
   b2 <- ggplot2::ggplot_build(ggplot2::autoplot(m, type = "projection", newdata = nd, dof = "d2"))
   expect_equal(nrow(b2$data[[1]]), 2L * L)
@@ -110,4 +110,17 @@ test_that("the alignment figure names each panel's axes in its strip", {
   lab <- p$facet$params$labeller(data.frame(panel = levels(b$layout$layout$panel)))
   expect_match(lab[[1]][1], "recordings \\(y\\) by frames before warping \\(x\\)")
   expect_match(lab[[1]][2], "original frame \\(y\\) by warped frame \\(x\\)")
+})
+
+test_that("a model keeps its alignment once and draws it", {
+  g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
+  m <- fit_grasp_model(g, seed = 1)
+  expect_s3_class(m$alignment, "grasp_alignment")
+  expect_null(m$data)
+  expect_identical(m$alignment$ids, m$ids)
+  b <- ggplot2::ggplot_build(ggplot2::autoplot(m, type = "alignment"))
+  expect_equal(b$data, ggplot2::ggplot_build(ggplot2::autoplot(m$alignment))$data)
+  small <- fit_grasp_model(g, seed = 1, keep_data = FALSE)
+  expect_null(small$alignment)
+  expect_error(ggplot2::autoplot(small, type = "alignment"), class = "handmotion_error_bad_input")
 })

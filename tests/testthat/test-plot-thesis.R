@@ -6,33 +6,37 @@ strip_recording <- function(n = 21) {
   rec
 }
 
-test_that("plot_frame_counts marks exactly the recordings the over-long rule removes", {
+test_that("autoplot(type = \"frame_counts\") marks exactly the recordings the over-long rule removes", {
   lens <- c(40, 41, 42, 39, 40, 43, 38, 41, 40, 120)
   recs <- lapply(lens, function(n) matrix(0, n, 16))
   g <- grasps(recs, meta = data.frame(grasp = rep("Tripod", 10)))
-  p <- plot_frame_counts(g)
+  p <- ggplot2::autoplot(g, type = "frame_counts")
   b <- ggplot2::ggplot_build(p)
   expect_equal(as.character(p$data$status), ifelse(find_overlong(lens), "over-long", "kept"))
   expect_equal(sum(p$data$status == "over-long"), 1L)
   # the dashed fence is the rule's threshold
   expect_equal(unique(b$data[[2]]$xintercept), overlong_threshold(lens))
+  # the rule is the model's `overlong` argument; a value left out keeps its default
+  tight <- ggplot2::ggplot_build(ggplot2::autoplot(g, type = "frame_counts", overlong = c(median_mult = 1)))
+  expect_equal(unique(tight$data[[2]]$xintercept),
+               overlong_threshold(lens, overlong_rule(iqr_mult = 3, median_mult = 1)))
   # every recording is counted once in the histogram
   expect_equal(sum(b$data[[1]]$count), length(lens))
 })
 
-test_that("plot_frame_counts draws one panel per requested type and rejects absent ones", {
+test_that("autoplot(type = \"frame_counts\") draws one panel per requested type and rejects absent ones", {
   g <- simulate_grasps(subjects = 3, grasps = c(3, 15), objects = 1, trials = 2, seed = 1)
-  p <- plot_frame_counts(g)
+  p <- ggplot2::autoplot(g, type = "frame_counts")
   expect_setequal(levels(p$data$grasp), c("Medium Wrap", "Fixed Hook"))
-  expect_equal(levels(plot_frame_counts(g, grasp = 15)$data$grasp), "Fixed Hook")
-  expect_error(plot_frame_counts(g, grasp = "Tripod"), class = "handmotion_error_too_few_recordings")
-  expect_error(plot_frame_counts(list()), class = "handmotion_error")
+  expect_equal(levels(ggplot2::autoplot(g, type = "frame_counts", grasp = 15)$data$grasp), "Fixed Hook")
+  expect_error(ggplot2::autoplot(g, type = "frame_counts", grasp = "Tripod"), class = "handmotion_error_too_few_recordings")
+  expect_error(ggplot2::autoplot(g, type = "frame_counts", overlong = c(iqr = 1)), class = "handmotion_error_bad_input")
 })
 
-test_that("plot_frame_strip draws each set at the same fractions of its own duration", {
+test_that("autoplot(type = \"strip\") draws each set at the same fractions of its own duration", {
   a <- grasps(list(strip_recording(21)), meta = data.frame(grasp = "Tripod"))
   b <- grasps(list(strip_recording(41)), meta = data.frame(grasp = "Tripod"))
-  p <- plot_frame_strip(list(recorded = a, generated = b), n_frames = 5)
+  p <- ggplot2::autoplot(a, type = "strip", label = "recorded", compare = list(generated = b), n_frames = 5)
   built <- ggplot2::ggplot_build(p)
   pts <- p$layers[[2]]$data
   expect_equal(levels(pts$time), c("0%", "25%", "50%", "75%", "100%"))
@@ -48,18 +52,18 @@ test_that("plot_frame_strip draws each set at the same fractions of its own dura
   expect_true(reach[1] > reach[5])
 })
 
-test_that("plot_frame_strip picks recordings by index or id and checks its arguments", {
+test_that("autoplot(type = \"strip\") picks recordings by index or id and checks its arguments", {
   g <- grasps(list(strip_recording(11), strip_recording(21)),
               meta = data.frame(id = c("a", "b"), grasp = c("Tripod", "Tripod")))
-  p <- plot_frame_strip(g, recording = "b", n_frames = 3)
+  p <- ggplot2::autoplot(g, type = "strip", recording = "b", n_frames = 3)
   expect_equal(sort(unique(p$layers[[2]]$data$frame)), c(1, 11, 21))
-  p2 <- plot_frame_strip(g, recording = 1, n_frames = 3)
+  p2 <- ggplot2::autoplot(g, type = "strip", recording = 1, n_frames = 3)
   expect_equal(sort(unique(p2$layers[[2]]$data$frame)), c(1, 6, 11))
   # a recording shorter than n_frames keeps each frame once
   short <- grasps(list(strip_recording(3)), meta = data.frame(grasp = "Tripod"))
-  expect_equal(sort(unique(plot_frame_strip(short, n_frames = 6)$layers[[2]]$data$frame)), 1:3)
-  expect_error(plot_frame_strip(g, recording = "zz"), class = "handmotion_error_bad_input")
-  expect_error(plot_frame_strip(g, recording = 3), class = "handmotion_error_bad_input")
-  expect_error(plot_frame_strip(g, n_frames = 1), class = "handmotion_error_bad_input")
-  expect_error(plot_frame_strip(list(g, "x")), class = "handmotion_error_bad_input")
+  expect_equal(sort(unique(ggplot2::autoplot(short, type = "strip", n_frames = 6)$layers[[2]]$data$frame)), 1:3)
+  expect_error(ggplot2::autoplot(g, type = "strip", recording = "zz"), class = "handmotion_error_bad_input")
+  expect_error(ggplot2::autoplot(g, type = "strip", recording = 3), class = "handmotion_error_bad_input")
+  expect_error(ggplot2::autoplot(g, type = "strip", n_frames = 1), class = "handmotion_error_bad_input")
+  expect_error(ggplot2::autoplot(g, type = "strip", compare = list(x = "x")), class = "handmotion_error_bad_input")
 })

@@ -124,7 +124,10 @@ test_that("bad arguments fail with classed errors naming the argument", {
   expect_equal(arg_of(simulate_grasps(seed = "a")), "seed")
   expect_equal(arg_of(simulate_grasps(seed = 1.5)), "seed")
   expect_equal(arg_of(simulate_grasps(overlong = NA)), "overlong")
-  expect_error(simulate_grasps(params = list()), class = "handmotion_error_bad_params")
+  expect_error(simulate_grasps(params = 1), class = "handmotion_error_bad_params")
+  expect_error(simulate_grasps(params = list(0)), class = "handmotion_error_bad_params")
+  expect_error(simulate_grasps(grasps = 1, params = list(noise_sd = -1)), class = "handmotion_error_bad_params")
+  expect_error(simulate_grasps(grasps = 1, params = list(no_such_thing = 1)), class = "handmotion_error_bad_input")
   p <- simulator_params()
   p$postures <- p$postures[1:3, ]
   expect_error(simulate_grasps(params = p), class = "handmotion_error_bad_params")
@@ -132,6 +135,16 @@ test_that("bad arguments fail with classed errors naming the argument", {
   expect_error(simulator_params(no_such_thing = 1), class = "handmotion_error_bad_input")
   expect_error(simulator_params(noise_sd = -1), class = "handmotion_error_bad_params")
   expect_error(simulator_params(overlong_multiplier = c(3, 2)), class = "handmotion_error_bad_params")
+})
+
+test_that("params replaces the named simulator parameters and keeps the rest", {
+  quiet <- simulate_grasps(subjects = 2, grasps = 3, objects = 1, trials = 1, seed = 3,
+                           params = list(noise_sd = 0, drift_sd = 0))
+  full <- simulate_grasps(subjects = 2, grasps = 3, objects = 1, trials = 1, seed = 3,
+                          params = simulator_params(noise_sd = 0, drift_sd = 0))
+  expect_identical(quiet, full)
+  expect_false(identical(quiet$recordings, simulate_grasps(subjects = 2, grasps = 3, objects = 1,
+                                                           trials = 1, seed = 3)$recordings))
 })
 
 test_that("DIP follows 2/3 of PIP", {

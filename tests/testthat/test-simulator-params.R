@@ -13,8 +13,8 @@ test_that("simulator_params() holds every documented element, validated", {
   expect_equal(p$dip_pip_ratio, 2 / 3)
   # each latent factor moves several joints together
   expect_true(all(colSums(abs(p$loadings) > 0) >= 4))
-  # every element is documented on the help page
-  rd_file <- test_path("..", "..", "man", "simulator_params.Rd")
+  # every element is documented on the help page (?simulate_grasps, section Simulator parameters)
+  rd_file <- test_path("..", "..", "man", "simulate_grasps.Rd")
   skip_if_not(file.exists(rd_file), "man/ not available (installed package)")
   rd <- paste(readLines(rd_file), collapse = "\n")
   for (el in names(p)[names(p) != "reference_rate"]) expect_match(rd, el, fixed = TRUE, info = el)

@@ -131,15 +131,11 @@ test_that("printed tables are stable", {
   expect_snapshot(print(thesis_table("5.3 claims", classification = d$cl)[c("claim", "thesis")], row.names = FALSE))
 })
 
-test_that("thesis_table() refuses unknown tables and arguments; the numbered names still work, once warned", {
+test_that("thesis_table() refuses unknown tables and arguments", {
   d <- small_design()
   expect_error(thesis_table("5.9", models = d$ms), class = "handmotion_error_bad_input")
   expect_error(thesis_table("5.1", d$ms), class = "handmotion_error_bad_input")
   expect_error(thesis_table("5.1", model = d$ms), class = "handmotion_error_bad_input")
-  rm(list = ls(deprecation_state), envir = deprecation_state)
-  expect_warning(old <- table_5_1(d$ms), class = "handmotion_warning_deprecated")
-  expect_identical(old, thesis_table("5.1", models = d$ms))
-  expect_no_warning(table_5_1(d$ms))   # once per session
   expect_identical(attr(thesis_table("5.3 claims", classification = d$cl), "most_attracting"),
                    distance_minima(distance_table(d$cl))$most_attracting)
 })

@@ -23,7 +23,7 @@ test_that("a real GraspDB14 recording with wrist motion exports exactly", {
   s <- read_skeleton(shared_file("data", "graspdb14", "default.xmlskel"))
   raw <- utils::read.table(shared_file("data", "graspdb14", "01_11_ex03-rad-004-grasp-su04.txt"))
   a <- as.matrix(raw[1:60, 8:30])
-  colnames(a) <- graspdb14_joint_map()$dof
+  colnames(a) <- joint_map("graspdb14")$dof
   f <- withr::local_tempfile(fileext = ".bvh")
   write_bvh(a, f, s, unit = "rad", mode = "full")
   b <- read_bvh(f)

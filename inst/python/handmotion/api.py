@@ -237,7 +237,7 @@ def classify(models, x, method=None, **kwargs):
     if method is not None:
         kwargs["method"] = method
     res = call("classify", models, g, **kwargs)
-    conf = call("as_grasp_confusion", res)
+    conf = call("grasp_confusion", res)
     table = ro.r["as.data.frame.matrix"](ro.r["unclass"](conf.rx2("table")))
     summ = r_to_py(call(ro.r["summary"], conf))
     acc = summ.loc[summ["metric"] == "accuracy", "estimate"]
@@ -356,13 +356,17 @@ def rank_markers(reference, **kwargs):
     return r_to_py(call("rank_markers", _as_grasps(reference, "reference"), **kwargs))
 
 
-def select_markers(x, n=6, **kwargs):
-    """The ``n`` most influential markers of a reference set (or of a :func:`rank_markers` ranking).
+def select_markers(x=None, n=6, method="ranked", **kwargs):
+    """Choose ``n`` hand-over markers.
 
-    The sets are nested: the 3-marker set lies inside the 6-marker set.
+    ``method="ranked"`` (default): the ``n`` most influential markers of a reference set
+    ``x``; the sets are nested (the 3-marker set lies inside the 6-marker set).
+    ``"handpicked"``: the six-marker baseline after Hoyet et al. (``x`` not needed).
+    ``"search"``: the set with the least held-out reconstruction error on ``x``
+    (keyword arguments ``holdout``, ``max_frames``, ``seed``, ... as in R).
     """
-    ref = x if isinstance(x, RHandle) else _as_grasps(x, "x")
-    return [str(v) for v in call("select_markers", ref, n=_check_count(n, "n"), **kwargs)]
+    ref = None if x is None else x if isinstance(x, RHandle) else _as_grasps(x, "x")
+    return [str(v) for v in call("select_markers", ref, n=_check_count(n, "n"), method=method, **kwargs)]
 
 
 def fit_handover(reference, markers=6, **kwargs):

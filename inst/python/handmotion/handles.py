@@ -38,8 +38,16 @@ class GraspModels(RHandle):
         return r_to_py(call(r().r["summary"], self.robj))
 
     def grasp_types(self):
-        """Names of the grasp types that have a model."""
-        return [str(n) for n in r().r["names"](self.robj)]
+        """Names of the grasp types that have a fitted model (a type whose fit failed stays
+        in the set, see :meth:`failed`, but has no model)."""
+        fitted = r().r("function(x) names(Filter(function(m) inherits(m, 'grasp_model'), unclass(x)))")
+        return [str(n) for n in fitted(self.robj)]
+
+    def failed(self):
+        """The grasp types whose fit failed, with the reason, as a dict {type: message}."""
+        s = self.summary()
+        bad = s[s["failed"].notna()]
+        return {str(g): str(m) for g, m in zip(bad["grasp"], bad["failed"])}
 
     def __len__(self):
         return len(self.grasp_types())

@@ -14,6 +14,7 @@ def test_fit_and_summary(hm, models):
     assert len(s) == 3
     assert len(models) == 3
     assert set(models.grasp_types()) == {"Tripod", "Ring", "Power Sphere"}
+    assert models.failed() == {}
 
 
 def test_generate_returns_grasps_and_array(hm, models):
@@ -94,6 +95,8 @@ def test_handover_round_trip(hm, small):
     markers = hm.select_markers(ref, n=6)
     assert len(markers) == 6
     assert set(hm.select_markers(ref, n=3)).issubset(markers)
+    handpicked = hm.select_markers(method="handpicked")
+    assert len(handpicked) == 6 and not any(m.startswith(("middle", "ring")) for m in handpicked)
     model = hm.fit_handover(ref, markers=6)
     out = hm.reconstruct(model, query)
     assert len(out) == 1

@@ -3,34 +3,13 @@
 # at a time (play/pause and a frame slider). No external assets, so the file
 # opens offline and can be attached or embedded anywhere.
 
-#' Animate a hand recording as a self-contained HTML file
-#'
-#' @param x A recording (numeric frames x DoF matrix with DoF column names),
-#'   a [grasps()] object (see `recording`) or an array from
-#'   [forward_kinematics()].
-#' @param file Output path (`.html`).
-#' @param skeleton A [hand_skeleton()].
-#' @param view See [autoplot.hand_pose()].
-#' @param recording For a `grasps` with several recordings: which one (index
-#'   or id).
-#' @param fps Playback rate in frames per second of the recording; defaults
-#'   to the `grasps` rate, else 50.
-#' @param max_frames Longer recordings are thinned evenly to at most this
-#'   many frames (playback time is kept).
-#' @param size Width and height of the drawing in pixels.
-#' @param title Title shown above the drawing.
-#' @param ... Passed to [forward_kinematics()] (`mapping`, `mode`,
-#'   `deactivate`, `unit`).
-#' @return `file`, invisibly.
-#' @export
-#' @examples
-#' rec <- matrix(0, 40, 16, dimnames = list(NULL, hust_dofs$name))
-#' rec[, 5:16] <- outer(sin(seq(0, pi, length.out = 40)), rep(80, 12))
-#' f <- animate_hand(rec, tempfile(fileext = ".html"))
-#' file.exists(f)
-animate_hand <- function(x, file, skeleton = hand_skeleton(), view = "oblique", recording = 1L,
-                         fps = NULL, max_frames = 300L, size = 420L, title = NULL, ...) {
-  call <- rlang::caller_env()
+# One recording as a self-contained HTML page (write_hand_animation() with a
+# .html file, which documents it): x a grasps (one recording picked), a
+# frames x DoF matrix or a forward_kinematics() array; at most `max_frames`
+# frames (thinned evenly, playback time kept), `size` pixels square.
+write_hand_html <- function(x, file, skeleton = hand_skeleton(), view = "oblique", recording = 1L,
+                            fps = NULL, max_frames = 300L, size = 420L, title = NULL, ...,
+                            call = rlang::caller_env()) {
   check_skeleton(skeleton, call = call)
   if (inherits(x, "grasps")) {
     if (is.character(recording)) recording <- match(recording, x$meta$id)
@@ -57,7 +36,7 @@ animate_hand <- function(x, file, skeleton = hand_skeleton(), view = "oblique", 
   html <- hand_animation_html(pose, skeleton, keep, interval_ms = 1000 * (n / length(keep)) / fps,
                               fps = fps, size = size, title = title)
   writeLines(html, file, useBytes = TRUE)
-  invisible(file)
+  invisible(structure(file, frames = length(keep), fps = fps * length(keep) / n))
 }
 
 hand_animation_html <- function(pose, skeleton, keep, interval_ms, fps, size, title) {

@@ -1,0 +1,42 @@
+# Where the functions of earlier development versions went. 0.1.0 has not
+# been released, so renamed and folded functions are gone rather than kept as
+# aliases; this page (found under each old name by `?old_name`) says what to
+# call instead.
+
+#' Renamed and folded functions
+#'
+#' Before the first release the user API was cut to the verbs a user calls;
+#' these functions of earlier development versions are gone. `?old_name`
+#' opens this table.
+#'
+#' | was | now |
+#' |---|---|
+#' | `table_5_1(models)` ... `table_5_8(confusion)`, `table_5_3_claims()` | [thesis_table()]`("5.1", models = )` ... |
+#' | `plot_pose_grid(list(recorded = a, generated = b))` | `autoplot(a, type = "poses", label = "recorded", compare = list(generated = b))` ([autoplot.grasps()]) |
+#' | `plot_frame_strip(...)` | `autoplot(x, type = "strip", ...)` |
+#' | `plot_frame_counts(x, rule = )` | `autoplot(x, type = "frame_counts", overlong = )` |
+#' | `plot_marker_sets(sets)` | `autoplot(hand_skeleton(), markers = sets)` ([autoplot.hand_skeleton()]) |
+#' | `plot_handover_components(model, truth, recs)` | `autoplot(model, truth, recs)` ([autoplot.handover_model()]) |
+#' | `animate_hand(x, "f.html")` | [write_hand_animation()]`(x, "f.html")` |
+#' | `project(model, x)` | `predict(model, x)` ([predict.grasp_model()]) |
+#' | `as_grasp_confusion(x)` | [grasp_confusion()]`(x)` |
+#' | `distance_table(cl)` | `thesis_table("5.3", classification = cl)` |
+#' | `default_joint_map(dofs)`, `graspdb14_joint_map()`, `hust_joint_map()` | [joint_map()]`(dofs = )`, `joint_map("graspdb14")`, `joint_map("hust")` |
+#' | `clamp_to_limits()` | `generate(limits = TRUE)` for generated grasps |
+#' | `markers_from_angles(x, markers = )`, `hand_marker_set()` | [forward_kinematics()]`(x, markers = )`; the markers are listed in [select_markers()] |
+#' | `handpicked_markers()`, `search_markers(x, n)` | [select_markers()]`(method = "handpicked")`, `select_markers(x, n, method = "search")` |
+#' | `handover_pca_error(ref, data)` | [handover_error()]`(data, by = "ncomp", reference = ref)` |
+#' | `align_recordings(recs)` | a fitted model's `alignment` ([fit_grasp_model()]), `autoplot(model, type = "alignment")` |
+#' | `overlong_rule()`, `find_overlong()` | the `overlong` argument of [fit_grasp_model()] |
+#' | `simulator_params(...)` | `simulate_grasps(params = list(...))` |
+#' | `calibration_report()`, `fit_frame_pca_model()` | internal (the calibration script and the thesis report) |
+#'
+#' @name handmotion-renamed
+#' @aliases table_5_1 table_5_2 table_5_3 table_5_3_claims table_5_6 table_5_7 table_5_8
+#'   plot_pose_grid plot_frame_strip plot_frame_counts plot_marker_sets plot_handover_components
+#'   animate_hand project as_grasp_confusion distance_table default_joint_map graspdb14_joint_map
+#'   hust_joint_map clamp_to_limits markers_from_angles hand_marker_set handpicked_markers
+#'   search_markers handover_pca_error align_recordings overlong_rule find_overlong simulator_params
+#'   calibration_report fit_frame_pca_model
+#' @keywords internal
+NULL
