@@ -107,6 +107,16 @@ check_rate <- function(rate, call = rlang::caller_env()) {
   invisible(rate)
 }
 
+# A grasps object with at least one recording: drawing or animating an empty
+# set used to fail deep inside ggplot2 or write a page with nothing on it.
+check_some_recordings <- function(x, arg = "x", call = rlang::caller_env()) {
+  if (inherits(x, "grasps") && length(x) == 0L) {
+    hm_abort("{.arg {arg}} holds no recordings; there is no hand to draw.", "bad_recording",
+             argument = arg, call = call)
+  }
+  invisible(x)
+}
+
 check_unit <- function(unit, call = rlang::caller_env()) {
   if (!is.character(unit) || length(unit) != 1L || !unit %in% grasp_units) {
     hm_abort("{.arg unit} must be one of {.val {grasp_units}}, not {.val {format(unit)}}.",
@@ -138,8 +148,10 @@ as_recording_matrix <- function(x, id, call = rlang::caller_env()) {
   }
   bad <- which(!is.finite(x), arr.ind = TRUE)
   if (nrow(bad) > 0L) {
-    hm_abort(c("Recording {.val {id}} has {nrow(bad)} missing or infinite value{?s}.",
-               i = "First at frame {bad[1, 1]}, DoF column {bad[1, 2]}."),
+    col <- if (is.null(colnames(x))) bad[1, 2] else colnames(x)[bad[1, 2]]
+    frames <- unique(bad[, 1])
+    hm_abort(c("Recording {.val {id}} has {nrow(bad)} missing or infinite value{?s} in {length(frames)} frame{?s}.",
+               i = "First at frame {bad[1, 1]}, DoF {.val {col}}."),
              "bad_recording", recording = id, call = call)
   }
   storage.mode(x) <- "double"

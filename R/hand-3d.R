@@ -128,6 +128,7 @@ hand_3d_max <- 8L
 # a matrix, or a named list of either.
 hand_3d_inputs <- function(x, recording, rate, call) {
   from_grasps <- function(g, label_prefix = NULL, pick = NULL) {
+    check_some_recordings(g, if (is.null(label_prefix)) "x" else paste0("x$", label_prefix), call)
     idx <- if (is.null(pick)) seq_along(g) else resolve_recordings(g, pick, call)
     lapply(idx, function(i) {
       m <- g$meta[i, ]
@@ -158,10 +159,9 @@ hand_3d_inputs <- function(x, recording, rate, call) {
              "bad_input", argument = "x", call = call)
   }
   if (!length(hands)) hm_abort("There is no recording to show.", "bad_recording", argument = "x", call = call)
-  empty <- vapply(hands, function(h) h$label, character(1))[vapply(hands, function(h) nrow(h$angles) == 0L, logical(1))]
-  if (length(empty)) {
-    hm_abort("There is no frame to show in {.val {empty}}.", "bad_recording", argument = "x", call = call)
-  }
+  # every hand has frames and finite angles, checked before any page or
+  # video is made (the error names the hand, the frame and the DoF)
+  for (h in hands) as_recording_matrix(h$angles, h$label, call)
   hands
 }
 

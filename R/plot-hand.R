@@ -31,9 +31,10 @@ hand_pose <- function(x, frame = "last", skeleton = hand_skeleton(), ...) {
   meta <- NULL
   if (inherits(x, "hand_skeleton")) return(skeleton_rest_pose(x))
   if (inherits(x, "grasps")) {
+    check_some_recordings(x, call = call)
     meta <- x$meta
     arrays <- lapply(seq_along(x), function(i) {
-      rec <- x$recordings[[i]]
+      rec <- as_recording_matrix(x$recordings[[i]], x$meta$id[i], call)  # names the recording
       fr <- fk_frames(frame, nrow(rec), x$meta$id[i], call)
       a <- forward_kinematics(rec, skeleton, frames = fr, unit = x$unit, ...)
       attr(a, "frames") <- fr
@@ -300,6 +301,7 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     hm_abort("{.arg x} must be a {.cls grasps} object or a list of them.", "bad_input",
              argument = "x", call = call)
   }
+  for (k in seq_along(sets)) check_some_recordings(sets[[k]], if (length(sets) == 1L) "x" else sprintf("x[[%d]]", k), call)
   if (is.null(names(sets))) names(sets) <- if (length(sets) == 1L) "" else paste("set", seq_along(sets))
   poses <- lapply(seq_along(sets), function(k) {
     g <- sets[[k]]
