@@ -198,7 +198,9 @@ pose_palm <- function(pr) {
 # plot_frame_strip, plot_marker_sets): the solid hands (R/plot-hand-solid.R),
 # then the joints as invisible points that carry the finger legend (and the
 # pose data for anyone reading the plot's layers).
-pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 8) {
+# Text sizes are in points; vignettes and reports show figures at 72 dpi,
+# so a point is a screen pixel there and nothing should be below 9.
+pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 10) {
   solid <- solid_hand_polygons(pr, scale)
   fingers <- intersect(names(finger_labels), unique(pr$finger))
   list(
@@ -216,8 +218,11 @@ pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 8) {
     ggplot2::coord_equal(),
     ggplot2::theme_void(),
     ggplot2::theme(strip.text = ggplot2::element_text(size = strip_size, margin = ggplot2::margin(2, 2, 2, 2)),
-                   legend.position = "bottom", plot.title = ggplot2::element_text(size = 11),
-                   plot.subtitle = ggplot2::element_text(size = 9, colour = "grey30"),
+                   # a long label may run past a narrow panel rather than lose its ends
+                   strip.clip = "off",
+                   legend.position = "bottom", legend.text = ggplot2::element_text(size = 10),
+                   plot.title = ggplot2::element_text(size = 12),
+                   plot.subtitle = ggplot2::element_text(size = 10, colour = "grey30"),
                    panel.spacing = ggplot2::unit(6, "pt"))
   )
 }
@@ -281,6 +286,10 @@ autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, ...) {
 #' @param per_group Recordings drawn per group and set (the first ones).
 #' @param skeleton A [hand_skeleton()].
 #' @param view See [autoplot.hand_pose()].
+#' @param ncol Columns of panels; `NULL` lets [ggplot2::facet_wrap()] choose
+#'   (about as many columns as rows). Fewer columns give larger hands: the
+#'   hands keep their shape, so a grid fills the width of a figure only when
+#'   its height allows (about 1.5 times the panel width per row).
 #' @param ... Passed to [forward_kinematics()].
 #' @return A ggplot object, one panel per group; with several sets their
 #'   hands stand side by side in each panel, in the order of `x`, named
@@ -294,8 +303,9 @@ autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, ...) {
 #' plot_pose_grid(g)
 #' plot_pose_grid(list(recorded = g, generated = g), view = "radial")
 plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
-                           skeleton = hand_skeleton(), view = "oblique", ...) {
+                           skeleton = hand_skeleton(), view = "oblique", ncol = NULL, ...) {
   call <- rlang::caller_env()
+  check_whole(ncol, "ncol", allow_null = TRUE, call = call)
   sets <- if (inherits(x, "grasps")) list(x) else x
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasps"))) {
     hm_abort("{.arg x} must be a {.cls grasps} object or a list of them.", "bad_input",
@@ -346,12 +356,15 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     labels$sy <- min(pr$sy) - 0.08 * diff(range(pr$sy))
     subtitle <- paste0(paste(levels(pr$set), collapse = " | "), "; ", subtitle)
   }
-  g <- ggplot2::ggplot() + pose_layers(pr, strip_size = 7) +
+  # type names wrap onto two lines ("Large / Diameter") so that six or more
+  # panels a row keep them whole at 9 pt
+  g <- ggplot2::ggplot() + pose_layers(pr, strip_size = 9) +
     ggplot2::labs(title = title, subtitle = subtitle) +
-    ggplot2::facet_wrap(~group, labeller = ggplot2::label_wrap_gen(18), drop = FALSE)
+    ggplot2::facet_wrap(~group, labeller = ggplot2::label_wrap_gen(11), drop = FALSE,
+                        ncol = ncol)
   if (!is.null(labels)) {
     g <- g + ggplot2::geom_text(data = labels, ggplot2::aes(x = .data$sx, y = .data$sy, label = .data$set),
-                                size = 2.2, colour = "grey35", vjust = 0.5) +
+                                size = 3, colour = "grey35", vjust = 0.5) +
       # room for the names under the hands
       ggplot2::expand_limits(y = labels$sy[1] - 0.06 * diff(range(pr$sy)))
   }

@@ -82,3 +82,16 @@ test_that("plot_pose_grid() draws one panel per group and set", {
   expect_error(plot_pose_grid(g, by = "colour"), class = "handmotion_error_bad_input")
   expect_error(plot_pose_grid(list(1)), class = "handmotion_error_bad_input")
 })
+
+test_that("plot_pose_grid() takes a number of columns and keeps long type names whole", {
+  g <- simulate_grasps(subjects = 1, grasps = c(1, 2, 21, 27), objects = 1, trials = 1, seed = 1)
+  p <- plot_pose_grid(g, ncol = 2)
+  expect_equal(p$facet$params$ncol, 2L)
+  # "Large Diameter" and "Tripod Variation" are wrapped onto two lines, not clipped
+  strips <- ggplot2::ggplot_build(p)$layout$layout$group
+  expect_true(all(c("Large Diameter", "Tripod Variation") %in% as.character(strips)))
+  expect_equal(p$theme$strip.clip, "off")
+  lab <- p$facet$params$labeller(data.frame(group = "Tripod Variation"))[[1]]
+  expect_equal(lab, "Tripod\nVariation")
+  expect_error(plot_pose_grid(g, ncol = 0), class = "handmotion_error_bad_input")
+})
