@@ -222,6 +222,8 @@ pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 10) {
                    strip.clip = "off",
                    legend.position = "bottom", legend.text = ggplot2::element_text(size = 10),
                    plot.title = ggplot2::element_text(size = 12),
+                   # titles start at the figure's edge, not the (narrow, centred) panels'
+                   plot.title.position = "plot",
                    plot.subtitle = ggplot2::element_text(size = 10, colour = "grey30"),
                    panel.spacing = ggplot2::unit(6, "pt"))
   )
@@ -354,7 +356,8 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     labels <- unique(pr[c("group", "set")])
     labels$sx <- (as.integer(labels$set) - 1L) * width + mean(range(pr$sx[pr$set == levels(pr$set)[1]]))
     labels$sy <- min(pr$sy) - 0.08 * diff(range(pr$sy))
-    subtitle <- paste0(paste(levels(pr$set), collapse = " | "), "; ", subtitle)
+    # on two lines: a grid of one or two types is narrow (its aspect is fixed)
+    subtitle <- paste0(paste(levels(pr$set), collapse = " | "), "\n", subtitle)
   }
   # type names wrap onto two lines ("Large / Diameter") so that six or more
   # panels a row keep them whole at 9 pt
