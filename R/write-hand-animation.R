@@ -38,7 +38,7 @@
 #'   own).
 #' @param skeleton A [hand_skeleton()].
 #' @param ... Passed to [forward_kinematics()].
-#' @return `file`, invisibly, with attributes `frames` (number of video
+#' @return `file`, with attributes `frames` (number of video
 #'   frames) and `fps`.
 #' @seealso [hand_3d()] to turn the hand interactively, [animate_hand()] for
 #'   a light HTML page.
@@ -114,9 +114,11 @@ write_hand_animation <- function(x, file, recording = 1L, view = "oblique", widt
     # each hand named underneath, as in plot_pose_grid()
     title <- NULL
     labels <- do.call(rbind, lapply(unique(pr$set), function(s) {
-      data.frame(set = s, sx = mean(range(pr$sx[pr$set == s])), stringsAsFactors = FALSE)
+      # on two lines ("recorded: id" / "(type)"): side by side, one line each runs into the next
+      data.frame(set = sub(" (", "\n(", s, fixed = TRUE), sx = mean(range(pr$sx[pr$set == s])),
+                 stringsAsFactors = FALSE)
     }))
-    labels$sy <- min(pr$sy) - 0.08 * diff(range(pr$sy))
+    labels$sy <- min(pr$sy) - 0.12 * diff(range(pr$sy))
     g <- g + ggplot2::geom_text(data = labels, ggplot2::aes(x = .data$sx, y = .data$sy, label = .data$set),
                                 size = 3, colour = "grey30")
   }
