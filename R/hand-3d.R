@@ -70,9 +70,14 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
     hm_abort("{.arg speed} must be one of {.val {speeds}}, not {.val {format(speed)}}.", "bad_input",
              argument = "speed", call = call)
   }
-  if (!is.character(background) || length(background) != 1L) {
-    hm_abort("{.arg background} must be one colour.", "bad_input", argument = "background", call = call)
+  bg <- if (is.character(background) && length(background) == 1L) {
+    tryCatch(grDevices::col2rgb(background), error = function(e) NULL)
   }
+  if (is.null(bg)) {
+    hm_abort("{.arg background} must be one colour (an R colour name or #rrggbb).", "bad_input",
+             argument = "background", call = call)
+  }
+  background <- grDevices::rgb(t(bg), maxColorValue = 255)  # R names ("grey90") are not CSS colours
   hands <- hand_3d_inputs(x, recording, rate, call)
   if (length(hands) > hand_3d_max) {
     hm_abort(c("{length(hands)} hands are too many to show at once; at most {hand_3d_max}.",
@@ -111,7 +116,8 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
     recs[[i]]$extent <- NULL
   }
   data <- list(joints = joints$name, parent = ifelse(is.na(pidx), -1L, pidx - 1L),
-               colour = unname(finger_colours[chains]),
+               # as #rrggbb: three.js knows no R colour names ("grey40" drew the wrist white, with a console warning)
+               colour = grDevices::rgb(t(grDevices::col2rgb(unname(finger_colours[chains]))), maxColorValue = 255),
                radius = bone_radii(skeleton),
                palm = match(intersect(palm_outline, joints$name), joints$name) - 1L,
                rate = rates[[1]], speed = speed, autoplay = autoplay, loop = loop,
