@@ -107,6 +107,16 @@ check_rate <- function(rate, call = rlang::caller_env()) {
   invisible(rate)
 }
 
+# A grasps object with at least one recording: drawing or animating an empty
+# set used to fail deep inside ggplot2 or write a page with nothing on it.
+check_some_recordings <- function(x, arg = "x", call = rlang::caller_env()) {
+  if (inherits(x, "grasps") && length(x) == 0L) {
+    hm_abort("{.arg {arg}} holds no recordings; there is no hand to draw.", "bad_recording",
+             argument = arg, call = call)
+  }
+  invisible(x)
+}
+
 check_unit <- function(unit, call = rlang::caller_env()) {
   if (!is.character(unit) || length(unit) != 1L || !unit %in% grasp_units) {
     hm_abort("{.arg unit} must be one of {.val {grasp_units}}, not {.val {format(unit)}}.",
@@ -138,8 +148,10 @@ as_recording_matrix <- function(x, id, call = rlang::caller_env()) {
   }
   bad <- which(!is.finite(x), arr.ind = TRUE)
   if (nrow(bad) > 0L) {
-    hm_abort(c("Recording {.val {id}} has {nrow(bad)} missing or infinite value{?s}.",
-               i = "First at frame {bad[1, 1]}, DoF column {bad[1, 2]}."),
+    col <- if (is.null(colnames(x))) bad[1, 2] else colnames(x)[bad[1, 2]]
+    frames <- unique(bad[, 1])
+    hm_abort(c("Recording {.val {id}} has {nrow(bad)} missing or infinite value{?s} in {length(frames)} frame{?s}.",
+               i = "First at frame {bad[1, 1]}, DoF {.val {col}}."),
              "bad_recording", recording = id, call = call)
   }
   storage.mode(x) <- "double"
@@ -412,6 +424,10 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
 #' @param by For `"poses"`: metadata column to group by (one panel per value).
 #' @param per_group For `"poses"`: recordings drawn per group and set (the
 #'   first ones).
+#' @param ncol For `"poses"`: columns of panels; `NULL` (default) lets
+#'   [ggplot2::facet_wrap()] choose. Fewer columns give larger hands: the
+#'   hands keep their shape, so a grid fills the width of a figure only when
+#'   its height allows (about 1.5 times the panel width per row).
 #' @param recording For `"strip"`: which recording of each set to draw, an
 #'   index or an id (recycled over the sets).
 #' @param n_frames For `"strip"`: number of frames drawn per recording (at
@@ -442,7 +458,7 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
 autoplot.grasps <- function(object, type = c("curves", "poses", "strip", "frame_counts"),
                             colour = "grasp", dofs = NULL, max_recordings = 200,
                             compare = NULL, label = NULL, frame = "last", by = "grasp", per_group = 1L,
-                            recording = 1L, n_frames = 6L, grasp = NULL,
+                            ncol = NULL, recording = 1L, n_frames = 6L, grasp = NULL,
                             overlong = c(iqr_mult = 3, median_mult = 1.5), binwidth = 1,
                             skeleton = hand_skeleton(), view = "oblique", ...) {
   call <- rlang::caller_env()
@@ -460,7 +476,7 @@ autoplot.grasps <- function(object, type = c("curves", "poses", "strip", "frame_
   switch(type,
     curves = plot_grasp_curves(object, colour, dofs, max_recordings, call),
     poses = plot_pose_grid(sets(), frame = frame, by = by, per_group = per_group, skeleton = skeleton,
-                           view = view, ..., call = call),
+                           view = view, ncol = ncol, ..., call = call),
     strip = plot_frame_strip(sets(), recording = recording, n_frames = n_frames, skeleton = skeleton,
                              view = view, ..., call = call),
     frame_counts = plot_frame_counts(object, grasp = grasp, rule = as_overlong_rule(overlong, call = call),

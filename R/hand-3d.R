@@ -71,9 +71,14 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
     hm_abort("{.arg speed} must be one of {.val {speeds}}, not {.val {format(speed)}}.", "bad_input",
              argument = "speed", call = call)
   }
-  if (!is.character(background) || length(background) != 1L) {
-    hm_abort("{.arg background} must be one colour.", "bad_input", argument = "background", call = call)
+  bg <- if (is.character(background) && length(background) == 1L) {
+    tryCatch(grDevices::col2rgb(background), error = function(e) NULL)
   }
+  if (is.null(bg)) {
+    hm_abort("{.arg background} must be one colour (an R colour name or #rrggbb).", "bad_input",
+             argument = "background", call = call)
+  }
+  background <- grDevices::rgb(t(bg), maxColorValue = 255)  # R names ("grey90") are not CSS colours
   hands <- hand_3d_inputs(x, recording, rate, call)
   if (length(hands) > hand_3d_max) {
     hm_abort(c("{length(hands)} hands are too many to show at once; at most {hand_3d_max}.",
@@ -112,7 +117,8 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
     recs[[i]]$extent <- NULL
   }
   data <- list(joints = joints$name, parent = ifelse(is.na(pidx), -1L, pidx - 1L),
-               colour = unname(finger_colours[chains]),
+               # as #rrggbb: three.js knows no R colour names ("grey40" drew the wrist white, with a console warning)
+               colour = grDevices::rgb(t(grDevices::col2rgb(unname(finger_colours[chains]))), maxColorValue = 255),
                radius = bone_radii(skeleton),
                palm = match(intersect(palm_outline, joints$name), joints$name) - 1L,
                rate = rates[[1]], speed = speed, autoplay = autoplay, loop = loop,
@@ -129,6 +135,7 @@ hand_3d_max <- 8L
 # a matrix, or a named list of either.
 hand_3d_inputs <- function(x, recording, rate, call) {
   from_grasps <- function(g, label_prefix = NULL, pick = NULL) {
+    check_some_recordings(g, if (is.null(label_prefix)) "x" else paste0("x$", label_prefix), call)
     idx <- if (is.null(pick)) seq_along(g) else resolve_recordings(g, pick, call)
     lapply(idx, function(i) {
       m <- g$meta[i, ]
@@ -159,10 +166,9 @@ hand_3d_inputs <- function(x, recording, rate, call) {
              "bad_input", argument = "x", call = call)
   }
   if (!length(hands)) hm_abort("There is no recording to show.", "bad_recording", argument = "x", call = call)
-  empty <- vapply(hands, function(h) h$label, character(1))[vapply(hands, function(h) nrow(h$angles) == 0L, logical(1))]
-  if (length(empty)) {
-    hm_abort("There is no frame to show in {.val {empty}}.", "bad_recording", argument = "x", call = call)
-  }
+  # every hand has frames and finite angles, checked before any page or
+  # video is made (the error names the hand, the frame and the DoF)
+  for (h in hands) as_recording_matrix(h$angles, h$label, call)
   hands
 }
 

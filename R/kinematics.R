@@ -190,7 +190,9 @@ check_mapping <- function(mapping, skeleton, call) {
   }
   missing <- setdiff(mapping$joint[!is.na(mapping$axis)], skeleton$joints$name)
   if (length(missing)) {
+    dofs <- unique(mapping$dof[!is.na(mapping$axis) & mapping$joint %in% missing])
     hm_abort(c("The mapping drives joint{?s} {.val {missing}} that the skeleton does not have (missing joint{?s}).",
+               x = "DoF{?s} {.val {dofs}} cannot be posed on it.",
                i = "Skeleton joints: {.val {skeleton$joints$name}}."),
              "bad_skeleton", joint = missing, file = skeleton$file, call = call)
   }
@@ -309,11 +311,9 @@ fk_input <- function(x, unit, call) {
                i = "Forward kinematics needs degrees or radians; raw sensor counts must be calibrated first."),
              "bad_input", argument = "unit", call = call)
   }
-  bad <- vapply(recs, function(r) any(!is.finite(r)), logical(1))
-  if (any(bad)) {
-    hm_abort("Recording {.val {names(recs)[bad][1]}} has missing or infinite angles.",
-             "bad_recording", recording = names(recs)[bad][1], call = call)
-  }
+  # a NaN angle would pose the hand at NaN (an empty picture, a page of NaN):
+  # refuse it here, naming the recording, frame and DoF
+  for (id in names(recs)) if (anyNA(recs[[id]]) || any(is.infinite(recs[[id]]))) as_recording_matrix(recs[[id]], id, call)
   list(recordings = recs, dofs = dofs, factor = if (unit == "rad") 180 / pi else 1)
 }
 

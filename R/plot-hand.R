@@ -31,9 +31,10 @@ hand_pose <- function(x, frame = "last", skeleton = hand_skeleton(), ...) {
   meta <- NULL
   if (inherits(x, "hand_skeleton")) return(skeleton_rest_pose(x))
   if (inherits(x, "grasps")) {
+    check_some_recordings(x, call = call)
     meta <- x$meta
     arrays <- lapply(seq_along(x), function(i) {
-      rec <- x$recordings[[i]]
+      rec <- as_recording_matrix(x$recordings[[i]], x$meta$id[i], call)  # names the recording
       fr <- fk_frames(frame, nrow(rec), x$meta$id[i], call)
       a <- forward_kinematics(rec, skeleton, frames = fr, unit = x$unit, ...)
       attr(a, "frames") <- fr
@@ -197,7 +198,9 @@ pose_palm <- function(pr) {
 # plot_frame_strip, plot_marker_sets): the solid hands (R/plot-hand-solid.R),
 # then the joints as invisible points that carry the finger legend (and the
 # pose data for anyone reading the plot's layers).
-pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 8) {
+# Text sizes are in points; vignettes and reports show figures at 72 dpi,
+# so a point is a screen pixel there and nothing should be below 9.
+pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 10) {
   solid <- solid_hand_polygons(pr, scale)
   fingers <- intersect(names(finger_labels), unique(pr$finger))
   list(
@@ -215,8 +218,13 @@ pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 8) {
     ggplot2::coord_equal(),
     ggplot2::theme_void(),
     ggplot2::theme(strip.text = ggplot2::element_text(size = strip_size, margin = ggplot2::margin(2, 2, 2, 2)),
-                   legend.position = "bottom", plot.title = ggplot2::element_text(size = 11),
-                   plot.subtitle = ggplot2::element_text(size = 9, colour = "grey30"),
+                   # a long label may run past a narrow panel rather than lose its ends
+                   strip.clip = "off",
+                   legend.position = "bottom", legend.text = ggplot2::element_text(size = 10),
+                   plot.title = ggplot2::element_text(size = 12),
+                   # titles start at the figure's edge, not the (narrow, centred) panels'
+                   plot.title.position = "plot",
+                   plot.subtitle = ggplot2::element_text(size = 10, colour = "grey30"),
                    panel.spacing = ggplot2::unit(6, "pt"))
   )
 }
@@ -269,13 +277,19 @@ autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, ...) {
 # The last (or first, or a chosen) frame of one recording per group, the
 # thesis' Appendix A; several sets (a named list) stand side by side in each
 # panel. Reached through autoplot(<grasps>, type = "poses"), which documents it.
+# `ncol`: columns of panels (NULL lets facet_wrap() choose); fewer columns give
+# larger hands, which keep their shape, so a grid fills the width of a figure
+# only when its height allows (about 1.5 times the panel width per row).
 plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
-                           skeleton = hand_skeleton(), view = "oblique", ..., call = rlang::caller_env()) {
+                           skeleton = hand_skeleton(), view = "oblique", ncol = NULL, ...,
+                           call = rlang::caller_env()) {
+  check_whole(ncol, "ncol", allow_null = TRUE, call = call)
   sets <- if (inherits(x, "grasps")) list(x) else x
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasps"))) {
     hm_abort("{.arg x} must be a {.cls grasps} object or a list of them.", "bad_input",
              argument = "x", call = call)
   }
+  for (k in seq_along(sets)) check_some_recordings(sets[[k]], if (length(sets) == 1L) "x" else sprintf("x[[%d]]", k), call)
   if (is.null(names(sets))) names(sets) <- if (length(sets) == 1L) "" else paste("set", seq_along(sets))
   poses <- lapply(seq_along(sets), function(k) {
     g <- sets[[k]]
@@ -318,14 +332,18 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     labels <- unique(pr[c("group", "set")])
     labels$sx <- (as.integer(labels$set) - 1L) * width + mean(range(pr$sx[pr$set == levels(pr$set)[1]]))
     labels$sy <- min(pr$sy) - 0.08 * diff(range(pr$sy))
-    subtitle <- paste0(paste(levels(pr$set), collapse = " | "), "; ", subtitle)
+    # on two lines: a grid of one or two types is narrow (its aspect is fixed)
+    subtitle <- paste0(paste(levels(pr$set), collapse = " | "), "\n", subtitle)
   }
-  g <- ggplot2::ggplot() + pose_layers(pr, strip_size = 7) +
+  # type names wrap onto two lines ("Large / Diameter") so that six or more
+  # panels a row keep them whole at 9 pt
+  g <- ggplot2::ggplot() + pose_layers(pr, strip_size = 9) +
     ggplot2::labs(title = title, subtitle = subtitle) +
-    ggplot2::facet_wrap(~group, labeller = ggplot2::label_wrap_gen(18), drop = FALSE)
+    ggplot2::facet_wrap(~group, labeller = ggplot2::label_wrap_gen(11), drop = FALSE,
+                        ncol = ncol)
   if (!is.null(labels)) {
     g <- g + ggplot2::geom_text(data = labels, ggplot2::aes(x = .data$sx, y = .data$sy, label = .data$set),
-                                size = 2.2, colour = "grey35", vjust = 0.5) +
+                                size = 3, colour = "grey35", vjust = 0.5) +
       # room for the names under the hands
       ggplot2::expand_limits(y = labels$sy[1] - 0.06 * diff(range(pr$sy)))
   }

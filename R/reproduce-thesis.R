@@ -23,9 +23,20 @@
 #'
 #' The held-out evaluations refit every model once per fold. By default that
 #' is the full leave-one-subject-out (30 refits of the 33 models per
-#' classifier, about a minute each for the FPCA classifiers on two cores under
-#' a multisession plan); `loso_folds = k` splits the subjects at random into
-#' `k` groups instead, for a quicker look.
+#' classifier); `loso_folds = k` splits the subjects at random into `k`
+#' groups instead, for a quicker look.
+#'
+#' **Time.** On one R process the full design takes about two to three
+#' minutes, most of it in the held-out evaluations. Their folds run through
+#' \pkg{future.apply}, so a parallel plan set before the call makes them
+#' faster, e.g. `future::plan("multisession", workers = 2)`; the report's
+#' *Timings* section and `tables/timings.csv` give the time of every step
+#' and the plan it ran on.
+#'
+#' **Progress.** While it works, `reproduce_thesis()` prints a line as each
+#' step starts (to standard error): the step, the time so far and an
+#' estimate of the time left (from each step's share of a full run's time),
+#' and at the end where the report was written.
 #'
 #' The vignette `vignette("reproduce-thesis", package = "handmotion")`
 #' includes the same report; there the design can be made smaller through
@@ -42,7 +53,9 @@
 #' @param grasps Grasp types to include (Feix ids or names), all 33 by default.
 #'   At least two are needed for classification.
 #' @param quiet Render without knitr's progress output.
-#' @return The path of the HTML report, invisibly.
+#' @param progress Print a line per step with the time left (see
+#'   **Progress**).
+#' @return The path of the HTML report.
 #' @seealso [thesis_table()], [thesis_results]
 #' @export
 #' @examples
@@ -54,10 +67,11 @@
 #' }
 #' }
 reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, loso_folds = NULL,
-                             grasps = 1:33, quiet = TRUE) {
+                             grasps = 1:33, quiet = TRUE, progress = TRUE) {
   call <- rlang::caller_env()
   settings <- check_report_settings(list(subjects = subjects, seed = seed, loso_folds = loso_folds,
                                          grasps = grasps), call)
+  check_flag(progress, "progress", call = call)
   if (!is.character(output_dir) || length(output_dir) != 1L || is.na(output_dir) || !nzchar(output_dir)) {
     hm_abort("{.arg output_dir} must be one directory path.", "bad_input", argument = "output_dir",
              call = call)
@@ -88,10 +102,15 @@ reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, los
   params <- list(subjects = settings$subjects, seed = settings$seed,
                  loso_folds = if (is.null(settings$loso_folds)) 0L else settings$loso_folds,
                  grasps = settings$grasps, output_dir = output_dir)
-  html <- rmarkdown::render(input, output_file = "reproduce-thesis.html", output_dir = output_dir,
-                            intermediates_dir = work, knit_root_dir = work, params = params,
-                            envir = new.env(parent = globalenv()), quiet = quiet)
-  invisible(html)
+  bar <- report_progress(progress)
+  bar$begin(settings)
+  html <- withCallingHandlers(
+    rmarkdown::render(input, output_file = "reproduce-thesis.html", output_dir = output_dir,
+                      intermediates_dir = work, knit_root_dir = work, params = params,
+                      envir = new.env(parent = globalenv()), quiet = quiet),
+    handmotion_report_step = function(cnd) bar$step(cnd$label))
+  bar$done(html)
+  html
 }
 
 # The report's settings: from render() params (reproduce_thesis()) or, when

@@ -315,6 +315,14 @@ check_skeleton <- function(x, arg = "skeleton", call = rlang::caller_env()) {
     hm_abort("{.arg {arg}} must be a {.cls hand_skeleton} (see {.fn read_skeleton}), not {.obj_type_friendly {x}}.",
              "bad_input", argument = arg, call = call)
   }
+  # one tree: a joint whose parent was dropped from the table (an edited
+  # skeleton) would otherwise fail deep inside the drawing code
+  pidx <- skeleton_parent_index(x)
+  orphan <- x$joints$name[!is.na(x$joints$parent) & is.na(pidx)]
+  if (length(orphan)) {
+    hm_abort("{.arg {arg}} has joint{?s} {.val {orphan}} whose parent joint is missing (the skeleton must be one tree).",
+             "bad_skeleton", argument = arg, joint = orphan, call = call)
+  }
   invisible(x)
 }
 

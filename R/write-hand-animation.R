@@ -29,8 +29,13 @@
 #' **HTML.** A file ending in `.html` gets one self-contained page instead:
 #' every frame an SVG drawing of the finger chains and the palm, shown in
 #' turn by a few lines of JavaScript at the recording's rate, with
-#' play/pause and a frame slider; no external assets, so it opens offline and
-#' can be attached anywhere. It draws one hand (`x` a `grasps`, a matrix, or
+#' play/pause, one-frame steps back and on (also the arrow keys, and space for
+#' play/pause, once the drawing has focus), a playback speed (0.1x to 2x) and
+#' a frame slider; no external assets, so it opens offline and can be
+#' attached anywhere. Everything sits in one `<div
+#' class="handmotion-animation">` that carries its own styles and script and
+#' uses no element ids, so it can be copied into another page, several to a
+#' page, each playing by itself. It draws one hand (`x` a `grasps`, a matrix, or
 #' an array from [forward_kinematics()]), `width` pixels square, and needs
 #' neither gganimate nor WebGL ([hand_3d()] is the interactive 3D view).
 #'
@@ -46,7 +51,7 @@
 #'   own).
 #' @param skeleton A [hand_skeleton()].
 #' @param ... Passed to [forward_kinematics()].
-#' @return `file`, invisibly, with attributes `frames` (number of video
+#' @return `file`, with attributes `frames` (number of video
 #'   frames) and `fps`.
 #' @seealso [hand_3d()] to turn the hand interactively.
 #' @export
@@ -134,9 +139,11 @@ write_hand_animation <- function(x, file, recording = 1L, view = "oblique", widt
     # each hand named underneath, as in plot_pose_grid()
     title <- NULL
     labels <- do.call(rbind, lapply(unique(pr$set), function(s) {
-      data.frame(set = s, sx = mean(range(pr$sx[pr$set == s])), stringsAsFactors = FALSE)
+      # on two lines ("recorded: id" / "(type)"): side by side, one line each runs into the next
+      data.frame(set = sub(" (", "\n(", s, fixed = TRUE), sx = mean(range(pr$sx[pr$set == s])),
+                 stringsAsFactors = FALSE)
     }))
-    labels$sy <- min(pr$sy) - 0.08 * diff(range(pr$sy))
+    labels$sy <- min(pr$sy) - 0.12 * diff(range(pr$sy))
     g <- g + ggplot2::geom_text(data = labels, ggplot2::aes(x = .data$sx, y = .data$sy, label = .data$set),
                                 size = 3, colour = "grey30")
   }

@@ -1,10 +1,14 @@
 # Animation of a recording as one self-contained HTML file: every frame is an
 # SVG group of finger polylines, and a few lines of JavaScript show one group
-# at a time (play/pause and a frame slider). No external assets, so the file
-# opens offline and can be attached or embedded anywhere.
+# at a time, with play/pause, frame steps, a speed choice and a frame slider.
+# No external assets, so the file opens offline and can be attached, and its
+# <div class="handmotion-animation"> pasted into another page.
 
 # One recording as a self-contained HTML page (write_hand_animation() with a
-# .html file, which documents it): x a grasps (one recording picked), a
+# .html file, which documents it; a light 2D page without WebGL: play/pause,
+# one-frame steps, also by arrow keys and space, a 0.1x-2x speed and a frame
+# slider, in one <div> with its own styles and no element ids, so several
+# copies play side by side in one page): x a grasps (one recording picked), a
 # frames x DoF matrix or a forward_kinematics() array; at most `max_frames`
 # frames (thinned evenly, playback time kept), `size` pixels square.
 write_hand_html <- function(x, file, skeleton = hand_skeleton(), view = "oblique", recording = 1L,
@@ -12,6 +16,7 @@ write_hand_html <- function(x, file, skeleton = hand_skeleton(), view = "oblique
                             call = rlang::caller_env()) {
   check_skeleton(skeleton, call = call)
   if (inherits(x, "grasps")) {
+    check_some_recordings(x, call = call)
     if (is.character(recording)) recording <- match(recording, x$meta$id)
     if (length(recording) != 1L || is.na(recording) || recording < 1L || recording > length(x)) {
       hm_abort("{.arg recording} must pick one of the {length(x)} recording{?s} by index or id.",
@@ -20,9 +25,15 @@ write_hand_html <- function(x, file, skeleton = hand_skeleton(), view = "oblique
     m <- x$meta[recording, ]
     if (is.null(title)) title <- paste0(m$id, if (!is.na(m$grasp)) paste0(" (", m$grasp, ")") else "")
     if (is.null(fps)) fps <- x$rate
-    pos <- forward_kinematics(x$recordings[[recording]], skeleton, unit = x$unit, ...)
+    rec <- as_recording_matrix(x$recordings[[recording]], m$id, call)  # names the recording
+    pos <- forward_kinematics(rec, skeleton, unit = x$unit, ...)
   } else if (is.array(x) && length(dim(x)) == 3L) {
     pos <- x
+    bad <- which(apply(!is.finite(pos), 1, any))
+    if (length(bad)) {
+      hm_abort("{.arg x} has missing or infinite positions in {length(bad)} frame{?s}, first frame {bad[1]}.",
+               "bad_recording", argument = "x", call = call)
+    }
   } else {
     pos <- forward_kinematics(x, skeleton, ...)
   }
@@ -60,32 +71,61 @@ hand_animation_html <- function(pose, skeleton, keep, interval_ms, fps, size, ti
     # the shaded palm, as in the static pictures (autoplot.hand_pose)
     palm <- pose_palm(p)
     palm_svg <- if (nrow(palm)) {
-      sprintf('<polygon class="palm" points="%s"/>',
+      sprintf('<polygon class="palm" points="%s" fill="#e5e5e5" stroke="#b3b3b3" stroke-width="1"/>',
               paste(sprintf("%.1f,%.1f", px(palm$sx), py(palm$sy)), collapse = " "))
     } else ""
     sprintf('<g class="f" data-frame="%d" style="display:none">%s%s</g>', keep[k], palm_svg,
             paste(lines, collapse = ""))
   }, character(1))
   esc <- function(t) gsub("<", "&lt;", gsub("&", "&amp;", t, fixed = TRUE), fixed = TRUE)
+  # The drawing and its controls are one <div class="handmotion-animation">
+  # that needs nothing from the page around it: the look of the lines is in
+  # SVG presentation attributes on the <svg> (inherited, so a page that
+  # embeds only the <div> does not lose `fill: none` and draw the fingers
+  # as black blobs), and the script finds its own <div> (no element ids, so
+  # several animations on one page each play by themselves).
+  svg_style <- paste('fill="none" stroke-width="5" stroke-linecap="round" stroke-linejoin="round"',
+                     'style="display:block"')
   c("<!DOCTYPE html>", "<html><head><meta charset=\"utf-8\">",
     paste0("<title>", esc(title), "</title>"),
-    "<style>body{font-family:sans-serif} polyline{fill:none;stroke-width:5;stroke-linecap:round;stroke-linejoin:round} polygon.palm{fill:#e5e5e5;stroke:#b3b3b3;stroke-width:1}</style>",
-    "</head><body>", paste0("<h3>", esc(title), "</h3>"),
-    sprintf('<svg id="hand" xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" viewBox="0 0 %d %d">',
-            size, size, size, size),
+    "<style>body{font-family:sans-serif}</style>",
+    "</head><body>",
+    sprintf('<div class="handmotion-animation" style="display:inline-block;font:13px sans-serif">'),
+    paste0("<h3>", esc(title), "</h3>"),
+    sprintf('<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" viewBox="0 0 %d %d" %s>',
+            size, size, size, size, svg_style),
     groups, "</svg>",
-    sprintf('<div><button id="pp">pause</button> <input id="slider" type="range" min="0" max="%d" value="0" style="width:%dpx"> <span id="lab"></span></div>',
-            length(keep) - 1L, size - 120L),
+    paste0('<div style="display:flex;gap:6px;align-items:center;flex-wrap:wrap">',
+           '<button class="hm-play" title="play or pause (space)">pause</button>',
+           '<button class="hm-back" title="one frame back">&#9664;</button>',
+           '<button class="hm-next" title="one frame on">&#9654;</button>',
+           '<select class="hm-speed" title="playback speed">',
+           paste0('<option value="', animation_speeds, '"', ifelse(animation_speeds == 1, " selected", ""), ">",
+                  animation_speeds, "x</option>", collapse = ""),
+           "</select></div>"),
+    sprintf('<div><input class="hm-slider" type="range" min="0" max="%d" value="0" style="width:%dpx" aria-label="frame"> <span class="hm-label"></span></div>',
+            length(keep) - 1L, max(120L, size - 130L)),
     "<script>",
-    "(function(){var f=document.querySelectorAll('#hand g.f'),i=0,n=f.length,play=true;",
-    "var s=document.getElementById('slider'),b=document.getElementById('pp'),l=document.getElementById('lab');",
-    sprintf("function show(k){f[i].style.display='none';i=k;f[i].style.display='';s.value=i;l.textContent='frame '+f[i].getAttribute('data-frame')+' ('+((f[i].getAttribute('data-frame')-1)/%s).toFixed(2)+' s)';}", format(fps)),
+    "(function(root){",
+    "var q=function(c){return root.querySelector(c);};",
+    "var f=root.querySelectorAll('g.f'),n=f.length,i=0,play=true,acc=0,last=null;",
+    "var s=q('.hm-slider'),b=q('.hm-play'),sp=q('.hm-speed'),l=q('.hm-label');",
+    sprintf("var dt=%.3f,fps=%s;", interval_ms, format(fps)),
+    "function show(k){f[i].style.display='none';i=(k+n)%n;f[i].style.display='';s.value=i;var fr=+f[i].getAttribute('data-frame');l.textContent='frame '+fr+' ('+((fr-1)/fps).toFixed(2)+' s)';}",
+    "function setPlay(p){play=p;b.textContent=p?'pause':'play';last=null;acc=0;}",
     "show(0);",
-    sprintf("setInterval(function(){if(play)show((i+1)%%n);},%.1f);", interval_ms),
-    "b.onclick=function(){play=!play;b.textContent=play?'pause':'play';};",
-    "s.oninput=function(){play=false;b.textContent='play';show(+s.value);};",
-    "})();", "</script>", "</body></html>")
+    # a steady clock: frames advance by elapsed time x speed, whatever the timer's jitter
+    "setInterval(function(){if(!play)return;var now=performance.now();if(last!==null){acc+=(now-last)*(+sp.value);var k=Math.floor(acc/dt);if(k>0){acc-=k*dt;show(i+k);}}last=now;},15);",
+    "b.onclick=function(){setPlay(!play);};",
+    "q('.hm-back').onclick=function(){setPlay(false);show(i-1);};",
+    "q('.hm-next').onclick=function(){setPlay(false);show(i+1);};",
+    "s.oninput=function(){setPlay(false);show(+s.value);};",
+    "root.tabIndex=0;root.onkeydown=function(e){if(e.key===' '){setPlay(!play);e.preventDefault();}else if(e.key==='ArrowLeft'){setPlay(false);show(i-1);}else if(e.key==='ArrowRight'){setPlay(false);show(i+1);}};",
+    "})(document.currentScript.parentNode);", "</script>", "</div>", "</body></html>")
 }
+
+# Playback speeds offered by animate_hand()'s page.
+animation_speeds <- c(0.1, 0.25, 0.5, 1, 2)
 
 # Joint names from the root out to each fingertip, named by finger.
 skeleton_finger_paths <- function(skeleton) {

@@ -54,6 +54,17 @@ check_widgets <- function(page, expected) {
   if (varied < 0.02) stop("site: ", page, " looks blank in the browser")
   message(sprintf("site: %s: %d 3D widget(s) drawn, no widget script errors", page, ready))
 }
+# the 2D animation embedded in the GraspDB14 article draws lines (its <svg>
+# carries `fill="none"`) and plays: its frame label has moved on
+check_animation <- function(page) {
+  dom <- browser_dom(paste0(base, page), 1500)
+  if (!grepl('class="handmotion-animation"', dom, fixed = TRUE)) stop("site: no 2D animation in ", page)
+  if (!grepl('<svg[^>]*fill="none"', dom)) stop("site: the 2D animation in ", page, " lost its line style")
+  at <- as.integer(sub(".*>frame ([0-9]+) \\(.*", "\\1", dom))
+  if (is.na(at) || at <= 1L) stop("site: the 2D animation in ", page, " does not play")
+  message(sprintf("site: %s: 2D animation plays (frame %d after 1.5 s)", page, at))
+}
+check_animation("articles/graspdb14.html")
 check_widgets("articles/looking-at-hands.html", 2L)
 check_widgets("reference/hand_3d.html", 2L)
 message("site: ok")

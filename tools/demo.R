@@ -8,5 +8,5 @@ out <- if (length(args)) args[1] else "output"
 if (requireNamespace("future", quietly = TRUE) && future::supportsMulticore()) {
   future::plan(future::multicore, workers = min(2L, future::availableCores()))
 }
-report <- handmotion::reproduce_thesis(out)
-cat("handmotion: report written to", normalizePath(report), "\n")
+# (reproduce_thesis() says step by step what it does and, at the end, where the report is)
+invisible(handmotion::reproduce_thesis(out))

@@ -31,6 +31,15 @@ browser_dom <- function(page, budget_ms = 1000) {
   paste(out, collapse = "\n")
 }
 
+# The page's console after `budget_ms` of virtual time: one line per message
+# (console.log/warn/error and uncaught exceptions), as chromium logs them.
+browser_console <- function(page, budget_ms = 1000) {
+  out <- suppressWarnings(system2(chromium_path(), c(browser_args(budget_ms), "--enable-logging=stderr", "--v=0",
+                                                     "--dump-dom", shQuote(page_url(page))),
+                                  stdout = FALSE, stderr = TRUE))
+  sub('^.*:CONSOLE[^]]*\\] ', "", grep(":CONSOLE", out, value = TRUE, fixed = TRUE))
+}
+
 # A screenshot (PNG path) of the page after `budget_ms` of virtual time.
 browser_screenshot <- function(page, budget_ms = 1000, size = c(800, 500)) {
   png <- tempfile(fileext = ".png")

@@ -96,3 +96,44 @@ test_that("hand-over refuses a non-positive ridge or eps", {
     expect_error(fit_handover(g, markers = 3, eps = r), class = "handmotion_error_bad_input")
   }
 })
+
+test_that("pictures, pages and videos refuse NaN frames, a skeleton without a DoF's joint and empty sets before writing", {
+  g <- simulate_grasps(subjects = 1, grasps = 17, objects = 1, trials = 1, seed = 1)
+  id <- g$meta$id
+  nan <- g
+  nan$recordings[[1]][5:7, "PIP2"] <- NaN
+  # a skeleton whose index finger ends at the PIP joint: DIP2 has no joint to turn
+  short <- hand_skeleton()
+  short$joints <- short$joints[!short$joints$name %in% c("if-dip", "if-tip"), ]
+  # an edited skeleton whose joint lost its parent
+  torn <- hand_skeleton()
+  torn$joints <- torn$joints[torn$joints$name != "if-dip", ]
+  empty <- g[integer(0)]
+  dir <- withr::local_tempdir()
+  page <- file.path(dir, "hand.html")
+  expect_error(hand_3d(nan), "frame 5", class = "handmotion_error_bad_recording")
+  expect_error(hand_3d(nan), id, fixed = TRUE)
+  expect_error(hand_3d(g, skeleton = short), "DIP2", class = "handmotion_error_bad_skeleton")
+  expect_error(hand_3d(g, skeleton = torn), "if-tip", class = "handmotion_error_bad_skeleton")
+  expect_error(hand_3d(empty), "no recordings", class = "handmotion_error_bad_recording")
+  expect_error(hand_3d(list(a = g, b = empty)), "x$b", fixed = TRUE)
+  expect_error(write_hand_animation(nan, page), id, class = "handmotion_error_bad_recording")
+  expect_error(write_hand_animation(g, page, skeleton = short), "if-dip", class = "handmotion_error_bad_skeleton")
+  expect_error(write_hand_animation(empty, page), class = "handmotion_error_bad_recording")
+  pos <- forward_kinematics(g$recordings[[1]], hand_skeleton(), unit = g$unit)
+  pos[3, 2, 1] <- NA
+  expect_error(write_hand_animation(pos, page), "first frame 3", class = "handmotion_error_bad_recording")
+  expect_false(file.exists(page))
+  expect_error(autoplot(hand_pose(nan, frame = 6)), id, class = "handmotion_error_bad_recording")
+  expect_error(hand_pose(g, skeleton = short), class = "handmotion_error_bad_skeleton")
+  expect_error(hand_pose(empty), class = "handmotion_error_bad_recording")
+  expect_error(autoplot(g, type = "poses", compare = list(generated = empty)), "x[[2]]", fixed = TRUE)
+  expect_error(autoplot(nan, type = "poses"), class = "handmotion_error_bad_recording")
+  skip_if_not_installed("gganimate")
+  skip_if_not_installed("magick")
+  gif <- file.path(dir, "hand.gif")
+  expect_error(write_hand_animation(nan, gif), id, class = "handmotion_error_bad_recording")
+  expect_error(write_hand_animation(g, gif, skeleton = short), class = "handmotion_error_bad_skeleton")
+  expect_error(write_hand_animation(empty, gif), class = "handmotion_error_bad_recording")
+  expect_false(file.exists(gif))
+})

@@ -61,6 +61,11 @@ test_that("bad arguments give classed errors", {
   expect_error(hand_3d(g, recording = 1, speed = 3), class = "handmotion_error_bad_input")
   expect_error(hand_3d(g, recording = 1, layout = "stacked"), class = "handmotion_error_bad_input")
   expect_error(hand_3d("hand"), class = "handmotion_error_bad_input")
+  expect_error(hand_3d(g, recording = 1, background = "no-such-colour"), class = "handmotion_error_bad_input")
+  # colours reach the page as #rrggbb (three.js does not know R's names)
+  w <- hand_3d(g, recording = 1, background = "grey90")
+  expect_equal(w$x$background, "#E5E5E5")
+  expect_true(all(grepl("^#[0-9A-F]{6}$", w$x$colour)))
   empty <- matrix(0, 0, 16, dimnames = list(NULL, hust_dofs$name))
   expect_error(hand_3d(list(none = empty)), "none", class = "handmotion_error_bad_recording")
   expect_error(hand_3d(list(a = g[1], b = matrix(1, 2, 2))), class = "handmotion_error_bad_input")
@@ -80,6 +85,9 @@ test_that("the widget page draws a hand that moves, without script errors, in a 
   dom <- browser_dom(page, 1000 * n / g$rate + 500)
   expect_match(dom, 'data-ready="1"', fixed = TRUE)
   expect_no_match(dom, "data-js-error", fixed = TRUE)
+  # nothing at all on the console: no uncaught exception, no error or warning from three.js
+  console <- browser_console(page, 1000)
+  expect_identical(console, character(), label = paste(console, collapse = "\n"))
   # playback follows the page's clock at the recording's rate: once the
   # recording's duration has passed, it rests on its last frame
   frame <- as.integer(sub('.*data-frame="([0-9]+)".*', "\\1", dom))

@@ -84,3 +84,16 @@ test_that("autoplot(type = \"poses\") draws one panel per group and set", {
   expect_error(ggplot2::autoplot(g, type = "poses", compare = list(1)), class = "handmotion_error_bad_input")
   expect_error(ggplot2::autoplot(g, type = "poses", compare = g), class = "handmotion_error_bad_input")
 })
+
+test_that("autoplot(type = "poses") takes a number of columns and keeps long type names whole", {
+  g <- simulate_grasps(subjects = 1, grasps = c(1, 2, 21, 27), objects = 1, trials = 1, seed = 1)
+  p <- autoplot(g, type = "poses", ncol = 2)
+  expect_equal(p$facet$params$ncol, 2L)
+  # "Large Diameter" and "Tripod Variation" are wrapped onto two lines, not clipped
+  strips <- ggplot2::ggplot_build(p)$layout$layout$group
+  expect_true(all(c("Large Diameter", "Tripod Variation") %in% as.character(strips)))
+  expect_equal(p$theme$strip.clip, "off")
+  lab <- p$facet$params$labeller(data.frame(group = "Tripod Variation"))[[1]]
+  expect_equal(lab, "Tripod\nVariation")
+  expect_error(autoplot(g, type = "poses", ncol = 0), class = "handmotion_error_bad_input")
+})

@@ -41,8 +41,16 @@ test_that("the report renders on a tiny design with its tables and figures", {
   skip_on_cran()
   skip_if_not(rmarkdown::pandoc_available("1.12.3"), "pandoc is not available")
   out <- withr::local_tempdir()
-  html <- reproduce_thesis(out, subjects = 2, grasps = c(17, 25), loso_folds = 2, seed = 1)
+  said <- capture.output(html <- reproduce_thesis(out, subjects = 2, grasps = c(17, 25), loso_folds = 2, seed = 1),
+                         type = "message")
   expect_equal(normalizePath(html), normalizePath(file.path(out, "reproduce-thesis.html")))
+  # progress: a line per step, saying what it does and (after the first) the time left; then where the report is
+  steps <- grep("^  \\[ *[0-9]+/[0-9]+\\] ", said, value = TRUE)
+  expect_gte(length(steps), 10L)
+  expect_match(steps[1], "simulate the data", fixed = TRUE)
+  expect_match(steps[length(steps)], "left)", fixed = TRUE)
+  expect_match(said[length(said) - 1L], html, fixed = TRUE)
+  expect_match(said[1], "2 subjects x 2 grasp types", fixed = TRUE)
   expect_true(file.exists(html))
   page <- gsub("\\s+", " ", paste(readLines(html, warn = FALSE), collapse = "\n"))
   has <- function(text) grepl(text, page, fixed = TRUE)  # (expect_match would print the page)
@@ -94,4 +102,28 @@ test_that("the vignette is a thin wrapper around the report template", {
   expect_true(any(grepl('system.file("report", "reproduce-thesis.Rmd", package = "handmotion")', text,
                         fixed = TRUE)))
   expect_true(nzchar(system.file("report", "reproduce-thesis.Rmd", package = "handmotion")))
+})
+
+test_that("the progress lines estimate the time left from the steps' shares", {
+  lines <- character()
+  con <- textConnection("lines", "w", local = TRUE)
+  bar <- handmotion:::report_progress(TRUE, out = con)
+  w <- handmotion:::report_step_weights
+  bar$begin(list(subjects = 30, grasps = 1:33, loso_folds = NULL))
+  bar$step(names(w)[1])
+  Sys.sleep(0.6)
+  bar$step(names(w)[2])
+  bar$done("/somewhere/reproduce-thesis.html")
+  close(con)
+  expect_match(lines[1], "30 subjects x 33 grasp types, leave-one-subject-out", fixed = TRUE)
+  expect_match(lines[grep("\\[ 1/", lines)], "simulate the data (0 s so far)", fixed = TRUE)
+  # after the first step (its share of the whole), the rest takes (total / share - 1) times as long
+  second <- lines[grep("\\[ 2/", lines)]
+  left <- as.numeric(sub(".*about ([0-9.]+) (s|min) left.*", "\\1", second))
+  unit <- sub(".*about [0-9.]+ (s|min) left.*", "\\1", second)
+  secs <- if (unit == "min") 60 * left else left
+  expect_equal(secs, 0.6 * (sum(w) / w[[1]] - 1), tolerance = 0.3)
+  expect_match(lines[length(lines) - 1L], "report written in .*: /somewhere/reproduce-thesis.html")
+  quiet <- handmotion:::report_progress(FALSE, out = con)
+  expect_silent({quiet$step("x"); quiet$done("y")})
 })

@@ -47,3 +47,38 @@ test_that("every frame draws the palm and the hand is centred in the drawing", {
   expect_equal(mean(range(xy[, 1])), 200, tolerance = 1)
   expect_equal(mean(range(xy[, 2])), 200, tolerance = 1)
 })
+
+test_that("the page carries its own look and controls, and two copied into one page play by themselves", {
+  rec <- matrix(0, 40, 16, dimnames = list(NULL, hust_dofs$name))
+  rec[, 5:16] <- outer(sin(seq(0, pi, length.out = 40)), rep(80, 12))
+  dir <- withr::local_tempdir()
+  f <- write_hand_animation(rec, file.path(dir, "a.html"), rate = 20)
+  doc <- xml2::read_html(f)
+  div <- xml2::xml_find_all(doc, "//div[@class='handmotion-animation']")
+  expect_length(div, 1L)
+  # the lines' look rides on the <svg> itself, not on the page's <head>
+  svg <- xml2::xml_find_first(div[[1]], ".//svg")
+  expect_equal(xml2::xml_attr(svg, "fill"), "none")
+  expect_equal(xml2::xml_attr(xml2::xml_find_first(svg, ".//polygon"), "fill"), "#e5e5e5")
+  expect_length(xml2::xml_find_all(doc, "//*[@id]"), 0L)
+  for (cl in c("hm-play", "hm-back", "hm-next", "hm-speed", "hm-slider")) {
+    expect_length(xml2::xml_find_all(div[[1]], sprintf(".//*[@class='%s']", cl)), 1L)
+  }
+  expect_equal(xml2::xml_attr(xml2::xml_find_all(div[[1]], ".//option"), "value"),
+               as.character(c(0.1, 0.25, 0.5, 1, 2)))
+  skip_without_browser()
+  # two copies of the <div> in one page, the second slowed to 0.1x: after
+  # one second the first is on frame ~21, the second on frame ~3
+  txt <- readLines(f)
+  body <- txt[grep('class="handmotion-animation"', txt):(length(txt) - 1L)]
+  slow <- sub('<option value="0.1">', '<option value="0.1" selected>', sub(" selected>1x", ">1x", body, fixed = TRUE),
+              fixed = TRUE)
+  page <- file.path(dir, "two.html")
+  writeLines(c("<!DOCTYPE html><html><body>", body, slow, "</body></html>"), page)
+  dom <- browser_dom(page, 1000)
+  labels <- regmatches(dom, gregexpr("frame [0-9]+ \\([0-9.]+ s\\)", dom))[[1]]
+  expect_length(labels, 2L)
+  at <- as.integer(sub("frame ([0-9]+).*", "\\1", labels))
+  expect_gt(at[1], 12L)
+  expect_lt(at[2], 6L)
+})
