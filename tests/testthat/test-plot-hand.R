@@ -85,7 +85,7 @@ test_that("autoplot(type = \"poses\") draws one panel per group and set", {
   expect_error(ggplot2::autoplot(g, type = "poses", compare = g), class = "handmotion_error_bad_input")
 })
 
-test_that("autoplot(type = "poses") takes a number of columns and keeps long type names whole", {
+test_that("autoplot(type = 'poses') takes a number of columns and keeps long type names whole", {
   g <- simulate_grasps(subjects = 1, grasps = c(1, 2, 21, 27), objects = 1, trials = 1, seed = 1)
   p <- autoplot(g, type = "poses", ncol = 2)
   expect_equal(p$facet$params$ncol, 2L)
