@@ -19,7 +19,10 @@
 #' Besides the HTML report, every table is written as a CSV file to
 #' `<output_dir>/tables/` and every figure as a PNG file to
 #' `<output_dir>/figures/`; the time of each step is shown in the report and
-#' written to `tables/timings.csv`.
+#' written to `tables/timings.csv`. The confusion matrices are written in full
+#' (`tables/table_5_6_confusion.csv` and so on), every verdict of the report to
+#' `tables/verdicts.csv` and the R and package versions to
+#' `tables/software.csv`.
 #'
 #' The held-out evaluations refit every model once per fold. By default that
 #' is the full leave-one-subject-out (30 refits of the 33 models per

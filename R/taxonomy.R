@@ -32,34 +32,60 @@
 #' Published results of Jeppsson (2017), chapter 5, for comparison
 #'
 #' The thesis' published values, kept only as a comparison column beside the
-#' package's own results ([thesis_table()]). No computation in the
-#' package takes these numbers as input.
+#' package's own results ([thesis_table()]). No computation in the package
+#' takes these numbers as input.
+#'
+#' No clean copy of the thesis was available: every value was read from a
+#' PDF-to-text extraction of it. Tables 5.1, 5.2 and 5.7 came through cleanly
+#' and are exact. The confusion matrices of Tables 5.6 and 5.8 were printed
+#' rotated and came through garbled: single digits appear as look-alike glyphs
+#' that were decoded, a few cells are "probable" readings and some could not be
+#' read at all (`NA`). Their diagonals are the most reliable part (all of Table
+#' 5.8's are clean; Table 5.6's types 2 and 3, 61 and 81, are medium
+#' confidence: they could be 16 and 18). The per-type totals are column sums
+#' with unreadable cells counted as 0, so they are lower bounds, and the
+#' overall accuracies (35.1% and 64.0%) are derived from them, not stated in
+#' the thesis. Table 5.3's values did not survive the extraction at all; only
+#' the counts the text states about it remain.
 #'
 #' @format A list:
 #' \describe{
 #'   \item{table_5_1}{Per grasp type: `target_frames` (warping target length),
 #'     `warping` ("dtw" or "linear" fallback) and `em_failed_dofs` (DoFs whose
-#'     mixture fell back to a single Gaussian).}
+#'     mixture fell back to a single Gaussian, numbered 1-16 as in [hust_dofs]:
+#'     13 is DIP4). Exact.}
 #'   \item{table_5_2}{Variance explained (percent) by two FPCs per DoF, summarised
-#'     over the 16 DoFs of each model: `min`, `median`, `mean`, `max`.}
+#'     over the 16 DoFs of each model: `min`, `median`, `mean`, `max`. Exact.}
 #'   \item{table_5_6_diagonal}{FPCA classifier (Table 5.6): correctly classified
-#'     recordings per true type (`correct`), the column total (`total`, a lower
-#'     bound where cells could not be read) and the reading's `confidence`.}
+#'     recordings per true type (`correct`, the diagonal cell), the column total
+#'     (`total`, a lower bound: unreadable cells count as 0),
+#'     `total_na_cells` (how many cells of the column could not be read) and the
+#'     diagonal's `confidence` ("high" or "medium").}
 #'   \item{table_5_7}{Cumulative proportion of variance explained by the 16 PCs of
-#'     last-frame PCA per grasp type (`pc1` ... `pc16`).}
+#'     last-frame PCA per grasp type (`pc1` ... `pc16`). Exact.}
 #'   \item{table_5_8_diagonal}{Last-frame PCA classifier (Table 5.8), as for 5.6.}
+#'   \item{table_5_6_cells, table_5_8_cells}{The whole confusion matrices, one
+#'     row per cell: `model_id` (row of the printed table), `true_id` (the true
+#'     grasp type), `count` (best-guess reading, `NA` where nothing could be read)
+#'     and `confidence` of the reading: "clean" (plain digits), "decoded" (a
+#'     look-alike glyph confirmed by the table's own labels), "probable" (a
+#'     plausible but unconfirmed reading) or "na".}
 #'   \item{table_5_3_claims}{The counts section 5.2 states about Table 5.3
 #'     (whose cell values did not survive): in how many cases a model is
 #'     closest for its own type, and so on.}
-#'   \item{accuracy}{Overall in-sample accuracy of both classifiers recovered from
-#'     the diagonals and totals.}
+#'   \item{accuracy}{Overall in-sample accuracy of both classifiers, derived by us
+#'     (not stated in the thesis): the sum of the diagonals over the sum of the
+#'     lower-bound totals.}
 #'   \item{source}{The citation.}
 #' }
 #' @source Jeppsson, J. (2017). *Modeling Natural Human Hand Motion for Grasp
 #'   Animation*. Master's thesis, KTH Royal Institute of Technology, Tables 5.1,
-#'   5.2, 5.6, 5.7 and 5.8, as recovered from the text (see `data-raw/thesis_results.R`;
-#'   Table 5.3's values did not survive the extraction).
+#'   5.2, 5.6, 5.7 and 5.8 and the text of section 5.2, as recovered from a text
+#'   extraction (built by `data-raw/thesis_results.R`, which says how each value
+#'   was read; Table 5.3's values did not survive the extraction).
 #' @examples
 #' thesis_results$accuracy
 #' head(thesis_results$table_5_2)
+#' # the diagonals of Table 5.6 that are less certain
+#' subset(thesis_results$table_5_6_diagonal, confidence != "high")
 "thesis_results"

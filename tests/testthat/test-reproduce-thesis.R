@@ -66,13 +66,27 @@ test_that("the report renders on a tiny design with its tables and figures", {
   # Figure 5.1's Medium Wrap is not in this design: the report says what it drew instead
   expect_true(has("the thesis used Medium Wrap, which is not in this design"))
 
+  # a reader can trust the text: no maths from a CDN (the page works offline),
+  # no "(s)" plurals, the lost Table 5.3 said plainly, a verdict under the tables
+  expect_false(grepl("mathjax", page, ignore.case = TRUE))
+  text <- gsub("<[^>]+>", " ", gsub("<(script|style)\\b.*?</\\1>", " ", page, perl = TRUE))
+  expect_false(grepl("[a-z]\\(s\\)", text))
+  expect_false(grepl("\\b1 (types|recordings|models|DoFs)\\b", text))
+  expect_true(has("values were lost from the text extraction"))
+  expect_true(has('class="verdict"'))
+  expect_true(has("reproduced by construction"))
+  expect_true(has("What the twin reproduces, and what it does not"))
+  expect_false(has("main job"))
+
   tables <- c("table_5_1", "table_5_2", "table_5_3", "table_5_3_claims", "table_5_6", "table_5_7",
               "table_5_8", "accuracy", "timings", "figure_5_3_sign_flips", "classifiers_held_out",
-              "recognition_recall")
+              "recognition_recall", "table_5_6_confusion", "table_5_6_confusion_held_out",
+              "table_5_8_confusion", "table_5_8_confusion_held_out", "verdicts", "software")
   expect_setequal(sub("\\.csv$", "", list.files(file.path(out, "tables"))), tables)
-  figures <- c("figure_5_1", "figure_5_1_frame_counts", "figure_5_2", "figure_5_3", "figure_5_4",
-               "figure_5_5", "figure_5_6", "table_5_3", "table_5_4", "table_5_5", "table_5_6",
-               "table_5_8", "appendix_a_1", "classifiers_accuracy", "recognition_confusion")
+  figures <- c("figure_5_1", "figure_5_1_frame_counts", "figure_5_2", "figure_5_2_frame_counts", "figure_5_3",
+               "figure_5_4", "figure_5_5", "figure_5_6", "table_5_3", "table_5_4", "table_5_5", "table_5_6",
+               "table_5_8", "appendix_a_1", "classifiers_accuracy", "recognition_confusion",
+               "table_5_6_beside_thesis", "table_5_8_beside_thesis", "recall_beside_thesis")
   expect_setequal(sub("\\.png$", "", list.files(file.path(out, "figures"))), figures)
   png_magic <- as.raw(c(0x89, 0x50, 0x4e, 0x47))
   for (f in list.files(file.path(out, "figures"), full.names = TRUE)) {
@@ -90,6 +104,16 @@ test_that("the report renders on a tiny design with its tables and figures", {
   expect_equal(nrow(every), 4L)
   expect_true(all(every$held_out >= 0 & every$held_out <= 1))
   expect_equal(every$held_out[1:2], acc$held_out)
+  # the confusion matrices as CSV: model rows, one column per true type, every recording once
+  cm <- utils::read.csv(file.path(out, "tables", "table_5_8_confusion.csv"), check.names = FALSE)
+  expect_named(cm, c("model_id", "model", "true_17", "true_25"))
+  expect_equal(sum(cm[c("true_17", "true_25")]), sum(t51$n_used + t51$n_overlong + t51$n_degenerate))
+  sw <- utils::read.csv(file.path(out, "tables", "software.csv"))
+  expect_equal(sw$version[sw$software == "handmotion"], as.character(utils::packageVersion("handmotion")))
+  expect_true(any(grepl("^R version", sw$version)))
+  verdicts <- utils::read.csv(file.path(out, "tables", "verdicts.csv"))
+  expect_true(all(c("Table 5.1", "Table 5.2", "Table 5.3", "Table 5.7", "Tables 5.6, 5.8") %in% verdicts$table))
+  expect_true(all(nzchar(verdicts$verdict) & nzchar(verdicts$why)))
   tim <- utils::read.csv(file.path(out, "tables", "timings.csv"))
   expect_true(all(c("fit the grasp models", "held-out evaluation, FPCA", "whole report") %in% tim$step))
   expect_true(all(tim$seconds >= 0))

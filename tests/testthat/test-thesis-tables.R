@@ -107,6 +107,28 @@ test_that("tables 5.6 and 5.8 hold the confusion diagonal, with the held-out rec
   expect_equal(t58$thesis_total, th8$total)
 })
 
+test_that("thesis_results' confusion matrices agree with its diagonals, totals and accuracies", {
+  for (k in c("5_6", "5_8")) {
+    cells <- thesis_results[[paste0("table_", k, "_cells")]]
+    diag <- thesis_results[[paste0("table_", k, "_diagonal")]]
+    expect_equal(nrow(cells), 33L * 33L)
+    expect_setequal(unique(cells$confidence), c("clean", "decoded", "probable", "na"))
+    # NA exactly where nothing could be read
+    expect_equal(is.na(cells$count), cells$confidence == "na")
+    on_diag <- cells[cells$model_id == cells$true_id, ]
+    expect_equal(on_diag$count[order(on_diag$true_id)], diag$correct)
+    # a total is the column sum with unreadable cells counted as 0: a lower bound
+    col_sum <- tapply(ifelse(is.na(cells$count), 0, cells$count), cells$true_id, sum)
+    expect_equal(as.integer(col_sum), diag$total)
+    expect_equal(as.integer(tapply(is.na(cells$count), cells$true_id, sum)), diag$total_na_cells)
+  }
+  # the overall accuracies are derived from the diagonals and the lower-bound totals
+  d6 <- thesis_results$table_5_6_diagonal
+  expect_equal(thesis_results$accuracy$accuracy[1], sum(d6$correct) / sum(d6$total))
+  expect_equal(sort(d6$grasp_id[d6$confidence != "high"]), c(2L, 3L))
+  expect_true(all(thesis_results$table_5_8_diagonal$confidence == "high"))
+})
+
 test_that("table_5_7 interleaves our cumulative variance with the thesis'", {
   d <- small_design()
   t57 <- thesis_table("5.7", fit = d$lf, pcs = 1:3)
