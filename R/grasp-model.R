@@ -259,13 +259,6 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
   }
   t_gmm <- proc.time()[["elapsed"]]
 
-  basis <- model_basis(fpca, dofs, settings$ncomp)
-  scores <- array(0, c(n, p, settings$ncomp), dimnames = list(prep$ids, dofs, paste0("FPC", seq_len(settings$ncomp))))
-  for (j in seq_len(p)) scores[, j, ] <- fpca[[j]]$scores
-  var_explained <- t(vapply(fpca, function(f) as.numeric(f$var_explained), numeric(settings$ncomp)))
-  if (settings$ncomp == 1L) var_explained <- matrix(var_explained, ncol = 1)
-  dimnames(var_explained) <- list(dofs, paste0("FPC", seq_len(settings$ncomp)))
-
   new_grasp_model(
     grasp = type,
     grasp_id = match(type, feix_levels()),
@@ -276,7 +269,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
     warping = list(method = aln$method, fallback_reason = (aln$fallback_reason %||% NA_character_),
                    iterations = (aln$iterations %||% NA_integer_),
                    converged = (aln$converged %||% NA), engine = engines$align),
-    fpca = fpca, basis = basis, var_explained = var_explained, scores = scores, gmm = gmm,
+    fpca = fpca, gmm = gmm,
     warp = list(fpca = warp_fit, mean = as.numeric(warp_fit$mean),
                 components = matrix(warp_fit$components, L), scores = matrix(warp_fit$scores, n),
                 gmm = warp_gmm, constant = isTRUE(warp_fit$constant)),
@@ -291,17 +284,30 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
   )
 }
 
-# The one constructor of class "grasp_model": the fitted parts in, the
-# derived ones (the generation sampler, the cross-DoF dependence) built here
-# so that every model has them, then the shapes checked.
+# The one constructor of class "grasp_model": the fitted parts in (one FPCA
+# and one mixture per DoF, the warp model), and the views the kernels and
+# methods read derived here, from them only: the stacked `basis` (mean and
+# components, L x p (x ncomp)), the `scores` (n x p x ncomp) and
+# `var_explained` (p x ncomp) arrays, the generation `sampler` and the
+# cross-DoF `dependence`. They are kept (the kernels would otherwise rebuild
+# them at every call: the sampler alone costs about 1 ms, four times a
+# one-grasp generate()), but nothing sets them apart from the FPCA and the
+# mixtures they come from.
 new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, argvals, n_input, n_used,
-                            ids, removed, warping, fpca, basis, var_explained, scores, gmm, warp,
-                            fallbacks, settings, engine, timing, limits, alignment = NULL) {
+                            ids, removed, warping, fpca, gmm, warp, fallbacks, settings, engine, timing,
+                            limits, alignment = NULL) {
+  q <- settings$ncomp
+  labels <- paste0("FPC", seq_len(q))
+  scores <- array(0, c(n_used, length(dofs), q), dimnames = list(ids, dofs, labels))
+  for (j in seq_along(dofs)) scores[, j, ] <- fpca[[j]]$scores
+  var_explained <- matrix(vapply(fpca, function(f) as.numeric(f$var_explained), numeric(q)),
+                          length(dofs), q, byrow = TRUE, dimnames = list(dofs, labels))
   model <- list(grasp = grasp, grasp_id = grasp_id, dofs = dofs, rate = rate, unit = unit,
                 target_length = target_length, argvals = argvals, n_input = n_input, n_used = n_used,
-                ids = ids, removed = removed, warping = warping, fpca = fpca, basis = basis,
-                var_explained = var_explained, scores = scores, gmm = gmm, warp = warp,
-                fallbacks = fallbacks, settings = settings, engine = engine, timing = timing)
+                ids = ids, removed = removed, warping = warping, fpca = fpca,
+                basis = model_basis(fpca, dofs, q), var_explained = var_explained, scores = scores,
+                gmm = gmm, warp = warp, fallbacks = fallbacks, settings = settings, engine = engine,
+                timing = timing)
   model$sampler <- build_sampler(model)
   model$dependence <- list(type = settings$dependence,
                            copula = if (settings$dependence == "copula") fit_score_copula(model))

@@ -243,3 +243,23 @@ test_that("the FPCA of a constant DoF prints and has every field of an fpca_fit"
   expect_output(print(m$fpca[[1]]), "variance explained")
   expect_setequal(names(f), names(m$fpca[[1]]))
 })
+
+test_that("the constructor derives the views from the FPCA and the validator refuses broken shapes", {
+  g <- planted_grasps(n = 12, p = 2, seed = 3)
+  m <- fit_grasp_model(g, warping = "linear", seed = 1)
+  for (j in seq_along(m$dofs)) {
+    expect_equal(unname(m$scores[, j, ]), unname(m$fpca[[j]]$scores))
+    expect_equal(unname(m$basis$mean[, j]), m$fpca[[j]]$mean)
+    expect_equal(unname(m$var_explained[j, ]), unname(m$fpca[[j]]$var_explained))
+  }
+  broken <- unclass(m)
+  broken$scores <- broken$scores[-1, , , drop = FALSE]
+  expect_error(validate_grasp_model(structure(broken, class = "grasp_model")), "has_dim")
+  broken <- unclass(m)
+  broken$gmm <- broken$gmm[1]
+  expect_error(validate_grasp_model(structure(broken, class = "grasp_model")))
+  # a set names each model by its own type, once
+  expect_error(new_grasp_models(list(a = m)))
+  expect_error(new_grasp_models(stats::setNames(list(m, m), c(m$grasp, m$grasp))))
+  expect_s3_class(new_grasp_models(stats::setNames(list(m), m$grasp)), "grasp_models")
+})

@@ -269,3 +269,14 @@ test_that("the native local regression checks its arguments itself (no crash on 
   expect_error(.Call(hm_lwr_predict, x, y, q, 5L, 0, 1e-6), "positive")
   expect_error(.Call(hm_lwr_predict, x, y, q, 5L, 1e-3, NaN), "positive")
 })
+
+test_that("hand-over models are built by one constructor whose validator checks the shapes", {
+  fit <- fit_handover(split$ref, markers = 3, k = 64)
+  expect_identical(validate_handover_model(fit), fit)
+  broken <- unclass(fit)
+  broken$rotation <- broken$rotation[-1, ]
+  expect_error(validate_handover_model(structure(broken, class = "handover_model")))
+  broken <- unclass(fit)
+  broken$markers <- c(broken$markers, "ring_tip")
+  expect_error(validate_handover_model(structure(broken, class = "handover_model")))
+})
