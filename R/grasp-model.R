@@ -38,6 +38,13 @@
 #' at zero, and the DoF is listed in `fallbacks`. The same holds for warping
 #' functions that do not vary (all recordings of one length, linear warps).
 #'
+#' **Degenerate data** is fitted with these fallbacks, and said: one-frame or
+#' identical recordings, constant DoFs, more FPCs than the rank of the
+#' curves, mixtures with more components than the recordings can carry and
+#' the linear fallback of the alignment raise one warning of class
+#' `handmotion_warning_degenerate` (see [handmotion_errors]), are listed in
+#' `$degenerate_data` and shown by `print()`.
+#'
 #' **Defaults.** Arguments left `NULL` take the defaults of the chosen
 #' `dependence`:
 #'
@@ -123,9 +130,10 @@
 #'   `reason`), `settings`, `engine`, `timing` (seconds per step) and, with
 #'   `keep_data`, `data` (warped array n x L x p, warps n x L, frame counts),
 #'   `dependence` (`type` and, for the copula, `copula`: its score columns,
-#'   correlation `cor`, `shrinkage` and tabulated marginal quantiles) and
+#'   correlation `cor`, `shrinkage` and tabulated marginal quantiles),
 #'   `limits` (the joint limits per DoF, the share of recorded frames outside
-#'   them, and whether generation enforces them).
+#'   them, and whether generation enforces them) and `degenerate_data`
+#'   (data frame `class`, `message`; see Degenerate data).
 #' @seealso [fit_grasp_models()] for every type at once, [generate()] and
 #'   [project()] to use a model, [autoplot.grasp_model()] to look at it.
 #' @export
@@ -161,7 +169,10 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
                    k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,
                    keep_data = keep_data, gmm_max_iter = gmm_model_max_iter,
                    dependence = dependence, mixture_guard = mixture_guard, fpc_scores = fpc_scores)
-  with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))
+  model <- with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))
+  warn_degenerate(model$degenerate_data,
+                  sprintf("The model of grasp type \"%s\" rests on degenerate data:", model$grasp))
+  model
 }
 
 # The settings each model takes when its arguments are left NULL. The
@@ -276,6 +287,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
   model$dependence <- list(type = settings$dependence,
                            copula = if (settings$dependence == "copula") fit_score_copula(model))
   model$limits <- recorded_limits(x[prep$ids], dofs)
+  model$degenerate_data <- model_degeneracies(model, x$meta$n_frames)
   if (isTRUE(settings$keep_data)) {
     model$data <- list(warped = aln$warped, warps = aln$warps,
                        n_frames = stats::setNames(x$meta$n_frames[match(prep$ids, x$meta$id)], prep$ids))
@@ -308,8 +320,11 @@ prepare_alignment <- function(x, settings, engines, call) {
   if (identical(settings$warping, "linear")) {
     aln <- align_linear_fallback(recs, L, engines$align, reason = "requested")
   } else {
+    # (the model records degenerate data itself, see model_degeneracies())
     aln <- tryCatch(
-      align_recordings(recs, target_length = L, engine = engines$align, max_stall = settings$max_stall),
+      withCallingHandlers(
+        align_recordings(recs, target_length = L, engine = engines$align, max_stall = settings$max_stall),
+        handmotion_warning_degenerate = function(w) invokeRestart("muffleWarning")),
       error = function(e) e
     )
     if (inherits(aln, "error")) {
@@ -547,6 +562,8 @@ print.grasp_model <- function(x, ...) {
                 max(ve, na.rm = TRUE)))
   }
   cat("  ", format_dependence(x), "\n", sep = "")
+  dg <- format_degenerate(x$degenerate_data)
+  if (length(dg)) cat(dg, sep = "\n")
   if (nrow(x$fallbacks) == 0L) {
     cat("  fallbacks: none\n")
   } else {
