@@ -121,10 +121,16 @@ handover_error <- function(truth, recon, by = c("overall", "recording", "frame",
   by <- check_choice(by, arg = "by", call = rlang::current_env())
   check_grasps(truth, "truth", call = call)
   check_grasps(recon, "recon", call = call)
-  if (!identical(truth$meta$id, recon$meta$id) || !identical(truth$meta$n_frames, recon$meta$n_frames) ||
-      !identical(truth$dofs, recon$dofs)) {
+  differ <- if (!identical(truth$dofs, recon$dofs)) {
+    "DoFs differ: {.val {utils::head(setdiff(union(truth$dofs, recon$dofs), intersect(truth$dofs, recon$dofs)), 3)}}, or their order."
+  } else if (!identical(truth$meta$id, recon$meta$id)) {
+    "recording ids differ ({length(truth)} in {.arg truth}, {length(recon)} in {.arg recon}); first: {.val {c(setdiff(truth$meta$id, recon$meta$id), setdiff(recon$meta$id, truth$meta$id), truth$meta$id)[1]}}."
+  } else if (!identical(truth$meta$n_frames, recon$meta$n_frames)) {
+    "frame counts differ, first in recording {.val {truth$meta$id[which(truth$meta$n_frames != recon$meta$n_frames)[1]]}}."
+  }
+  if (!is.null(differ)) {
     hm_abort(c("{.arg truth} and {.arg recon} must hold the same recordings, frame counts and DoFs.",
-               i = "Compare a query with {.code reconstruct(model, query)}."),
+               x = differ, i = "Compare a query with {.code reconstruct(model, query)}."),
              "bad_input", argument = "recon", call = call)
   }
   if (!identical(truth$unit, recon$unit)) {
