@@ -22,15 +22,16 @@ read_failure_row <- function(file, cnd) {
              message = gsub("\\s+", " ", msg), stringsAsFactors = FALSE)
 }
 
-# Apply `reader(file)` to every file. Files whose reading signals a condition
-# of class `catch` are collected in the failure report; anything else (a bug,
-# an interrupt) propagates. Returns list(results = named list of successes,
-# failures = data frame).
+# Apply `reader(file)` to every file. Files whose reading raises an error of
+# class `catch` are collected in the failure report; any other error (a bug)
+# propagates. Only errors are caught: a warning of one file (e.g. a dropped
+# truncated line) is a warning, not a failure, and must not stop the others.
+# Returns list(results = named list of successes, failures = data frame).
 read_each_file <- function(files, reader, catch = "handmotion_error") {
   results <- vector("list", length(files))
   failures <- vector("list", length(files))
   for (i in seq_along(files)) {
-    results[i] <- list(tryCatch(reader(files[i]), condition = function(cnd) {
+    results[i] <- list(tryCatch(reader(files[i]), error = function(cnd) {
       if (!inherits(cnd, catch)) stop(cnd)
       failures[[i]] <<- read_failure_row(files[i], cnd)
       NULL
@@ -111,23 +112,50 @@ list_input_files <- function(path, pattern, recursive, call = rlang::caller_env(
     sort(list.files(path[i], pattern = pattern, full.names = TRUE,
                     recursive = recursive, ignore.case = TRUE))
   }), use.names = FALSE)
-  files <- files[!dir.exists(files)]
+  # a folder named like a data file (matching `pattern`) is kept, so that the
+  # reader reports it as unreadable instead of skipping it without a word
+  sub_dirs <- dir.exists(files)
+  if (!is.null(pattern)) {
+    sub_dirs <- sub_dirs & !grepl(pattern, basename(files), ignore.case = TRUE)
+  }
+  files <- files[!sub_dirs]
   list(files = files, many = any(is_dir) || length(path) > 1L)
 }
 
 # ---- shared text-parsing helpers (GraspDB14 and HUST readers) ----
 
+# A path that names a readable regular file, or a classed error saying why
+# not (R's own "cannot open the connection" names neither class nor reason).
+check_readable_file <- function(file, call = rlang::caller_env()) {
+  why <- if (dir.exists(file)) "it is a folder, not a file"
+    else if (!file.exists(file)) {
+      if (nzchar(Sys.readlink(file))) "it is a broken symbolic link" else "it does not exist"
+    } else if (file.access(file, 4L) != 0L) "no read permission"
+  if (!is.null(why)) {
+    abort_bad_file("{.file {file}} cannot be read: {why}.", "unreadable_file", file = file,
+                   line = NA_integer_, call = call)
+  }
+  invisible(file)
+}
+
 # Read a text file as lines: accepts LF, CRLF and CR line endings, trims
 # blanks, records whether the last line was complete.
 read_text_lines <- function(file, call = rlang::caller_env()) {
+  check_readable_file(file, call = call)
   size <- file.size(file)
   if (is.na(size) || size == 0) {
     abort_bad_file("{.file {file}} is empty.", "empty_file", file = file, line = NA_integer_, call = call)
   }
-  bytes <- readBin(file, "raw", size)
-  if (any(bytes == as.raw(0))) {
-    abort_bad_file("{.file {file}} is not a text file (it contains NUL bytes).", "not_text",
+  bytes <- tryCatch(readBin(file, "raw", size), error = function(e) {
+    abort_bad_file("{.file {file}} cannot be read: {conditionMessage(e)}", "unreadable_file",
                    file = file, line = NA_integer_, call = call)
+  })
+  # NUL and the other C0 control bytes (tab, line ends and form feed aside)
+  # do not occur in text files
+  ctrl <- bytes < as.raw(32) & !(bytes %in% as.raw(c(9, 10, 12, 13))) | bytes == as.raw(127)
+  if (any(ctrl)) {
+    abort_bad_file("{.file {file}} is not a text file (control byte 0x{as.character(bytes[which(ctrl)[1]])} at byte {which(ctrl)[1]}).",
+                   "not_text", file = file, line = NA_integer_, call = call)
   }
   txt <- rawToChar(bytes)
   # stray non-UTF-8 bytes (e.g. a Latin-1 header) must not break the regexes
