@@ -30,8 +30,8 @@ check_number <- function(x, arg, min = -Inf, max = Inf, min_open = FALSE, allow_
   ok <- is.numeric(x) && length(x) == 1L && is.finite(x) && x <= max &&
     (if (min_open) x > min else x >= min)
   if (!ok) {
-    bound <- if (min_open && min == 0) "a positive number"
-             else if (min == 0) "a non-negative number"
+    bound <- if (min_open && min == 0 && !is.finite(max)) "a positive number"
+             else if (min == 0 && !min_open && !is.finite(max)) "a non-negative number"
              else if (is.finite(min) || is.finite(max)) sprintf("a number %s %s%s", if (min_open) ">" else ">=",
                                                                 format(min), if (is.finite(max)) sprintf(" and <= %s", format(max)) else "")
              else "one finite number"
@@ -147,6 +147,8 @@ check_dots_for <- function(dots, fun, fun_name, exclude = character(), call = rl
 # when it is one short atom, otherwise its type and length.
 describe_value <- function(x) {
   if (is.null(x)) return("NULL")
+  # (a factor prints its labels: factor(2) would read as the number 2)
+  if (is.factor(x)) return(sprintf("a factor of length %d", length(x)))
   if (is.atomic(x) && length(x) == 1L && is.null(dim(x))) {
     v <- if (is.character(x) && !is.na(x)) sprintf("\"%s\"", x) else format(x)
     if (nchar(v) <= 40) return(v)

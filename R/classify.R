@@ -155,10 +155,12 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
                                            message = paste("not fitted:", unfitted$message)))
   }
   all_pr <- tryCatch(project(models, x, details = FALSE), error = function(e) NULL)
+  first_error <- NULL
   for (j in seq_along(models)) {
     pr <- if (!is.null(all_pr)) all_pr[[j]] else
       tryCatch(project(models[[j]], x, details = FALSE), error = function(e) e)
     if (inherits(pr, "error")) {
+      first_error <- first_error %||% pr
       failures <- rbind(failures, data.frame(model = types[j],
                                              message = cli::ansi_strip(conditionMessage(pr))))
       next
@@ -172,6 +174,9 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
     }
     d[, j] <- dist
   }
+  # no model could take the recordings (other DoFs, a bad recording): the
+  # recordings are at fault, not the models, and there is nothing to return
+  if (!is.null(first_error) && all(is.na(d))) stop(first_error)
   if (nrow(failures) > 0L) {
     hm_warn(c("{nrow(failures)} grasp type{?s} cannot be predicted: {.val {failures$model}}.",
               i = "See {.field failures} of the result."),

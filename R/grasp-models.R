@@ -200,6 +200,10 @@ new_grasp_models <- function(models, failed = NULL, seed = NULL) {
 # Models chosen by grasp name or id, for generate().
 select_models <- function(x, grasp, call) {
   if (is.null(grasp)) return(unclass(x))
+  if (length(grasp) == 0L) {
+    hm_abort("{.arg grasp} must name at least one grasp type (or be {.code NULL} for all).",
+             "bad_input", argument = "grasp", call = call)
+  }
   keep <- as.character(as_feix_grasp(grasp, call = call))
   absent <- setdiff(keep, names(x))
   if (length(absent)) {

@@ -256,6 +256,10 @@ fk_input <- function(x, unit, call) {
       }
       dofs <- handmotion::hust_dofs$name
     }
+    if (nrow(x) == 0L) {
+      hm_abort("{.arg x} has no frames: there is no hand to pose.", "bad_recording",
+               argument = "x", recording = "x", call = call)
+    }
     recs <- list(x = x)
     if (is.null(unit)) unit <- "deg"
   }
@@ -268,14 +272,16 @@ fk_input <- function(x, unit, call) {
              "bad_input", argument = "x", call = call)
   }
   if (!is.character(unit) || length(unit) != 1L || !unit %in% c("deg", "rad")) {
-    hm_abort(c("Cannot pose a hand from angles in unit {.val {unit}}.",
+    hm_abort(c("{.arg unit} must be {.val deg} or {.val rad}, not {describe_value(unit)}: a hand cannot be posed from such angles.",
                i = "Forward kinematics needs degrees or radians; raw sensor counts must be calibrated first."),
              "bad_input", argument = "unit", call = call)
   }
   bad <- vapply(recs, function(r) any(!is.finite(r)), logical(1))
   if (any(bad)) {
-    hm_abort("Recording {.val {names(recs)[bad][1]}} has missing or infinite angles.",
-             "bad_recording", recording = names(recs)[bad][1], call = call)
+    first <- which(!is.finite(recs[[which(bad)[1]]]), arr.ind = TRUE)[1, ]
+    hm_abort(c("Recording {.val {names(recs)[bad][1]}} of {.arg x} has missing or infinite angles.",
+               x = "First at frame {first[1]}, DoF {.val {dofs[first[2]]}}."),
+             "bad_recording", argument = "x", recording = names(recs)[bad][1], call = call)
   }
   list(recordings = recs, dofs = dofs, factor = if (unit == "rad") 180 / pi else 1)
 }

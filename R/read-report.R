@@ -124,12 +124,19 @@ list_input_files <- function(path, pattern, recursive, call = rlang::caller_env(
 
 # ---- shared text-parsing helpers (GraspDB14 and HUST readers) ----
 
+# Is `file` a symbolic link (broken or not)? (Sys.readlink() gives "" for
+# other files and NA where links do not exist.)
+is_symlink <- function(file) {
+  l <- Sys.readlink(file)
+  !is.na(l) & nzchar(l)
+}
+
 # A path that names a readable regular file, or a classed error saying why
 # not (R's own "cannot open the connection" names neither class nor reason).
 check_readable_file <- function(file, call = rlang::caller_env()) {
   why <- if (dir.exists(file)) "it is a folder, not a file"
     else if (!file.exists(file)) {
-      if (nzchar(Sys.readlink(file))) "it is a broken symbolic link" else "it does not exist"
+      if (is_symlink(file)) "it is a broken symbolic link" else "it does not exist"
     } else if (file.access(file, 4L) != 0L) "no read permission"
   if (!is.null(why)) {
     abort_bad_file("{.file {file}} cannot be read: {why}.", "unreadable_file", file = file,
