@@ -11,8 +11,9 @@
 #' Progress is reported through `progressr` (wrap the call in
 #' [progressr::with_progress()] or set `progressr::handlers(global = TRUE)` to
 #' see it). A type whose fit fails with a handmotion error (for example too few
-#' usable recordings) is recorded in `attr(, "failed")` instead of stopping
-#' the others.
+#' usable recordings, a `handmotion_error_fit_failed`) is recorded in
+#' `attr(, "failed")` instead of stopping the others; a bad argument or
+#' recording (`handmotion_error_bad_input`) stops the call.
 #'
 #' **Clusters and schedulers.** Any future plan works unchanged and gives the
 #' same models for the same seed (tested under sequential, multicore,
@@ -104,6 +105,11 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
       future.seed = if (is.null(streams)) TRUE else streams[todo])
   }
   failed <- vapply(fits, inherits, logical(1), what = "error")
+  # a bad argument or recording is the caller's to fix, not a type that could
+  # not be fitted: raise it (with ncomp = 0 every type "failed" and an empty
+  # set came back without an error)
+  bad_input <- which(vapply(fits, inherits, logical(1), what = "handmotion_error_bad_input"))
+  if (length(bad_input)) stop(fits[[bad_input[1]]])
   fail_df <- data.frame(
     grasp = types[failed],
     message = vapply(fits[failed], function(e) {

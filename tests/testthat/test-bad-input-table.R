@@ -115,6 +115,7 @@ bad_input_cases <- function() {
     list("fit_grasp_model: too few recordings", quote(fit_grasp_model(g[1:2], ncomp = 2, warping = "linear")), "too_few_recordings"),
     list("fit_grasp_models: no types", quote(fit_grasp_models(g, grasps = integer(0))), "bad_input"),
     list("fit_grasp_models: unknown argument", quote(fit_grasp_models(g, ncmop = 3)), "bad_input"),
+    list("fit_grasp_models: ncomp = 0 for every type", quote(fit_grasp_models(g, ncomp = 0)), "bad_input"),
     list("fit_grasp_models: unknown type", quote(fit_grasp_models(g, grasps = "No Such Grasp")), "unknown_grasp"),
     list("fit_grasp_classifier: NaN fraction", quote(fit_grasp_classifier(g, at = c(0.5, NaN))), "bad_input"),
     list("fit_grasp_classifier: fraction above 1", quote(fit_grasp_classifier(g, at = 2)), "bad_input"),
