@@ -283,8 +283,12 @@ as.data.frame.grasp_classification <- function(x, row.names = NULL, optional = F
 distance_table <- function(models, x = NULL) {
   call <- rlang::caller_env()
   cl <- if (inherits(models, "grasp_classification")) models else {
-    if (is.null(x)) hm_abort("{.arg x} is needed when {.arg models} are models.", "bad_input",
-                             argument = "x", call = call)
+    if (!inherits(models, "grasp_models")) {
+      hm_abort("{.arg models} must be a {.fn classify} result or {.cls grasp_models} from {.fn fit_grasp_models}, not {describe_value(models)}.",
+               "bad_input", argument = "models", call = call)
+    }
+    if (is.null(x)) hm_abort("{.arg x} (the recordings to classify) is needed when {.arg models} are fitted models.",
+                             "bad_input", argument = "x", call = call)
     classify(models, x, method = "fpca")
   }
   d <- cl$distances

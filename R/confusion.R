@@ -105,6 +105,13 @@ as_grasp_confusion <- function(x, ...) {
   UseMethod("as_grasp_confusion")
 }
 
+#' @rdname as_grasp_confusion
+#' @export
+as_grasp_confusion.default <- function(x, ...) {
+  hm_abort("{.arg x} must be a {.fn classify} result, a data frame with {.field truth} and {.field predicted}, or a square table, not {describe_value(x)}.",
+           "bad_input", argument = "x", call = rlang::caller_env())
+}
+
 #' @export
 as_grasp_confusion.grasp_confusion <- function(x, ...) x
 

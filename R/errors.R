@@ -24,7 +24,8 @@
 #'   `file_not_found`, `missing_file`, `not_in_manifest`, `bad_manifest`,
 #'   `no_files`, `file_exists`, `no_switch`, `no_segments`, `unreadable_file`
 #'   (a folder, a broken link or no read permission), `not_text` (a binary
-#'   file), and `bad_skeleton`
+#'   file), `unwritable_file` (a path a writer cannot write), and
+#'   `bad_skeleton`
 #'   raised while reading an `.xmlskel` file.
 #' * `handmotion_error_fit_failed`: data that cannot be fitted.
 #'   Specific classes: `too_few_recordings`, `reference_too_small`.
@@ -70,7 +71,7 @@ error_families <- c(
   file_not_found = "bad_file", missing_file = "bad_file",
   not_in_manifest = "bad_file", bad_manifest = "bad_file", no_files = "bad_file",
   file_exists = "bad_file", no_switch = "bad_file", no_segments = "bad_file",
-  unreadable_file = "bad_file", not_text = "bad_file",
+  unreadable_file = "bad_file", not_text = "bad_file", unwritable_file = "bad_file",
   fit_failed = "fit_failed", too_few_recordings = "fit_failed",
   reference_too_small = "fit_failed",
   missing_dependency = NA_character_

@@ -73,6 +73,9 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
   if (!is.character(background) || length(background) != 1L) {
     hm_abort("{.arg background} must be one colour.", "bad_input", argument = "background", call = call)
   }
+  rate <- check_number(rate, "rate", min = 0, min_open = TRUE, allow_null = TRUE, call = call)
+  check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton"),
+                 call = call)
   hands <- hand_3d_inputs(x, recording, rate, call)
   if (length(hands) > hand_3d_max) {
     hm_abort(c("{length(hands)} hands are too many to show at once; at most {hand_3d_max}.",

@@ -42,6 +42,8 @@ search_markers <- function(reference, n = 6, holdout = "grasp", exhaustive = FAL
     hm_abort("{.arg n} must be a whole number from 1 to {length(cand)}, not {.val {format(n)}}.",
              "bad_markers", argument = "n", call = call)
   }
+  max_frames <- check_whole(max_frames, "max_frames", call = call)
+  seed <- check_seed(seed, call = call)
   if (!holdout %in% names(reference$meta)) {
     hm_abort("{.arg holdout} must name a metadata column ({.val {names(reference$meta)}}), not {.val {holdout}}.",
              "bad_input", argument = "holdout", call = call)

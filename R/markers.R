@@ -104,6 +104,7 @@ markers_from_angles <- function(x, skeleton = hand_skeleton(), markers = NULL,
   call <- rlang::caller_env()
   check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton"),
                  call = call)
+  forearm <- check_flag(forearm, "forearm", call = call)
   ms <- resolve_marker_set(markers, forearm = forearm, call = call)
   if (inherits(x, "grasps")) {
     pos <- forward_kinematics(x, skeleton = skeleton, ...)

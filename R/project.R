@@ -42,6 +42,7 @@ project <- function(object, x, ...) UseMethod("project")
 #' @export
 project.grasp_model <- function(object, x, details = TRUE, ...) {
   call <- rlang::caller_env()
+  check_dots_for(list(...), project.grasp_model, "project", call = call)
   check_grasps(x, call = call)
   check_projection_dofs(object, x, call)
   project_stacked(object, stack_recordings(x, object$dofs), details = details)
@@ -51,6 +52,7 @@ project.grasp_model <- function(object, x, details = TRUE, ...) {
 #' @export
 project.grasp_models <- function(object, x, details = FALSE, ...) {
   call <- rlang::caller_env()
+  check_dots_for(list(...), project.grasp_models, "project", call = call)
   check_grasps(x, call = call)
   if (length(object) == 0L) {
     hm_abort("{.arg object} holds no grasp models.", "bad_input", argument = "object", call = call)

@@ -80,6 +80,10 @@ warn_read_failures <- function(failures, total) {
 #' g <- suppressWarnings(read_graspdb14(file.path(dir, "graspdb14")))
 #' read_failures(g)
 read_failures <- function(x) {
+  if (!is.list(x)) {
+    hm_abort("{.arg x} must be the result of a reader such as {.fn read_graspdb14}, not {describe_value(x)}.",
+             "bad_input", argument = "x", call = rlang::caller_env())
+  }
   f <- attr(x, "failures", exact = TRUE)
   if (is.null(f)) empty_read_failures() else f
 }
@@ -123,6 +127,41 @@ list_input_files <- function(path, pattern, recursive, call = rlang::caller_env(
 }
 
 # ---- shared text-parsing helpers (GraspDB14 and HUST readers) ----
+
+# The output folder of a writer, created if need be, or a classed error when
+# it cannot be (a file of that name, no permission).
+create_output_dir <- function(dir, call = rlang::caller_env()) {
+  dir <- check_string(dir, "dir", call = call)
+  if (file.exists(dir) && !dir.exists(dir)) {
+    abort_bad_file("{.file {dir}} is a file, not a folder to write into.", "unwritable_file",
+                   file = dir, argument = "dir", call = call)
+  }
+  dir.create(dir, showWarnings = FALSE, recursive = TRUE)
+  if (!dir.exists(dir)) {
+    abort_bad_file("Cannot create the folder {.file {dir}}.", "unwritable_file", file = dir,
+                   argument = "dir", call = call)
+  }
+  dir
+}
+
+# Write lines to `file`, or a classed error naming the file when it cannot be
+# written (a folder, a missing folder, no permission): R's own is "cannot
+# open the connection".
+write_text_file <- function(lines, file, use_bytes = FALSE, call = rlang::caller_env()) {
+  if (dir.exists(file)) {
+    abort_bad_file("{.file {file}} cannot be written: it is a folder.", "unwritable_file",
+                   file = file, argument = "file", call = call)
+  }
+  ok <- tryCatch({
+    writeLines(lines, file, useBytes = use_bytes)
+    TRUE
+  }, error = function(e) conditionMessage(e), warning = function(w) conditionMessage(w))
+  if (!isTRUE(ok)) {
+    abort_bad_file("{.file {file}} cannot be written: {ok}", "unwritable_file", file = file,
+                   argument = "file", call = call)
+  }
+  invisible(file)
+}
 
 # Is `file` a symbolic link (broken or not)? (Sys.readlink() gives "" for
 # other files and NA where links do not exist.)

@@ -402,7 +402,9 @@ autoplot.hand_skeleton <- function(object, view = "back", labels = TRUE, ...) {
 #' write_skeleton(hand_skeleton(), f)
 #' nrow(read_skeleton(f)$joints)
 write_skeleton <- function(skeleton, file, comment = NULL) {
-  check_skeleton(skeleton)
+  call <- rlang::caller_env()
+  check_skeleton(skeleton, call = call)
+  file <- check_string(file, "file", call = call)
   j <- skeleton$joints
   pos <- skeleton_rest_positions(skeleton)
   pidx <- skeleton_parent_index(skeleton)
@@ -426,6 +428,6 @@ write_skeleton <- function(skeleton, file, comment = NULL) {
     c(txt, paste0(pad, "</joint>"))
   }
   out <- c(out, emit(which(is.na(pidx)), 1L), "</skeleton>")
-  writeLines(out, file)
+  write_text_file(out, file, call = call)
   invisible(file)
 }

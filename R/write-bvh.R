@@ -92,8 +92,8 @@ write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate 
     if (!is.null(L)) motion[, 3 + 3 * (k - 1) + 1:3] <- euler_zxy(L)
   }
   body <- apply(round(motion, 5), 1, function(r) paste(format(r, trim = TRUE, scientific = FALSE), collapse = " "))
-  writeLines(c("HIERARCHY", hier, "MOTION", paste("Frames:", n),
-               paste("Frame Time:", format(1 / rate, digits = 10)), body), file)
+  write_text_file(c("HIERARCHY", hier, "MOTION", paste("Frames:", n),
+                    paste("Frame Time:", format(1 / rate, digits = 10)), body), file, call = call)
   invisible(file)
 }
 

@@ -31,6 +31,7 @@ bad_input_fixtures <- function(dir) {
     unlabelled <- g
     unlabelled$meta$grasp[] <- NA
     gd <- graspdb14_fixture_grasps()
+    lf <- fit_last_frame_pca(g, k = 2)
   })
   files <- file.path(dir, c("gdb", "hust", "empty", "allbad", "binman", "folders"))
   for (f in files) dir.create(f)
@@ -41,6 +42,7 @@ bad_input_fixtures <- function(dir) {
   writeBin(as.raw(0:255), "binary.bvh")
   writeBin(as.raw(0:255), "binary.xmlskel")
   writeLines("not motion", "unknown-name.txt")
+  writeLines("a file, not a folder", "a-file")
   writeBin(as.raw(0:255), file.path("allbad", basename(e$gdb_file)))
   writeLines("x", file.path("allbad", "b.txt"))
   write_hust(e$g[1:2], "binman")
@@ -88,6 +90,11 @@ bad_input_cases <- function() {
     list("write_bvh: two files", quote(write_bvh(g, c("a.bvh", "b.bvh"))), "bad_input"),
     list("write_bvh: recording out of range", quote(write_bvh(g, "a.bvh", recording = 99)), "bad_input"),
     list("write_skeleton: not a skeleton", quote(write_skeleton("x", "s.xmlskel")), "bad_input"),
+    list("write_skeleton: a folder for the file", quote(write_skeleton(hand_skeleton(), "empty")), "unwritable_file"),
+    list("write_bvh: a folder for the file", quote(write_bvh(g, "empty")), "unwritable_file"),
+    list("write_bvh: a missing folder", quote(write_bvh(g, file.path("no", "such", "a.bvh"))), "unwritable_file"),
+    list("write_hust: a file for the folder", quote(write_hust(g, "a-file")), "unwritable_file"),
+    list("read_failures: a number", quote(read_failures(42)), "bad_input"),
     # --- constructors
     list("grasps: NaN value", quote(grasps(list(matrix(c(1, NaN, 3, 4), 2)), dofs = c("a", "b"))), "bad_recording"),
     list("grasps: infinite values", quote(grasps(list(matrix(Inf, 2, 2)), dofs = c("a", "b"))), "bad_recording"),
@@ -125,6 +132,16 @@ bad_input_cases <- function() {
     list("fit_weighted_fpca: misspelt time", quote(fit_weighted_fpca(g, time = "middle")), "bad_input"),
     list("fit_weighted_fpca: not grasps", quote(fit_weighted_fpca("x")), "bad_input"),
     list("fit_last_frame_pca: k = 0", quote(fit_last_frame_pca(g, k = 0)), "bad_input"),
+    list("fit_last_frame_pca: unknown type", quote(fit_last_frame_pca(g, grasps = "No Such Grasp")), "unknown_grasp"),
+    list("fit_frame_pca_model: d = 0", quote(fit_frame_pca_model(g, d = 0)), "bad_input"),
+    list("evaluate_loso: seed as text", quote(evaluate_loso(g, seed = "a")), "bad_input"),
+    list("evaluate_loso: NA in_sample", quote(evaluate_loso(g, in_sample = NA)), "bad_input"),
+    list("evaluate_loso: fit_args as text", quote(evaluate_loso(g, fit_args = "ncomp")), "bad_input"),
+    list("evaluate_loso: unknown subject", quote(evaluate_loso(g, subjects = "S99")), "bad_input"),
+    list("evaluate_generation: zero reps", quote(evaluate_generation(ms, g, g, reps = 0)), "bad_input"),
+    list("calibration_report: one fold", quote(calibration_report(g, models = ms, folds = 1)), "bad_input"),
+    list("search_markers: negative max_frames", quote(search_markers(g, n = 2, max_frames = -5)), "bad_input"),
+    list("search_markers: unknown holdout column", quote(search_markers(g, n = 2, holdout = "colour")), "bad_input"),
     list("fit_handover: zero ridge", quote(fit_handover(g, markers = 3, ridge = 0)), "bad_input"),
     list("fit_handover: unknown marker", quote(fit_handover(g, markers = c("index_tip", "foo"))), "bad_markers"),
     list("fit_handover: more markers than there are", quote(fit_handover(g, markers = 14)), "bad_markers"),
@@ -151,6 +168,10 @@ bad_input_cases <- function() {
     list("classify: unknown argument", quote(classify(ms, g, foo = 1)), "bad_input"),
     list("classify: text for models", quote(classify("x", g)), "bad_input"),
     list("predict: a number for newdata", quote(predict(clf, 42)), "bad_input"),
+    list("predict: an unnamed matrix for a last-frame model", quote(predict(lf, matrix(1, 2, 16))), "bad_input"),
+    list("project: unknown argument", quote(project(ms, g, foo = 1)), "bad_input"),
+    list("as_grasp_confusion: text", quote(as_grasp_confusion("x")), "bad_input"),
+    list("distance_table: text", quote(distance_table("x")), "bad_input"),
     list("project: text for recordings", quote(project(m, "x")), "bad_input"),
     # --- kinematics
     list("forward_kinematics: NaN angles", quote(forward_kinematics(ang * NaN)), "bad_recording"),
@@ -163,6 +184,8 @@ bad_input_cases <- function() {
     list("forward_kinematics: misspelt mode", quote(forward_kinematics(ang, mode = "ful")), "bad_input"),
     list("hand_pose: frame out of range", quote(hand_pose(g, frame = 1e6)), "bad_input"),
     list("markers_from_angles: three unnamed columns", quote(markers_from_angles(matrix(1, 2, 3))), "bad_input"),
+    list("markers_from_angles: NA forearm", quote(markers_from_angles(g, forearm = NA)), "bad_input"),
+    list("forward_kinematics: unknown joint to deactivate", quote(forward_kinematics(g, deactivate = "NoSuchJoint")), "bad_input"),
     list("clamp_to_limits: text", quote(clamp_to_limits(matrix("a", 2, 16, dimnames = list(NULL, hust_dofs$name)))), "bad_input"),
     # --- hand-over
     list("rank_markers: text", quote(rank_markers("a")), "bad_input"),
@@ -189,6 +212,10 @@ bad_input_cases <- function() {
     list("hand_3d: recording out of range", quote(hand_3d(g, recording = 999)), "bad_input"),
     list("hand_3d: misspelt layout", quote(hand_3d(g, layout = "stacked")), "bad_input"),
     list("hand_3d: text", quote(hand_3d("x")), "bad_input"),
+    list("hand_3d: zero rate", quote(hand_3d(g[1], rate = 0)), "bad_input"),
+    list("hand_3d: unknown argument", quote(hand_3d(g[1], foo = 1)), "bad_input"),
+    list("plot_pose_grid: no recordings per group", quote(plot_pose_grid(g, per_group = 0)), "bad_input"),
+    list("plot_frame_counts: negative bins", quote(plot_frame_counts(g, binwidth = -1)), "bad_input"),
     # --- simulation, alignment and the rest
     list("simulate_grasps: factor subjects", quote(simulate_grasps(subjects = factor(3))), "bad_input"),
     list("simulate_grasps: infinite trials", quote(simulate_grasps(trials = Inf)), "bad_input"),
