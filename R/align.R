@@ -106,6 +106,12 @@ dtw_pair_reference <- function(x, template, window) {
 #' reason in `fallback_reason`): each recording is resampled to `L` frames and
 #' its warping function runs linearly from 1 to `n_k`.
 #'
+#' **Degenerate data** is aligned as well as it can be, and said: recordings
+#' of a single frame or holding non-finite values, `window = 0` (only the
+#' diagonal path) and the linear fallback raise one warning of class
+#' `handmotion_warning_degenerate` (see [handmotion_errors]), listed in
+#' `$degenerate_data` and by `print()`.
+#'
 #' Over-long recordings should be removed first (`find_overlong()`). Users
 #' meet the result as a fitted model's `alignment` ([fit_grasp_model()]).
 #'
@@ -137,7 +143,8 @@ dtw_pair_reference <- function(x, template, window) {
 #'   `distance` (DTW cost per kept recording), `max_stall`, `features`,
 #'   `feature_template` (the DBA template in the space DTW compared; with
 #'   `features = "raw"` it equals `template`, otherwise `template` is the mean
-#'   warped recording in data units).
+#'   warped recording in data units), `degenerate_data` (data frame `class`,
+#'   `message`: what of the input was degenerate, see above).
 #' @seealso [autoplot.grasp_alignment()]
 #' @examples
 #' set.seed(1)
@@ -158,7 +165,6 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
   features <- check_choice(features, arg = "features", call = call)
   if (inherits(recordings, "grasps")) recordings <- recordings$recordings
   recs <- align_check_recordings(recordings, call)
-  ids <- names(recs)
   n_frames <- vapply(recs, nrow, integer(1))
   L <- check_whole(target_length, "target_length", allow_null = TRUE, call = call) %||%
     max(1L, as.integer(round(mean(n_frames))))
@@ -167,6 +173,19 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
   overlong_check_mult(max_stall, "max_stall", call)
   window <- check_number(window, "window", min = 0, allow_null = TRUE, call = call)
 
+  al <- align_checked(recs, L, engine, max_iter, tol, max_stall, window, features)
+  # degenerate data (one-frame or non-finite recordings, a zero window, the
+  # linear fallback) is said at the top level, not only deep in the object
+  al$degenerate_data <- alignment_degeneracies(al, recs, window)
+  warn_degenerate(al$degenerate_data, "The alignment rests on degenerate data:")
+  al
+}
+
+# The alignment of checked recordings (align_recordings() without its checks
+# and warnings).
+align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, features) {
+  ids <- names(recs)
+  n_frames <- vapply(recs, nrow, integer(1))
   if (length(recs) < 2L) {
     return(align_linear_fallback(recs, L, engine,
                             reason = "fewer than 2 recordings to align"))
@@ -495,6 +514,11 @@ print.grasp_alignment <- function(x, ...) {
   } else {
     cat(sprintf("  method: LINEAR warping (fallback: %s)\n", x$fallback_reason))
   }
+  # (the linear fallback has its own line above)
+  notes <- x$degenerate_data
+  if (!is.null(notes)) notes <- notes[notes$class != "linear_fallback", , drop = FALSE]
+  dg <- format_degenerate(notes)
+  if (length(dg)) cat(dg, sep = "\n")
   nd <- nrow(x$degenerate)
   if (nd > 0) {
     shown <- utils::head(x$degenerate$id, 5)

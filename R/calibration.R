@@ -14,6 +14,10 @@
 calibration_report <- function(x = NULL, models = NULL, last_frame = NULL, seed = 1,
                                held_out = FALSE, folds = 5) {
   call <- rlang::caller_env()
+  held_out <- check_flag(held_out, "held_out", call = call)
+  # (checked whether or not held_out uses it: a bad value is a mistake either way)
+  folds <- check_whole(folds, "folds", min = 2, call = call)
+  seed <- check_seed(seed, call = call)
   if (is.null(x)) x <- simulate_grasps()
   check_grasps(x, call = call)
   if (is.null(models)) models <- fit_grasp_models(x, seed = seed)

@@ -5,8 +5,9 @@
 # (integers as integer, matrices as double), so call sites read
 #   k <- check_whole(k, "k", max = p, call = call)
 
-# A single whole number in [min, max]; `allow_null` lets NULL through.
-check_whole <- function(x, arg, min = 1, max = Inf, allow_null = FALSE,
+# A single whole number in [min, max]; `allow_null` lets NULL through;
+# `class` is the specific error class (a subclass of bad_input).
+check_whole <- function(x, arg, min = 1, max = Inf, allow_null = FALSE, class = "bad_input",
                         call = rlang::caller_env()) {
   if (is.null(x) && allow_null) return(NULL)
   ok <- is.numeric(x) && length(x) == 1L && is.finite(x) && x == round(x) && x >= min && x <= max
@@ -14,9 +15,9 @@ check_whole <- function(x, arg, min = 1, max = Inf, allow_null = FALSE,
     num <- function(v) format(v, big.mark = ",", scientific = FALSE, trim = TRUE)
     range <- if (is.finite(max)) sprintf("from %s to %s", num(min), num(max))
              else if (min == 1) "positive" else if (min == 0) "non-negative" else sprintf("of at least %s", num(min))
-    what <- if (is.finite(max)) paste("a whole number", range) else paste("one", range, "whole number")
+    what <- if (is.finite(max) || min > 1) paste("a whole number", range) else paste("one", range, "whole number")
     hm_abort("{.arg {arg}} must be {what}, not {describe_value(x)}.",
-             "bad_input", argument = arg, call = call)
+             class, argument = arg, call = call)
   }
   # an integer where R's integers reach (callers index with it), else a whole double
   if (abs(x) <= .Machine$integer.max) as.integer(x) else as.double(x)
@@ -29,8 +30,8 @@ check_number <- function(x, arg, min = -Inf, max = Inf, min_open = FALSE, allow_
   ok <- is.numeric(x) && length(x) == 1L && is.finite(x) && x <= max &&
     (if (min_open) x > min else x >= min)
   if (!ok) {
-    bound <- if (min_open && min == 0) "a positive number"
-             else if (min == 0) "a non-negative number"
+    bound <- if (min_open && min == 0 && !is.finite(max)) "a positive number"
+             else if (min == 0 && !min_open && !is.finite(max)) "a non-negative number"
              else if (is.finite(min) || is.finite(max)) sprintf("a number %s %s%s", if (min_open) ">" else ">=",
                                                                 format(min), if (is.finite(max)) sprintf(" and <= %s", format(max)) else "")
              else "one finite number"
@@ -127,10 +128,27 @@ as_numeric_matrix <- function(x, arg, what = "", finite = TRUE, vector = c("colu
   x
 }
 
+# Arguments passed through `...` to `fun` must be named arguments of `fun`
+# (otherwise R's "unused argument" error would come from deep inside).
+check_dots_for <- function(dots, fun, fun_name, exclude = character(), call = rlang::caller_env()) {
+  if (length(dots) == 0L) return(invisible(dots))
+  nms <- names(dots) %||% rep("", length(dots))
+  unknown <- setdiff(nms, setdiff(names(formals(fun)), c("...", exclude)))
+  if (length(unknown)) {
+    shown <- ifelse(nzchar(unknown), unknown, "<unnamed>")
+    hm_abort(c("{.arg ...} is passed to {.fn {fun_name}}, which has no argument{?s} {.val {shown}}.",
+               i = "Arguments passed on must be named; see {.help [{.fn {fun_name}}](handmotion::{fun_name})}."),
+             "bad_input", argument = "...", call = call)
+  }
+  invisible(dots)
+}
+
 # A short description of an offending value for messages: the value itself
 # when it is one short atom, otherwise its type and length.
 describe_value <- function(x) {
   if (is.null(x)) return("NULL")
+  # (a factor prints its labels: factor(2) would read as the number 2)
+  if (is.factor(x)) return(sprintf("a factor of length %d", length(x)))
   if (is.atomic(x) && length(x) == 1L && is.null(dim(x))) {
     v <- if (is.character(x) && !is.na(x)) sprintf("\"%s\"", x) else format(x)
     if (nchar(v) <= 40) return(v)

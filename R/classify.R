@@ -154,10 +154,12 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
   ids <- x$meta$id
   d <- matrix(NA_real_, length(ids), length(models), dimnames = list(ids, types))
   all_pr <- tryCatch(predict(models, x, details = FALSE), error = function(e) NULL)
+  first_error <- NULL
   for (j in seq_along(models)) {
     pr <- if (!is.null(all_pr)) all_pr[[j]] else
       tryCatch(predict(models[[j]], x, details = FALSE), error = function(e) e)
     if (inherits(pr, "error")) {
+      first_error <- first_error %||% pr
       failures <- rbind(failures, data.frame(model = types[j],
                                              message = cli::ansi_strip(conditionMessage(pr))))
       next
@@ -171,6 +173,9 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
     }
     d[, j] <- dist
   }
+  # no model could take the recordings (other DoFs, a bad recording): the
+  # recordings are at fault, not the models, and there is nothing to return
+  if (!is.null(first_error) && all(is.na(d))) stop(first_error)
   if (nrow(failures) > 0L) {
     hm_warn(c("{nrow(failures)} grasp type{?s} cannot be predicted: {.val {failures$model}}.",
               i = "See {.field failures} of the result."),
@@ -277,8 +282,12 @@ as.data.frame.grasp_classification <- function(x, row.names = NULL, optional = F
 distance_table <- function(models, x = NULL) {
   call <- rlang::caller_env()
   cl <- if (inherits(models, "grasp_classification")) models else {
-    if (is.null(x)) hm_abort("{.arg x} is needed when {.arg models} are models.", "bad_input",
-                             argument = "x", call = call)
+    if (!inherits(models, "grasp_models")) {
+      hm_abort("{.arg models} must be a {.fn classify} result or {.cls grasp_models} from {.fn fit_grasp_models}, not {describe_value(models)}.",
+               "bad_input", argument = "models", call = call)
+    }
+    if (is.null(x)) hm_abort("{.arg x} (the recordings to classify) is needed when {.arg models} are fitted models.",
+                             "bad_input", argument = "x", call = call)
     classify(models, x, method = "fpca")
   }
   d <- cl$distances

@@ -22,7 +22,10 @@
 #'   Specific classes: `empty_file`, `bad_field_count`, `truncated_line`,
 #'   `non_numeric`, `bad_value`, `unknown_header`, `unknown_file_name`,
 #'   `file_not_found`, `missing_file`, `not_in_manifest`, `bad_manifest`,
-#'   `no_files`, `file_exists`, `no_switch`, `no_segments`, and `bad_skeleton`
+#'   `no_files`, `file_exists`, `no_switch`, `no_segments`, `unreadable_file`
+#'   (a folder, a broken link or no read permission), `not_text` (a binary
+#'   file), `unwritable_file` (a path a writer cannot write), and
+#'   `bad_skeleton`
 #'   raised while reading an `.xmlskel` file.
 #' * `handmotion_error_fit_failed`: data that cannot be fitted.
 #'   Specific classes: `too_few_recordings`, `reference_too_small`,
@@ -31,10 +34,27 @@
 #' * `handmotion_error_missing_dependency`: a suggested package that a
 #'   function needs is not installed (no family).
 #'
-#' All specific classes are prefixed with `handmotion_error_`. Warnings follow
-#' the same scheme under `handmotion_warning`. From Python the families are
-#' `BadInputError`, `BadFileError` and `FitFailedError`, all subclasses of
-#' `HandmotionError`.
+#' All specific classes are prefixed with `handmotion_error_`.
+#'
+#' **Warnings** follow the same scheme under `handmotion_warning`. The family
+#' `handmotion_warning_degenerate` marks data a function accepted with a
+#' fallback (the result is usable and its `print()` says what happened) but
+#' that is almost certainly not what was meant; its specific classes are
+#' `one_frame` (recordings of a single frame), `identical_recordings` (the
+#' recordings do not vary), `constant_dofs` (some DoFs do not vary),
+#' `rank_deficient` (more components than the rank of the data),
+#' `small_mixture` (too few recordings for the mixture's `k` components),
+#' `linear_fallback` (dynamic time warping failed and linear warping was
+#' used), `non_finite` (recordings holding `NaN` or infinite values) and
+#' `zero_window` (a DTW window that leaves only the diagonal path). One
+#' warning carries every class that applies, and the rows in its field
+#' `degenerate_data` (`class`, `message`). Other warnings: `read_failures`
+#' (files a directory read skipped), `note` and `deprecated`.
+#'
+#' From Python the error families are `BadInputError`, `BadFileError` and
+#' `FitFailedError`, all subclasses of `HandmotionError`; warnings arrive as
+#' `HandmotionWarning` (`DegenerateDataWarning` for the degenerate family),
+#' carrying the R class vector in `r_class`.
 #'
 #' @name handmotion_errors
 #' @examples
@@ -53,6 +73,7 @@ error_families <- c(
   file_not_found = "bad_file", missing_file = "bad_file",
   not_in_manifest = "bad_file", bad_manifest = "bad_file", no_files = "bad_file",
   file_exists = "bad_file", no_switch = "bad_file", no_segments = "bad_file",
+  unreadable_file = "bad_file", not_text = "bad_file", unwritable_file = "bad_file",
   fit_failed = "fit_failed", too_few_recordings = "fit_failed",
   reference_too_small = "fit_failed", model_failed = "fit_failed",
   missing_dependency = NA_character_
@@ -84,10 +105,22 @@ hm_abort <- function(message, class = "bad_input", ..., call = rlang::caller_env
   cli::cli_abort(message, class = error_classes(class), ..., call = call, .envir = .envir)
 }
 
+# Specific warning class -> family, as error_families does for errors. A
+# class not listed has no family.
+warning_families <- c(
+  one_frame = "degenerate", identical_recordings = "degenerate", constant_dofs = "degenerate",
+  rank_deficient = "degenerate", small_mixture = "degenerate", linear_fallback = "degenerate",
+  non_finite = "degenerate", zero_window = "degenerate"
+)
+
+# The class vector of a handmotion warning: specific classes, family, root.
+warning_classes <- function(class) {
+  family <- unname(warning_families[class[class %in% names(warning_families)]])
+  c(paste0("handmotion_warning_", unique(c(class, family))), "handmotion_warning")
+}
+
 #' Warn with a classed handmotion warning
 #' @noRd
 hm_warn <- function(message, class = "note", ..., .envir = parent.frame()) {
-  cli::cli_warn(message,
-                class = c(paste0("handmotion_warning_", class), "handmotion_warning"),
-                ..., .envir = .envir)
+  cli::cli_warn(message, class = warning_classes(class), ..., .envir = .envir)
 }

@@ -70,6 +70,8 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   method <- check_choice(method, arg = "method", call = call)
+  in_sample <- check_flag(in_sample, "in_sample", call = call)
+  seed <- check_seed(seed, call = call)
   # future.seed switches the session to L'Ecuyer-CMRG; give the caller back
   # the RNG kind and stream they had.
   old_rng <- save_rng()

@@ -82,7 +82,7 @@ generics::generate
 #' @param chunk With `callback`, the number of grasps per chunk (per type).
 #' @param callback Optional function `(chunk, i)` called with each chunk (see
 #'   Streaming); its return values are discarded.
-#' @param ... Unused.
+#' @param ... Unused; any argument given here is an error (a misspelt name).
 #' @return A [grasps()] object with metadata `grasp` = the type, `subject` =
 #'   `NA`, `source` = `"generated"`, ids `"gen1"`, `"gen2"`, ... and the warp
 #'   score in column `warp_score`. The sampled FPC scores are attached as
@@ -97,6 +97,8 @@ generics::generate
 #' new
 generate.grasp_model <- function(x, n = 1, seed = NULL, warp = TRUE, limits = NULL, chunk = 10000,
                                  callback = NULL, ...) {
+  # (a misspelt argument would vanish into `...` without a word)
+  check_dots_for(list(...), generate.grasp_model, "generate", call = rlang::caller_env())
   generate_models(list(x), n, seed, warp, limits, chunk, callback, call = rlang::caller_env())
 }
 
@@ -105,6 +107,7 @@ generate.grasp_model <- function(x, n = 1, seed = NULL, warp = TRUE, limits = NU
 generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = NULL, warp = TRUE,
                                   limits = NULL, chunk = 10000, callback = NULL, ...) {
   call <- rlang::caller_env()
+  check_dots_for(list(...), generate.grasp_models, "generate", call = call)
   generate_models(select_models(x, grasp, call), n, seed, warp, limits, chunk, callback, call = call)
 }
 
@@ -117,6 +120,7 @@ generate_models <- function(models, n, seed, warp, limits, chunk, callback, call
   warp <- check_flag(warp, "warp", call = call)
   if (!is.null(limits)) limits <- check_flag(limits, "limits", call = call)
   seed <- check_seed(seed, call = call)
+  chunk <- check_whole(chunk, "chunk", max = max_grasps_per_call, call = call)
   for (m in models) validate_sampler(m, call)
   draw <- function(m, n) draw_batch(m, n, warp = warp, limits = limits, call = call)
   if (!streaming) {
@@ -126,7 +130,6 @@ generate_models <- function(models, n, seed, warp, limits, chunk, callback, call
     hm_abort("{.arg callback} must be a function of a chunk and its number.", "bad_input",
              argument = "callback", call = call)
   }
-  chunk <- check_whole(chunk, "chunk", max = max_grasps_per_call, call = call)
   sizes <- c(rep(chunk, n %/% chunk), if (n %% chunk) n %% chunk)
   with_seed(seed, {
     done <- 0

@@ -75,7 +75,7 @@ new_grasp_classifier <- function(fit, at, dofs, rate, prior, levels) {
 # Fractions of the motion: finite numbers in [0, 1], sorted, no duplicates.
 check_fractions <- function(at, arg, call = rlang::caller_env()) {
   if (!is.numeric(at) || !length(at) || anyNA(at) || any(at < 0 | at > 1)) {
-    hm_abort("{.arg {arg}} must be fractions of the motion: numbers in [0, 1].", "bad_input",
+    hm_abort("{.arg {arg}} must be fractions of the motion: numbers in [0, 1], not {describe_value(at)}.", "bad_input",
              argument = arg, call = call)
   }
   sort(unique(as.numeric(at)))

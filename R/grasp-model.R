@@ -48,6 +48,13 @@
 #' at zero, and the DoF is listed in `fallbacks`. The same holds for warping
 #' functions that do not vary (all recordings of one length, linear warps).
 #'
+#' **Degenerate data** is fitted with these fallbacks, and said: one-frame or
+#' identical recordings, constant DoFs, more FPCs than the rank of the
+#' curves, mixtures with more components than the recordings can carry and
+#' the linear fallback of the alignment raise one warning of class
+#' `handmotion_warning_degenerate` (see [handmotion_errors]), are listed in
+#' `$degenerate_data` and shown by `print()`.
+#'
 #' **Defaults.** Arguments left `NULL` take the defaults of the chosen
 #' `dependence`:
 #'
@@ -136,9 +143,10 @@
 #'   `keep_data`, `alignment` (a `grasp_alignment`: `warped` array n x L x p,
 #'   `warps` n x L, `n_frames`, `degenerate`, `method`, ...),
 #'   `dependence` (`type` and, for the copula, `copula`: its score columns,
-#'   correlation `cor`, `shrinkage` and tabulated marginal quantiles) and
+#'   correlation `cor`, `shrinkage` and tabulated marginal quantiles),
 #'   `limits` (the joint limits per DoF, the share of recorded frames outside
-#'   them, and whether generation enforces them).
+#'   them, and whether generation enforces them) and `degenerate_data`
+#'   (data frame `class`, `message`; see Degenerate data).
 #' @seealso [fit_grasp_models()] for every type at once, [generate()] and
 #'   [predict.grasp_model()] to project recordings onto a model, [autoplot.grasp_model()] to look at it.
 #' @export
@@ -169,12 +177,22 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
                                 arg = "mixture_guard", call = call)
   fpc_scores <- check_choice(fpc_scores %||% def$fpc_scores, c("trapezoid", "least_squares"),
                              arg = "fpc_scores", call = call)
+  max_stall <- check_number(max_stall, "max_stall", min = 0, max = 1, min_open = TRUE, call = call)
+  keep_data <- check_flag(keep_data, "keep_data", call = call)
+  if (!inherits(overlong, "overlong_rule")) {
+    hm_abort("{.arg overlong} must be made by {.fn overlong_rule}, not {describe_value(overlong)}.",
+             "bad_input", argument = "overlong", call = call)
+  }
   x <- select_one_type(x, grasp, call)
+  check_grasps_finite(x, call = call)
   settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
                    k = as.integer(k), overlong = as_overlong_rule(overlong, call = call), warping = warping, max_stall = max_stall,
                    keep_data = keep_data, gmm_max_iter = gmm_model_max_iter,
                    dependence = dependence, mixture_guard = mixture_guard, fpc_scores = fpc_scores)
-  with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))
+  model <- with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))
+  warn_degenerate(model$degenerate_data,
+                  sprintf("The model of grasp type \"%s\" rests on degenerate data:", model$grasp))
+  model
 }
 
 # The settings each model takes when its arguments are left NULL. The
@@ -278,6 +296,10 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
     timing = c(align = t_align - t0, fpca = t_fpca - t_align, gmm = t_gmm - t_fpca,
                total = t_gmm - t0),
     limits = recorded_limits(x[prep$ids], dofs),
+    # what of the input was degenerate (said at the top level by the caller)
+    degenerate_data = model_degeneracies(list(fallbacks = fallbacks, dofs = dofs, settings = settings,
+                                              warp = list(constant = isTRUE(warp_fit$constant))),
+                                         x$meta$n_frames),
     # the alignment as the aligner returned it (warped curves, warping
     # functions, frame counts, degenerate warps): the model's data, kept once
     alignment = if (isTRUE(settings$keep_data)) aln
@@ -295,7 +317,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
 # mixtures they come from.
 new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, argvals, n_input, n_used,
                             ids, removed, warping, fpca, gmm, warp, fallbacks, settings, engine, timing,
-                            limits, alignment = NULL) {
+                            limits, alignment = NULL, degenerate_data = empty_degenerate_notes()) {
   q <- settings$ncomp
   labels <- paste0("FPC", seq_len(q))
   scores <- array(0, c(n_used, length(dofs), q), dimnames = list(ids, dofs, labels))
@@ -312,6 +334,7 @@ new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, ar
   model$dependence <- list(type = settings$dependence,
                            copula = if (settings$dependence == "copula") fit_score_copula(model))
   model$limits <- limits
+  model$degenerate_data <- degenerate_data
   model$alignment <- alignment
   validate_grasp_model(structure(model, class = "grasp_model"))
 }
@@ -333,7 +356,7 @@ validate_grasp_model <- function(x) {
     has_dim(x$basis$mean, c(L, p)), has_dim(x$basis$components, c(L, p, q)),
     has_dim(x$scores, c(n, p, q)), has_dim(x$var_explained, c(p, q)),
     nrow(x$warp$components) == L, nrow(x$warp$scores) == n,
-    is.data.frame(x$removed), is.data.frame(x$fallbacks),
+    is.data.frame(x$removed), is.data.frame(x$fallbacks), is.data.frame(x$degenerate_data),
     x$dependence$type %in% c("independent", "copula"),
     is.null(x$alignment) || (inherits(x$alignment, "grasp_alignment") && dim(x$alignment$warped)[1] == n)
   )
@@ -367,8 +390,11 @@ prepare_alignment <- function(x, settings, engines, call) {
   if (identical(settings$warping, "linear")) {
     aln <- align_linear_fallback(recs, L, engines$align, reason = "requested")
   } else {
+    # (the model records degenerate data itself, see model_degeneracies())
     aln <- tryCatch(
-      align_recordings(recs, target_length = L, engine = engines$align, max_stall = settings$max_stall),
+      withCallingHandlers(
+        align_recordings(recs, target_length = L, engine = engines$align, max_stall = settings$max_stall),
+        handmotion_warning_degenerate = function(w) invokeRestart("muffleWarning")),
       error = function(e) e
     )
     if (inherits(aln, "error")) {
@@ -606,6 +632,8 @@ print.grasp_model <- function(x, ...) {
                 max(ve, na.rm = TRUE)))
   }
   cat("  ", format_dependence(x), "\n", sep = "")
+  dg <- format_degenerate(x$degenerate_data)
+  if (length(dg)) cat(dg, sep = "\n")
   if (nrow(x$fallbacks) == 0L) {
     cat("  fallbacks: none\n")
   } else {

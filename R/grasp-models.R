@@ -16,7 +16,8 @@
 #' model in a fable, instead of stopping the others: `print()` and `summary()`
 #' list it, [generate()] and [classify()] skip it (saying so), and asking for
 #' it by name (`generate(ms, grasp = )`) is an error of class
-#' `handmotion_error_model_failed`.
+#' `handmotion_error_model_failed`. A bad argument or recording
+#' (`handmotion_error_bad_input`) stops the call.
 #'
 #' **Clusters and schedulers.** Any future plan works unchanged and gives the
 #' same models for the same seed (tested under sequential, multicore,
@@ -110,14 +111,39 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
   }
   # a failed type stays in the set, as a record of why
   failed <- vapply(fits, inherits, logical(1), what = "error")
+  # a bad argument or recording is the caller's to fix, not a type that could
+  # not be fitted: raise it (with ncomp = 0 every type "failed" and an empty
+  # set came back without an error)
+  bad_input <- which(vapply(fits, inherits, logical(1), what = "handmotion_error_bad_input"))
+  if (length(bad_input)) stop(fits[[bad_input[1]]])
   fits[failed] <- mapply(new_grasp_model_failed, types[failed], fits[failed], SIMPLIFY = FALSE)
-  new_grasp_models(fits, seed = seed)
+  out <- new_grasp_models(fits, seed = seed)
+  dg <- models_degeneracies(out)
+  n_dg <- length(unique(sub(": .*", "", dg$message)))
+  warn_degenerate(dg, sprintf("%d of the %d grasp type models rest%s on degenerate data:", n_dg,
+                              length(fitted_models(out)), if (n_dg == 1L) "s" else ""))
+  out
+}
+
+# The degenerate data of every fitted model of a set, one row per model and
+# class, the message prefixed by the grasp type.
+models_degeneracies <- function(models) {
+  rows <- lapply(unclass(fitted_models(models)), function(m) {
+    d <- m$degenerate_data
+    if (is.null(d) || nrow(d) == 0L) return(NULL)
+    d$message <- paste0(m$grasp, ": ", d$message)
+    d
+  })
+  do.call(rbind, c(list(empty_degenerate_notes()), rows))
 }
 
 # One type's fit for a worker. A top-level function, so the closure shipped to
 # workers does not drag the caller's frame (the whole data set) along.
 fit_one_type <- function(part, save_to, args, progress) {
-  res <- tryCatch(do.call(fit_grasp_model, c(list(part), args)),
+  # (degenerate data is recorded in each model and said once for the set by
+  # fit_grasp_models(), not once per type)
+  res <- tryCatch(withCallingHandlers(do.call(fit_grasp_model, c(list(part), args)),
+                                      handmotion_warning_degenerate = function(w) invokeRestart("muffleWarning")),
                   handmotion_error = function(e) e)
   # saved at once (not after the whole set), so an interrupted fit keeps it;
   # written to a temporary name first so a half-written file never loads
@@ -228,6 +254,10 @@ select_models <- function(x, grasp, call) {
     }
     return(fitted_models(x))
   }
+  if (length(grasp) == 0L) {
+    hm_abort("{.arg grasp} must name at least one grasp type (or be {.code NULL} for all).",
+             "bad_input", argument = "grasp", call = call)
+  }
   keep <- as.character(as_feix_grasp(grasp, call = call))
   absent <- setdiff(keep, names(x))
   if (length(absent)) {
@@ -256,12 +286,21 @@ print.grasp_models <- function(x, ...) {
                 sum(s$warping == "linear"), if (sum(s$warping == "linear") == 1) "" else "s",
                 sum(s$n_em_fallback), if (sum(s$n_em_fallback) == 1) "" else "s",
                 sum(s$n_em_fallback > 0), if (sum(s$n_em_fallback > 0) == 1) "" else "s"))
-    cat(sprintf("  variance explained by the FPCs per DoF: min %.1f%%, mean %.1f%%\n",
-                min(s$min_var, na.rm = TRUE), mean(s$mean_var, na.rm = TRUE)))
+    # (models whose DoFs are all constant have no variance to explain)
+    if (any(is.finite(s$min_var))) {
+      cat(sprintf("  variance explained by the FPCs per DoF: min %.1f%%, mean %.1f%%\n",
+                  min(s$min_var, na.rm = TRUE), mean(s$mean_var, na.rm = TRUE)))
+    }
     dep <- table(s$dependence)
     cat(sprintf("  dependence: %s; mixtures replaced by one Gaussian by the guard: %d\n",
                 paste0(names(dep), " (", dep, " type", ifelse(dep == 1, "", "s"), ")", collapse = ", "),
                 sum(s$n_guarded)))
+  }
+  dg <- models_degeneracies(x)
+  if (nrow(dg)) {
+    types <- unique(sub(": .*", "", dg$message))
+    cat(sprintf("  degenerate data in %d type%s: %s (see each model's print())\n", length(types),
+                if (length(types) == 1L) "" else "s", name_list(types, 5L)))
   }
   if (nrow(f)) cat(sprintf("  failed: %s\n", paste0(f$grasp, " (", f$message, ")", collapse = "; ")))
   invisible(x)

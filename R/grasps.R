@@ -66,7 +66,7 @@ grasps <- function(recordings, meta = NULL, dofs = NULL, rate = 50, unit = "deg"
     } else {
       bad <- which(is.na(ids) | ids == "")
       hm_abort(c("Recording id{?s} {from} must not be missing or empty.",
-                 x = "Missing at position{?s} {bad}."),
+                 x = "Missing at position{cli::qty(length(bad))}{?s} {bad}."),
                "bad_input", argument = if (from == "meta$id") "meta" else "recordings", call = call)
     }
   }
@@ -101,7 +101,7 @@ new_grasps <- function(recordings, meta, dofs, rate, unit, n_frames = NULL) {
 
 check_rate <- function(rate, call = rlang::caller_env()) {
   if (!is.numeric(rate) || length(rate) != 1L || !is.finite(rate) || rate <= 0) {
-    hm_abort("{.arg rate} must be one positive number of frames per second, not {.val {format(rate)}}.",
+    hm_abort("{.arg rate} must be one positive number of frames per second, not {describe_value(rate)}.",
              "bad_input", argument = "rate", call = call)
   }
   invisible(rate)
@@ -165,7 +165,7 @@ resolve_dofs <- function(dofs, recordings, call = rlang::caller_env()) {
     dofs <- if (p == nrow(handmotion::hust_dofs)) handmotion::hust_dofs$name else paste0("dof", seq_len(p))
   }
   if (!is.character(dofs) || anyNA(dofs) || anyDuplicated(dofs)) {
-    hm_abort("{.arg dofs} must be unique, non-missing names.", "bad_input",
+    hm_abort("{.arg dofs} must be unique, non-missing names, not {describe_value(dofs)}.", "bad_input",
              argument = "dofs", call = call)
   }
   dofs
@@ -231,7 +231,7 @@ as_feix_grasp <- function(x, ids = NULL, call = rlang::caller_env()) {
     # character, so cli pluralises on its length rather than reading a number as a count
     where <- as.character(if (!is.null(ids)) ids[bad] else which(bad))
     hm_abort(c("Unknown grasp type{?s} {.val {unique(as.character(x[bad]))}}.",
-               i = "In recording{?s} {.val {where}}.",
+               i = if (!is.null(ids)) "In recording{?s} {.val {where}}." else "At position{?s} {.val {where}}.",
                i = "Use a Feix type name (see {.code feix_taxonomy$name}) or an id from 1 to 33."),
              "unknown_grasp", recording = where, call = call)
   }
@@ -263,6 +263,21 @@ check_grasps <- function(x, arg = "x", call = rlang::caller_env()) {
   if (!inherits(x, "grasps")) {
     hm_abort("{.arg {arg}} must be a {.cls grasps} object, not {.obj_type_friendly {x}}.",
              "bad_input", argument = arg, call = call)
+  }
+  invisible(x)
+}
+
+# Every value of every recording finite (a grasps object edited after
+# grasps() may hold NaN, which a fit would take for a constant DoF), else a
+# classed error naming the recording, frame and DoF.
+check_grasps_finite <- function(x, arg = "x", call = rlang::caller_env()) {
+  ok <- vapply(x$recordings, function(r) all(is.finite(r)), logical(1))
+  if (!all(ok)) {
+    i <- which(!ok)[1]
+    bad <- which(!is.finite(x$recordings[[i]]), arr.ind = TRUE)
+    hm_abort(c("{.arg {arg}} has {sum(!ok)} recording{?s} with missing or infinite values.",
+               x = "First: recording {.val {x$meta$id[i]}}, frame {bad[1, 1]}, DoF {.val {x$dofs[bad[1, 2]]}}."),
+             "bad_recording", argument = arg, recording = x$meta$id[i], call = call)
   }
   invisible(x)
 }

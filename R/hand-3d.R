@@ -68,7 +68,7 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
   check_flag(loop, "loop", call = call)
   speeds <- c(0.1, 0.25, 0.5, 1, 2)
   if (!is.numeric(speed) || length(speed) != 1L || !speed %in% speeds) {
-    hm_abort("{.arg speed} must be one of {.val {speeds}}, not {.val {format(speed)}}.", "bad_input",
+    hm_abort("{.arg speed} must be one of {.val {speeds}}, not {describe_value(speed)}.", "bad_input",
              argument = "speed", call = call)
   }
   bg <- if (is.character(background) && length(background) == 1L) {
@@ -79,6 +79,9 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
              argument = "background", call = call)
   }
   background <- grDevices::rgb(t(bg), maxColorValue = 255)  # R names ("grey90") are not CSS colours
+  rate <- check_number(rate, "rate", min = 0, min_open = TRUE, allow_null = TRUE, call = call)
+  check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton"),
+                 call = call)
   hands <- hand_3d_inputs(x, recording, rate, call)
   if (length(hands) > hand_3d_max) {
     hm_abort(c("{length(hands)} hands are too many to show at once; at most {hand_3d_max}.",
@@ -175,7 +178,7 @@ hand_3d_inputs <- function(x, recording, rate, call) {
 resolve_recordings <- function(g, pick, call) {
   idx <- if (is.character(pick)) match(pick, g$meta$id) else pick
   if (!is.numeric(idx) || !length(idx) || anyNA(idx) || any(idx < 1 | idx > length(g) | idx != round(idx))) {
-    hm_abort("{.arg recording} must pick recordings of {.arg x} by index (1 to {length(g)}) or id.",
+    hm_abort("{.arg recording} must pick recordings of {.arg x} by index (1 to {length(g)}) or id, not {describe_value(pick)}.",
              "bad_input", argument = "recording", call = call)
   }
   as.integer(idx)

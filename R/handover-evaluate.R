@@ -11,6 +11,12 @@ search_markers <- function(reference, n = 6, holdout = "grasp", exhaustive = FAL
                            skeleton = hand_skeleton(), ..., call = rlang::caller_env()) {
   check_grasps(reference, "x", call = call)
   cand <- hand_marker_set()$marker[hand_marker_set()$segment == "hand"]
+  if (!is.numeric(n) || length(n) != 1L || is.na(n) || n < 1 || n > length(cand) || n != round(n)) {
+    hm_abort("{.arg n} must be a whole number from 1 to {length(cand)}, not {.val {format(n)}}.",
+             "bad_markers", argument = "n", call = call)
+  }
+  max_frames <- check_whole(max_frames, "max_frames", call = call)
+  seed <- check_seed(seed, call = call)
   if (!holdout %in% names(reference$meta)) {
     hm_abort("{.arg holdout} must name a metadata column ({.val {names(reference$meta)}}), not {.val {holdout}}.",
              "bad_input", argument = "holdout", call = call)
@@ -112,10 +118,16 @@ handover_error <- function(truth, recon = NULL, by = c("overall", "recording", "
              argument = "recon", call = call)
   }
   check_grasps(recon, "recon", call = call)
-  if (!identical(truth$meta$id, recon$meta$id) || !identical(truth$meta$n_frames, recon$meta$n_frames) ||
-      !identical(truth$dofs, recon$dofs)) {
+  differ <- if (!identical(truth$dofs, recon$dofs)) {
+    "DoFs differ: {.val {utils::head(setdiff(union(truth$dofs, recon$dofs), intersect(truth$dofs, recon$dofs)), 3)}}, or their order."
+  } else if (!identical(truth$meta$id, recon$meta$id)) {
+    "recording ids differ ({length(truth)} in {.arg truth}, {length(recon)} in {.arg recon}); first: {.val {c(setdiff(truth$meta$id, recon$meta$id), setdiff(recon$meta$id, truth$meta$id), truth$meta$id)[1]}}."
+  } else if (!identical(truth$meta$n_frames, recon$meta$n_frames)) {
+    "frame counts differ, first in recording {.val {truth$meta$id[which(truth$meta$n_frames != recon$meta$n_frames)[1]]}}."
+  }
+  if (!is.null(differ)) {
     hm_abort(c("{.arg truth} and {.arg recon} must hold the same recordings, frame counts and DoFs.",
-               i = "Compare a query with {.code reconstruct(model, query)}."),
+               x = differ, i = "Compare a query with {.code reconstruct(model, query)}."),
              "bad_input", argument = "recon", call = call)
   }
   if (!identical(truth$unit, recon$unit)) {

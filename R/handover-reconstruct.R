@@ -45,14 +45,17 @@ reconstruct.handover_model <- function(model, query, ...) {
   cols <- marker_columns(model$markers)
   if (inherits(query, "grasps")) {
     if (!identical(query$dofs, model$dofs)) {
-      hm_abort("The query's DoFs ({.val {query$dofs}}) differ from the model's ({.val {model$dofs}}).",
+      first <- which(rep_len(query$dofs, length(model$dofs)) != model$dofs)[1]
+      hm_abort(c("The DoFs of {.arg query} differ from the model's.",
+                 x = if (length(query$dofs) != length(model$dofs)) "{.arg query} has {length(query$dofs)} DoFs, the model {length(model$dofs)}."
+                     else "DoF {first} is {.val {query$dofs[first]}}, the model's {.val {model$dofs[first]}}."),
                "bad_input", argument = "query", call = call)
     }
     mk <- do.call(markers_from_angles, c(list(query, skeleton = model$skeleton, markers = model$markers),
                                          model$fk_args))
     meta <- query$meta
   } else {
-    if (is.matrix(query)) query <- list(query)
+    if (is.matrix(query) || is.data.frame(query)) query <- list(query)
     if (!is.list(query) || length(query) == 0L) {
       hm_abort("{.arg query} must be a grasps object, a marker matrix or a list of marker matrices, not {.obj_type_friendly {query}}.",
                "bad_input", argument = "query", call = call)
@@ -77,6 +80,13 @@ reconstruct.handover_model <- function(model, query, ...) {
 }
 
 #' @rdname reconstruct
+#' @export
+reconstruct.default <- function(model, query, ...) {
+  hm_abort("{.arg model} must be a {.cls handover_model} from {.fn fit_handover}, not {describe_value(model)}.",
+           "bad_input", argument = "model", call = rlang::caller_env())
+}
+
+#' @rdname reconstruct
 #' @param object A `handover_model`.
 #' @param newdata The query, as `query` in `reconstruct()`.
 #' @export
@@ -86,30 +96,33 @@ predict.handover_model <- function(object, newdata, ...) reconstruct(object, new
 as_query_markers <- function(m, cols, i, call) {
   if (is.data.frame(m)) m <- as.matrix(m)
   if (!is.matrix(m) || !is.numeric(m)) {
-    hm_abort("Query {i} must be a numeric frames x (3 * markers) matrix, not {.obj_type_friendly {m}}.",
+    hm_abort("{.arg query[[{i}]]} must be a numeric frames x (3 * markers) matrix, not {.obj_type_friendly {m}}.",
              "bad_markers", argument = "query", recording = i, call = call)
   }
   if (!is.null(colnames(m))) {
     miss <- setdiff(cols, colnames(m))
     if (length(miss)) {
-      hm_abort(c("Query {i} lacks marker column{?s} {.val {miss}}.",
+      hm_abort(c("{.arg query[[{i}]]} lacks marker column{?s} {.val {miss}}.",
                  i = "The model was fitted on markers {.val {sub('\\\\.x$', '', cols[c(TRUE, FALSE, FALSE)])}}."),
-               "bad_markers", argument = "query", recording = i, call = call)
+               "bad_markers", argument = "query", recording = i, column = miss, call = call)
     }
     m <- m[, cols, drop = FALSE]
   } else {
     # unnamed columns cannot be checked: in another order than the model's
     # they would give a plausible but wrong hand
-    hm_abort(c("Query {i} has unnamed columns; name them {.val {utils::head(cols, 3)}}, ... (x, y, z per marker).",
+    hm_abort(c("{.arg query[[{i}]]} has unnamed columns; name them {.val {utils::head(cols, 3)}}, ... (x, y, z per marker).",
                i = "{.fn markers_from_angles} returns named marker columns."),
              "bad_markers", argument = "query", recording = i, call = call)
   }
   if (nrow(m) == 0L) {
-    hm_abort("Query {i} has no frames.", "bad_markers", argument = "query", recording = i, call = call)
+    hm_abort("{.arg query[[{i}]]} has no frames.", "bad_markers", argument = "query", recording = i, call = call)
   }
-  if (any(is.infinite(m))) {
-    hm_abort("Query {i} has infinite marker coordinates.", "bad_markers",
-             argument = "query", recording = i, call = call)
+  inf <- which(is.infinite(m), arr.ind = TRUE)
+  if (nrow(inf)) {
+    hm_abort(c("{.arg query[[{i}]]} has {nrow(inf)} infinite marker coordinate{?s}.",
+               x = "First in column {.val {colnames(m)[inf[1, 2]]}}, frame {inf[1, 1]}."),
+             "bad_markers", argument = "query", recording = i, column = colnames(m)[inf[1, 2]],
+             line = inf[1, 1], call = call)
   }
   storage.mode(m) <- "double"
   m

@@ -73,15 +73,19 @@ fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth =
   call <- rlang::caller_env()
   method <- check_choice(method, arg = "method", call = rlang::current_env())
   check_grasps(reference, "reference", call = call)
+  check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton"),
+                 call = call)
   all_markers <- markers_from_angles(reference, skeleton = skeleton, ...)
   ref_all <- do.call(rbind, all_markers)
   if (is.numeric(markers) && length(markers) == 1L) {
-    markers <- select_markers(rank_markers(ref_all), markers)
+    n_hand <- sum(hand_marker_set()$segment == "hand")
+    markers <- select_markers(rank_markers(ref_all),
+                              check_whole(markers, "markers", max = n_hand, class = "bad_markers", call = call))
   }
   check_marker_names(markers, call = call)
   hand <- hand_marker_set()$marker[hand_marker_set()$segment == "hand"]
   if (!all(markers %in% hand)) {
-    hm_abort(c("Marker{?s} {.val {setdiff(markers, hand)}} ride{?s/} on the root link and {?is/are} constant there.",
+    hm_abort(c("{.arg markers}: marker{?s} {.val {setdiff(markers, hand)}} ride{?s/} on the root link and {?is/are} constant there.",
                i = "Use hand markers for hand-over."), "bad_markers", argument = "markers", call = call)
   }
   ridge <- check_number(ridge, "ridge", min = 0, min_open = TRUE, call = call)
@@ -114,16 +118,12 @@ handover_build <- function(ref_all, ref_y, markers, ncomp = NULL, k = 256, smoot
              "reference_too_small", argument = "reference", call = call)
   }
   ncomp <- check_whole(ncomp, "ncomp", max = p, allow_null = TRUE, call = call) %||% p
-  if (!is.numeric(k) || length(k) != 1L || is.na(k) || k < d + 2) {
-    hm_abort("{.arg k} must be a number of neighbours of at least {d + 2}, not {.val {format(k)}}.",
-             "bad_input", argument = "k", call = call)
-  }
+  # (at least 3 coordinates per marker + 2 neighbours for a local regression)
+  if (!identical(k, Inf)) k <- check_whole(k, "k", min = d + 2, call = call)
   k_used <- as.integer(min(k, n_ref))
-  if (is.null(filter_size)) filter_size <- cone_size(rate)
-  if (!is.numeric(filter_size) || length(filter_size) != 1L || is.na(filter_size) || filter_size < 1) {
-    hm_abort("{.arg filter_size} must be a positive number of frames, not {.val {format(filter_size)}}.",
-             "bad_input", argument = "filter_size", call = call)
-  }
+  filter_size <- check_number(filter_size, "filter_size", min = 1, allow_null = TRUE, call = call) %||%
+    cone_size(rate)
+  smooth <- check_flag(smooth, "smooth", call = call)
   pca <- stats::prcomp(ref_y, center = TRUE, scale. = FALSE)
   # keep one component per DoF even when the reference is rank deficient
   rot <- pca$rotation

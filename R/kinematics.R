@@ -295,6 +295,10 @@ fk_input <- function(x, unit, call) {
       }
       dofs <- handmotion::hust_dofs$name
     }
+    if (nrow(x) == 0L) {
+      hm_abort("{.arg x} has no frames: there is no hand to pose.", "bad_recording",
+               argument = "x", recording = "x", call = call)
+    }
     recs <- list(x = x)
     if (is.null(unit)) unit <- "deg"
   }
@@ -307,7 +311,7 @@ fk_input <- function(x, unit, call) {
              "bad_input", argument = "x", call = call)
   }
   if (!is.character(unit) || length(unit) != 1L || !unit %in% c("deg", "rad")) {
-    hm_abort(c("Cannot pose a hand from angles in unit {.val {unit}}.",
+    hm_abort(c("{.arg unit} must be {.val deg} or {.val rad}, not {describe_value(unit)}: a hand cannot be posed from such angles.",
                i = "Forward kinematics needs degrees or radians; raw sensor counts must be calibrated first."),
              "bad_input", argument = "unit", call = call)
   }

@@ -102,6 +102,9 @@ handpicked_markers <- function() {
 markers_from_angles <- function(x, skeleton = hand_skeleton(), markers = NULL,
                                 forearm = FALSE, ...) {
   call <- rlang::caller_env()
+  check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton"),
+                 call = call)
+  forearm <- check_flag(forearm, "forearm", call = call)
   ms <- resolve_marker_set(markers, forearm = forearm, call = call)
   if (inherits(x, "grasps")) {
     pos <- forward_kinematics(x, skeleton = skeleton, ...)
@@ -126,8 +129,8 @@ resolve_marker_set <- function(markers, forearm = FALSE, call = rlang::caller_en
     need <- c("marker", "joint", "toward", "fraction", "x", "y", "z")
     miss <- setdiff(need, names(markers))
     if (length(miss)) {
-      hm_abort("The marker set lacks column{?s} {.val {miss}}.", "bad_markers",
-               argument = "markers", call = call)
+      hm_abort("The marker set {.arg markers} lacks column{?s} {.val {miss}}.", "bad_markers",
+               argument = "markers", column = miss, call = call)
     }
     return(markers)
   }
@@ -144,11 +147,11 @@ check_marker_names <- function(markers, arg = "markers", call = rlang::caller_en
   }
   bad <- setdiff(markers, full)
   if (length(bad)) {
-    hm_abort(c("Unknown marker{?s} {.val {bad}}.", i = "Known markers: {.val {full}}."),
+    hm_abort(c("{.arg {arg}} has unknown marker{?s} {.val {bad}}.", i = "Known markers: {.val {full}}."),
              "bad_markers", argument = arg, call = call)
   }
   if (anyDuplicated(markers)) {
-    hm_abort("Marker{?s} {.val {unique(markers[duplicated(markers)])}} given more than once.",
+    hm_abort("{.arg {arg}} gives marker{?s} {.val {unique(markers[duplicated(markers)])}} more than once.",
              "bad_markers", argument = arg, call = call)
   }
   invisible(markers)
@@ -165,9 +168,9 @@ place_markers <- function(pos, ms, call = rlang::caller_env()) {
   need <- unique(c(ms$joint, stats::na.omit(ms$toward)))
   miss <- setdiff(need, jn)
   if (length(miss)) {
-    hm_abort(c("The skeleton has no joint{?s} {.val {miss}} for the markers.",
+    hm_abort(c("{.arg skeleton} has no joint{?s} {.val {miss}} for the markers.",
                i = "Markers ride on the joints of GraspDB14's default skeleton."),
-             "bad_markers", joint = miss, call = call)
+             "bad_markers", argument = "skeleton", joint = miss, call = call)
   }
   nf <- dim(pos)[1]
   out <- matrix(0, nf, 3 * nrow(ms), dimnames = list(NULL, marker_columns(ms$marker)))
@@ -182,12 +185,31 @@ place_markers <- function(pos, ms, call = rlang::caller_env()) {
   out
 }
 
-# Stack the marker matrices of a grasps object (or accept a matrix / list).
+# Stack the marker matrices of a grasps object (or accept a matrix, a data
+# frame or a list of marker matrices with the same columns).
 stack_markers <- function(x, skeleton, call = rlang::caller_env(), ...) {
   if (inherits(x, "grasps")) x <- markers_from_angles(x, skeleton = skeleton, ...)
-  if (is.list(x)) x <- do.call(rbind, x)
+  if (is.data.frame(x)) x <- as.matrix(x)
+  what <- "a {.cls grasps} object or a numeric frames x (3 * markers) marker matrix (or a list of them),"
+  if (is.list(x)) {
+    if (length(x) == 0L) {
+      hm_abort(paste("{.arg reference} must be", what, "not an empty list."), "bad_input",
+               argument = "reference", call = call)
+    }
+    for (i in seq_along(x)) {
+      if (!is.matrix(x[[i]]) || !is.numeric(x[[i]])) {
+        hm_abort(paste("{.arg reference[[{i}]]} must be a numeric marker matrix, not {describe_value(x[[i]])}."),
+                 "bad_markers", argument = "reference", recording = i, call = call)
+      }
+      if (!identical(colnames(x[[i]]), colnames(x[[1]]))) {
+        hm_abort("{.arg reference[[{i}]]} has other columns than {.arg reference[[1]]}: every marker matrix needs the same markers in the same order.",
+                 "bad_markers", argument = "reference", recording = i, call = call)
+      }
+    }
+    x <- do.call(rbind, x)
+  }
   if (!is.matrix(x) || !is.numeric(x)) {
-    hm_abort("Reference markers must be a grasps object or a numeric frames x (3 * markers) matrix.",
+    hm_abort(paste("{.arg reference} must be", what, "not {describe_value(x)}."),
              "bad_input", argument = "reference", call = call)
   }
   x
@@ -228,26 +250,38 @@ rank_markers <- function(reference, weighting = c("eigenvalue", "equal"),
                          n_components = NULL, skeleton = hand_skeleton(), ...) {
   call <- rlang::caller_env()
   weighting <- check_choice(weighting, arg = "weighting", call = rlang::current_env())
+  check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton"),
+                 call = call)
   m <- stack_markers(reference, skeleton, call = call, ...)
   markers <- marker_names_of(m, call = call)
+  check_marker_names(markers, arg = "reference", call = call)
+  # the forearm markers are constant on the root link (documented)
   keep <- markers %in% hand_marker_set()$marker[hand_marker_set()$segment == "hand"]
+  if (!any(keep)) {
+    hm_abort("{.arg reference} has no hand markers to rank, only {.val {markers}}.",
+             "bad_markers", argument = "reference", call = call)
+  }
   if (!all(keep)) {
     m <- m[, marker_columns(markers[keep]), drop = FALSE]
     markers <- markers[keep]
   }
-  if (nrow(m) < 2L || any(!is.finite(m))) {
-    hm_abort("Ranking needs at least two frames of finite marker positions (got {nrow(m)} frame{?s}).",
+  if (nrow(m) < 2L) {
+    hm_abort("Ranking needs at least two frames of marker positions; {.arg reference} has {nrow(m)}.",
              "reference_too_small", argument = "reference", call = call)
+  }
+  bad <- which(!is.finite(m), arr.ind = TRUE)
+  if (nrow(bad)) {
+    hm_abort(c("{.arg reference} has {nrow(bad)} missing or infinite marker coordinate{?s}.",
+               x = "First in column {.val {colnames(m)[bad[1, 2]]}}, frame {bad[1, 1]}."),
+             "bad_markers", argument = "reference", column = colnames(m)[bad[1, 2]],
+             line = bad[1, 1], call = call)
   }
   e <- eigen(stats::cov(m), symmetric = TRUE)
   val <- pmax(e$values, 0)
   d <- length(val)
   w <- if (weighting == "eigenvalue") val else {
-    nc <- if (is.null(n_components)) floor(d / 2) else n_components
-    if (!is.numeric(nc) || length(nc) != 1L || nc < 1 || nc > d) {
-      hm_abort("{.arg n_components} must be between 1 and {d}, not {.val {format(nc)}}.",
-               "bad_input", argument = "n_components", call = call)
-    }
+    nc <- check_whole(n_components, "n_components", max = d, allow_null = TRUE, call = call) %||%
+      floor(d / 2)
     rep(c(1, 0), c(nc, d - nc))
   }
   # |coefficient x weight| summed over components, then over x, y, z
@@ -264,13 +298,15 @@ rank_markers <- function(reference, weighting = c("eigenvalue", "equal"),
 marker_names_of <- function(m, arg = "reference", call = rlang::caller_env()) {
   cn <- colnames(m)
   if (is.null(cn) || ncol(m) %% 3L != 0L) {
-    hm_abort("A marker matrix needs 3 named columns per marker ({.val index_tip.x}, ...); got {ncol(m)} column{?s}.",
+    hm_abort("{.arg {arg}} needs 3 named columns per marker ({.val index_tip.x}, ...), not {describe_value(m)}{if (is.null(cn)) ' without column names' else ''}.",
              "bad_markers", argument = arg, call = call)
   }
   mk <- sub("\\.[xyz]$", "", cn[c(TRUE, FALSE, FALSE)])
-  if (!identical(cn, marker_columns(mk))) {
-    hm_abort("Marker matrix columns must come in {.val .x}, {.val .y}, {.val .z} triples per marker.",
-             "bad_markers", argument = arg, call = call)
+  wrong <- which(cn != marker_columns(mk))
+  if (length(wrong)) {
+    hm_abort(c("The columns of {.arg {arg}} must come in {.val .x}, {.val .y}, {.val .z} triples per marker.",
+               x = "Column {wrong[1]} is {.val {cn[wrong[1]]}}, expected {.val {marker_columns(mk)[wrong[1]]}}."),
+             "bad_markers", argument = arg, column = cn[wrong[1]], call = call)
   }
   mk
 }

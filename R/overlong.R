@@ -35,13 +35,13 @@ overlong_threshold <- function(n_frames, rule = overlong_rule()) {
 
 overlong_threshold_impl <- function(n_frames, rule, call) {
   if (!is.numeric(n_frames) || length(n_frames) == 0L) {
-    hm_abort("{.arg n_frames} must be a non-empty numeric vector of frame counts.",
+    hm_abort("{.arg n_frames} must be a non-empty numeric vector of frame counts, not {describe_value(n_frames)}.",
              "bad_input", argument = "n_frames", call = call)
   }
-  if (anyNA(n_frames)) {
-    bad <- which(is.na(n_frames))
-    hm_abort(c("{.arg n_frames} must not contain missing values.",
-               x = "Missing at position{?s} {.val {bad}}."),
+  if (!all(is.finite(n_frames))) {
+    bad <- which(!is.finite(n_frames))
+    hm_abort(c("{.arg n_frames} must not contain missing or infinite values.",
+               x = "At position{cli::qty(length(bad))}{?s} {.val {bad}}."),
              "bad_input", argument = "n_frames", call = call)
   }
   if (!inherits(rule, "overlong_rule")) {

@@ -284,6 +284,7 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
                            skeleton = hand_skeleton(), view = "oblique", ncol = NULL, ...,
                            call = rlang::caller_env()) {
   check_whole(ncol, "ncol", allow_null = TRUE, call = call)
+  per_group <- check_whole(per_group, "per_group", call = call)
   sets <- if (inherits(x, "grasps")) list(x) else x
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasps"))) {
     hm_abort("{.arg x} must be a {.cls grasps} object or a list of them.", "bad_input",

@@ -9,6 +9,8 @@
 # half of Figure 5.1); autoplot(<grasps>, type = "frame_counts").
 plot_frame_counts <- function(x, grasp = NULL, rule = overlong_rule(), binwidth = 1,
                               call = rlang::caller_env()) {
+  check_grasps(x, call = call)
+  binwidth <- check_number(binwidth, "binwidth", min = 0, min_open = TRUE, call = call)
   types <- thesis_plot_types(x, grasp, call)
   parts <- lapply(types, function(type) {
     m <- x$meta[!is.na(x$meta$grasp) & as.character(x$meta$grasp) == type, , drop = FALSE]

@@ -20,9 +20,12 @@
 #' str(read_bvh(f)$joints)
 read_bvh <- function(file) {
   call <- rlang::caller_env()
-  if (!is.character(file) || length(file) != 1L || !file.exists(file)) {
-    hm_abort("BVH file {.file {file}} does not exist.", "bad_file", file = file, argument = "file", call = call)
+  file <- check_string(file, "file", call = call)
+  if (!file.exists(file) && !is_symlink(file)) {
+    hm_abort("BVH file {.file {file}} does not exist.", "file_not_found", file = file,
+             argument = "file", call = call)
   }
+  check_readable_file(file, call = call)
   lines <- readLines(file, warn = FALSE)
   bad <- function(msg, line, .envir = parent.frame()) {
     env <- list2env(list(bvh_line = line, bvh_file = file), parent = .envir)

@@ -239,8 +239,12 @@ read_hust_manifest <- function(manifest, call = rlang::caller_env()) {
       hm_abort("Manifest {.file {manifest}} does not exist.", "file_not_found",
                file = manifest, argument = "manifest", call = call)
     }
+    # through the shared text reader: an unreadable or binary manifest is a
+    # classed error, and stray Latin-1 bytes are converted (read.csv() on the
+    # file stopped with "invalid multibyte string")
+    lines <- read_text_lines(manifest, call = call)$text
     # all text first: ids like "007" must not become numbers
-    man <- tryCatch(utils::read.csv(manifest, colClasses = "character", strip.white = TRUE,
+    man <- tryCatch(utils::read.csv(text = lines, colClasses = "character", strip.white = TRUE,
                                     check.names = FALSE, na.strings = c("NA", "")),
                     error = function(e) {
                       hm_abort("Cannot read manifest {.file {manifest}}: {conditionMessage(e)}",

@@ -22,15 +22,16 @@ read_failure_row <- function(file, cnd) {
              message = gsub("\\s+", " ", msg), stringsAsFactors = FALSE)
 }
 
-# Apply `reader(file)` to every file. Files whose reading signals a condition
-# of class `catch` are collected in the failure report; anything else (a bug,
-# an interrupt) propagates. Returns list(results = named list of successes,
-# failures = data frame).
+# Apply `reader(file)` to every file. Files whose reading raises an error of
+# class `catch` are collected in the failure report; any other error (a bug)
+# propagates. Only errors are caught: a warning of one file (e.g. a dropped
+# truncated line) is a warning, not a failure, and must not stop the others.
+# Returns list(results = named list of successes, failures = data frame).
 read_each_file <- function(files, reader, catch = "handmotion_error") {
   results <- vector("list", length(files))
   failures <- vector("list", length(files))
   for (i in seq_along(files)) {
-    results[i] <- list(tryCatch(reader(files[i]), condition = function(cnd) {
+    results[i] <- list(tryCatch(reader(files[i]), error = function(cnd) {
       if (!inherits(cnd, catch)) stop(cnd)
       failures[[i]] <<- read_failure_row(files[i], cnd)
       NULL
@@ -79,6 +80,10 @@ warn_read_failures <- function(failures, total) {
 #' g <- suppressWarnings(read_graspdb14(file.path(dir, "graspdb14")))
 #' read_failures(g)
 read_failures <- function(x) {
+  if (!is.list(x)) {
+    hm_abort("{.arg x} must be the result of a reader such as {.fn read_graspdb14}, not {describe_value(x)}.",
+             "bad_input", argument = "x", call = rlang::caller_env())
+  }
   f <- attr(x, "failures", exact = TRUE)
   if (is.null(f)) empty_read_failures() else f
 }
@@ -111,23 +116,92 @@ list_input_files <- function(path, pattern, recursive, call = rlang::caller_env(
     sort(list.files(path[i], pattern = pattern, full.names = TRUE,
                     recursive = recursive, ignore.case = TRUE))
   }), use.names = FALSE)
-  files <- files[!dir.exists(files)]
+  # a folder named like a data file (matching `pattern`) is kept, so that the
+  # reader reports it as unreadable instead of skipping it without a word
+  sub_dirs <- dir.exists(files)
+  if (!is.null(pattern)) {
+    sub_dirs <- sub_dirs & !grepl(pattern, basename(files), ignore.case = TRUE)
+  }
+  files <- files[!sub_dirs]
   list(files = files, many = any(is_dir) || length(path) > 1L)
 }
 
 # ---- shared text-parsing helpers (GraspDB14 and HUST readers) ----
 
+# The output folder of a writer, created if need be, or a classed error when
+# it cannot be (a file of that name, no permission).
+create_output_dir <- function(dir, call = rlang::caller_env()) {
+  dir <- check_string(dir, "dir", call = call)
+  if (file.exists(dir) && !dir.exists(dir)) {
+    abort_bad_file("{.file {dir}} is a file, not a folder to write into.", "unwritable_file",
+                   file = dir, argument = "dir", call = call)
+  }
+  dir.create(dir, showWarnings = FALSE, recursive = TRUE)
+  if (!dir.exists(dir)) {
+    abort_bad_file("Cannot create the folder {.file {dir}}.", "unwritable_file", file = dir,
+                   argument = "dir", call = call)
+  }
+  dir
+}
+
+# Write lines to `file`, or a classed error naming the file when it cannot be
+# written (a folder, a missing folder, no permission): R's own is "cannot
+# open the connection".
+write_text_file <- function(lines, file, use_bytes = FALSE, call = rlang::caller_env()) {
+  if (dir.exists(file)) {
+    abort_bad_file("{.file {file}} cannot be written: it is a folder.", "unwritable_file",
+                   file = file, argument = "file", call = call)
+  }
+  ok <- tryCatch({
+    writeLines(lines, file, useBytes = use_bytes)
+    TRUE
+  }, error = function(e) conditionMessage(e), warning = function(w) conditionMessage(w))
+  if (!isTRUE(ok)) {
+    abort_bad_file("{.file {file}} cannot be written: {ok}", "unwritable_file", file = file,
+                   argument = "file", call = call)
+  }
+  invisible(file)
+}
+
+# Is `file` a symbolic link (broken or not)? (Sys.readlink() gives "" for
+# other files and NA where links do not exist.)
+is_symlink <- function(file) {
+  l <- Sys.readlink(file)
+  !is.na(l) & nzchar(l)
+}
+
+# A path that names a readable regular file, or a classed error saying why
+# not (R's own "cannot open the connection" names neither class nor reason).
+check_readable_file <- function(file, call = rlang::caller_env()) {
+  why <- if (dir.exists(file)) "it is a folder, not a file"
+    else if (!file.exists(file)) {
+      if (is_symlink(file)) "it is a broken symbolic link" else "it does not exist"
+    } else if (file.access(file, 4L) != 0L) "no read permission"
+  if (!is.null(why)) {
+    abort_bad_file("{.file {file}} cannot be read: {why}.", "unreadable_file", file = file,
+                   line = NA_integer_, call = call)
+  }
+  invisible(file)
+}
+
 # Read a text file as lines: accepts LF, CRLF and CR line endings, trims
 # blanks, records whether the last line was complete.
 read_text_lines <- function(file, call = rlang::caller_env()) {
+  check_readable_file(file, call = call)
   size <- file.size(file)
   if (is.na(size) || size == 0) {
     abort_bad_file("{.file {file}} is empty.", "empty_file", file = file, line = NA_integer_, call = call)
   }
-  bytes <- readBin(file, "raw", size)
-  if (any(bytes == as.raw(0))) {
-    abort_bad_file("{.file {file}} is not a text file (it contains NUL bytes).", "not_text",
+  bytes <- tryCatch(readBin(file, "raw", size), error = function(e) {
+    abort_bad_file("{.file {file}} cannot be read: {conditionMessage(e)}", "unreadable_file",
                    file = file, line = NA_integer_, call = call)
+  })
+  # NUL and the other C0 control bytes (tab, line ends and form feed aside)
+  # do not occur in text files
+  ctrl <- bytes < as.raw(32) & !(bytes %in% as.raw(c(9, 10, 12, 13))) | bytes == as.raw(127)
+  if (any(ctrl)) {
+    abort_bad_file("{.file {file}} is not a text file (control byte 0x{as.character(bytes[which(ctrl)[1]])} at byte {which(ctrl)[1]}).",
+                   "not_text", file = file, line = NA_integer_, call = call)
   }
   txt <- rawToChar(bytes)
   # stray non-UTF-8 bytes (e.g. a Latin-1 header) must not break the regexes

@@ -73,10 +73,7 @@ segment_by_switch <- function(x, keep = c("all", "on", "off"), min_frames = 1L, 
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   keep <- check_choice(keep, arg = "keep", call = call)
-  if (!is.numeric(min_frames) || length(min_frames) != 1L || is.na(min_frames) || min_frames < 1) {
-    hm_abort("{.arg min_frames} must be a positive number of frames.", "bad_input",
-             argument = "min_frames", call = call)
-  }
+  min_frames <- check_whole(min_frames, "min_frames", call = call)
   n <- length(x)
   if (!is.null(switch) && !is.list(switch)) switch <- list(switch)
   if (!is.null(switch) && length(switch) != n) {

@@ -53,12 +53,13 @@ read_skeleton <- function(file, positions = c("absolute", "relative")) {
   call <- rlang::caller_env()
   positions <- check_choice(positions, arg = "positions", call = rlang::current_env())
   if (!is.character(file) || length(file) != 1L || is.na(file)) {
-    hm_abort("{.arg file} must be one file path.", "bad_input", argument = "file", call = call)
+    hm_abort("{.arg file} must be one file path, not {describe_value(file)}.", "bad_input", argument = "file", call = call)
   }
-  if (!file.exists(file)) {
-    hm_abort("Skeleton file {.file {file}} does not exist.", "bad_file", file = file,
+  if (!file.exists(file) && !is_symlink(file)) {
+    hm_abort("Skeleton file {.file {file}} does not exist.", "file_not_found", file = file,
              argument = "file", call = call)
   }
+  check_readable_file(file, call = call)
   doc <- tryCatch(xml2::read_xml(file), error = function(e) {
     hm_abort(c("Skeleton file {.file {file}} is not well-formed XML.",
                x = "{conditionMessage(e)}"), c("bad_skeleton", "bad_file"), file = file, call = call)
@@ -425,7 +426,9 @@ autoplot.hand_skeleton <- function(object, view = "back", labels = TRUE, markers
 #' write_skeleton(hand_skeleton(), f)
 #' nrow(read_skeleton(f)$joints)
 write_skeleton <- function(skeleton, file, comment = NULL) {
-  check_skeleton(skeleton)
+  call <- rlang::caller_env()
+  check_skeleton(skeleton, call = call)
+  file <- check_string(file, "file", call = call)
   j <- skeleton$joints
   pos <- skeleton_rest_positions(skeleton)
   pidx <- skeleton_parent_index(skeleton)
@@ -449,6 +452,6 @@ write_skeleton <- function(skeleton, file, comment = NULL) {
     c(txt, paste0(pad, "</joint>"))
   }
   out <- c(out, emit(which(is.na(pidx)), 1L), "</skeleton>")
-  writeLines(out, file)
+  write_text_file(out, file, call = call)
   invisible(file)
 }

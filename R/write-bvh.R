@@ -34,13 +34,17 @@
 write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate = 50,
                       scale = 1, ...) {
   call <- rlang::caller_env()
+  file <- check_string(file, "file", call = call)
   check_skeleton(skeleton, call = call)
   scale <- check_number(scale, "scale", min = 0, min_open = TRUE, call = call)
+  # (checked even for a grasps object, which brings its own rate: a bad
+  # value is a mistake either way)
+  check_rate(rate, call = call)
   dots <- list(...)
   if (inherits(x, "grasps")) {
     if (is.character(recording)) recording <- match(recording, x$meta$id)
     if (length(recording) != 1L || is.na(recording) || recording < 1L || recording > length(x)) {
-      hm_abort("{.arg recording} must pick one of the {length(x)} recording{?s} by index or id.",
+      hm_abort("{.arg recording} must pick one of the {length(x)} recording{?s} by index or id, not {describe_value(recording)}.",
                "bad_input", argument = "recording", call = call)
     }
     rate <- x$rate
@@ -88,8 +92,8 @@ write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate 
     if (!is.null(L)) motion[, 3 + 3 * (k - 1) + 1:3] <- euler_zxy(L)
   }
   body <- apply(round(motion, 5), 1, function(r) paste(format(r, trim = TRUE, scientific = FALSE), collapse = " "))
-  writeLines(c("HIERARCHY", hier, "MOTION", paste("Frames:", n),
-               paste("Frame Time:", format(1 / rate, digits = 10)), body), file)
+  write_text_file(c("HIERARCHY", hier, "MOTION", paste("Frames:", n),
+                    paste("Frame Time:", format(1 / rate, digits = 10)), body), file, call = call)
   invisible(file)
 }
 

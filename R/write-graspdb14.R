@@ -61,7 +61,7 @@ write_graspdb14 <- function(x, dir, file_names = NULL, start_time = "2014-01-01 
     hm_abort("{.arg file_names} must be {length(x)} distinct name{?s}.", "bad_input",
              argument = "file_names", call = call)
   }
-  dir.create(dir, showWarnings = FALSE, recursive = TRUE)
+  dir <- create_output_dir(dir, call = call)
   paths <- file.path(dir, file_names)
   exists <- file.exists(paths)
   if (!overwrite && any(exists)) {
@@ -79,7 +79,7 @@ write_graspdb14 <- function(x, dir, file_names = NULL, start_time = "2014-01-01 
                              unit = x$unit, digits = digits, id = x$meta$id[i],
                              time = attr(rec, "time", exact = TRUE),
                              switch = attr(rec, "switch", exact = TRUE), call = call)
-    writeLines(lines, paths[i], useBytes = TRUE)
+    write_text_file(lines, paths[i], use_bytes = TRUE, call = call)
   }
   invisible(paths)
 }

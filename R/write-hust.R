@@ -62,7 +62,7 @@ write_hust <- function(x, dir, file_names = NULL, sep = ",", header = FALSE, dig
     hm_abort("A data file cannot be named like the manifest {.val {manifest}}.", "bad_input",
              argument = "file_names", call = call)
   }
-  dir.create(dir, showWarnings = FALSE, recursive = TRUE)
+  dir <- create_output_dir(dir, call = call)
   paths <- file.path(dir, file_names)
   targets <- c(paths, if (!is.null(manifest)) file.path(dir, manifest))
   exists <- file.exists(targets)
@@ -79,7 +79,7 @@ write_hust <- function(x, dir, file_names = NULL, sep = ",", header = FALSE, dig
     if (sep == ";") vals <- sub(".", ",", vals, fixed = TRUE)
     dim(vals) <- dim(rec)
     body <- do.call(paste, c(as.data.frame(vals, stringsAsFactors = FALSE), sep = sep))
-    writeLines(c(if (header) paste(dofs, collapse = sep), body), paths[i], useBytes = TRUE)
+    write_text_file(c(if (header) paste(dofs, collapse = sep), body), paths[i], use_bytes = TRUE, call = call)
   }
   if (!is.null(manifest)) {
     m <- x$meta

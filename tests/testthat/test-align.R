@@ -231,13 +231,13 @@ test_that("failures fall back to linear warping with a recorded reason", {
   pl <- planted_alignment(N = 6, seed = 9)
   bad <- pl$recs
   bad$rec03[5, 2] <- NaN
-  al <- align_recordings(bad)
+  expect_warning(al <- align_recordings(bad), class = "handmotion_warning_non_finite")
   expect_identical(al$method, "linear")
   expect_match(al$fallback_reason, "non-finite")
   expect_equal(unname(al$warps["rec01", ]), seq(1, pl$n[1], length.out = al$target_length))
   # forced failure through the internal option, on clean data
   local_failing_alignment()
-  forced <- align_recordings(pl$recs)
+  expect_warning(forced <- align_recordings(pl$recs), class = "handmotion_warning_linear_fallback")
   expect_identical(forced$method, "linear")
   expect_match(forced$fallback_reason, "forced")
   expect_equal(unname(forced$warped[1, , ]), unname(handmotion:::warp_linear(pl$recs[[1]], forced$target_length)))
@@ -249,10 +249,10 @@ test_that("a window too narrow for any path and a single recording fall back", {
   pl <- planted_alignment(N = 4, seed = 10)
   recs <- pl$recs
   recs$short <- grasp_curve(seq(0, 1, length.out = 5))
-  al <- align_recordings(recs, window = 0.1)
+  expect_warning(al <- align_recordings(recs, window = 0.1), class = "handmotion_warning_linear_fallback")
   expect_identical(al$method, "linear")
   expect_match(al$fallback_reason, "no warping path")
-  one <- align_recordings(pl$recs[1])
+  expect_warning(one <- align_recordings(pl$recs[1]), class = "handmotion_warning_linear_fallback")
   expect_identical(one$method, "linear")
   expect_match(one$fallback_reason, "fewer than 2")
   expect_identical(dim(one$warped), c(1L, nrow(pl$recs[[1]]), 3L))
@@ -270,7 +270,8 @@ test_that("broken recordings do not drag good ones down; too few left falls back
   expect_identical(al$ids, c("good", "good2"))
   expect_setequal(al$degenerate$id, c("early", "late"))
   # one good recording is not enough to align
-  one <- align_recordings(list(good = x, early = early, late = late), features = "raw")
+  expect_warning(one <- align_recordings(list(good = x, early = early, late = late), features = "raw"),
+                 class = "handmotion_warning_linear_fallback")
   expect_identical(one$method, "linear")
   expect_match(one$fallback_reason, "fewer than 2 recordings left after dropping 2 degenerate")
   expect_identical(one$ids, c("good", "early", "late"))
@@ -286,7 +287,7 @@ test_that("target_length, L = 1 and one-frame recordings work", {
   expect_identical(one$method, "dtw")
   expect_equal(unname(one$warped[, 1, ]), t(vapply(pl$recs, colMeans, numeric(3))), ignore_attr = TRUE)
   recs <- c(pl$recs, list(dot = matrix(c(1, 2, 3), 1, 3, dimnames = list(NULL, c("a", "b", "c")))))
-  dot <- align_recordings(recs)
+  expect_warning(dot <- align_recordings(recs), class = "handmotion_warning_one_frame")
   expect_true("dot" %in% dot$degenerate$id)   # (any features: nothing to stretch)   # one frame held for the whole template
 })
 
@@ -313,7 +314,8 @@ test_that("print shows method, iterations and drops", {
   expect_output(print(al), "6 recordings x 3 DoFs")
   expect_output(print(al), "dropped 1 degenerate warp")
   local_failing_alignment()
-  expect_output(print(align_recordings(recs)), "LINEAR warping \\(fallback: alignment failure forced")
+  expect_warning(forced <- align_recordings(recs), class = "handmotion_warning_linear_fallback")
+  expect_output(print(forced), "LINEAR warping \\(fallback: alignment failure forced")
 })
 
 # ---- helpers reused by the model code ---------------------------------------
@@ -352,7 +354,8 @@ test_that("autoplot draws the frame-count histogram and one path per recording",
   h <- ggplot2::ggplot_build(autoplot(al, type = "histogram"))
   expect_equal(sum(h$data[[1]]$count), 7)
   local_failing_alignment()
-  lin <- ggplot2::ggplot_build(autoplot(align_recordings(pl$recs), type = "paths"))
+  expect_warning(forced <- align_recordings(pl$recs), class = "handmotion_warning_linear_fallback")
+  lin <- ggplot2::ggplot_build(autoplot(forced, type = "paths"))
   d <- lin$data[[1]]
   # linear fallback: straight paths
   expect_true(all(tapply(d$y, d$group, function(y) diff(range(diff(y)))) < 1e-8))

@@ -137,3 +137,65 @@ test_that("pictures, pages and videos refuse NaN frames, a skeleton without a Do
   expect_error(write_hand_animation(empty, gif), class = "handmotion_error_bad_recording")
   expect_false(file.exists(gif))
 })
+
+test_that("a directory read reads every good file and reports every bad one", {
+  dir <- withr::local_tempdir()
+  gd <- graspdb14_fixture_grasps()
+  good <- write_graspdb14(gd, dir)
+  lines <- readLines(good[1])
+  name <- function(su) file.path(dir, sprintf("01_ex01-rad-002-grasp-su%02d.txt", su))
+  writeLines(c("an unknown header", lines[-1]), name(71))                          # bad header
+  writeLines(c(lines, substr(lines[length(lines)], 1, 12)), name(72))              # truncated last line
+  writeBin(as.raw(0:255), name(73))                                                # binary
+  dir.create(name(74))                                                             # a folder, not a file
+  file.symlink(file.path(dir, "nowhere.txt"), name(75))                            # a broken link
+  # truncated = "drop": the cut-off file is read (with its own warning), the rest reported
+  out <- withCallingHandlers(read_graspdb14(dir, truncated = "drop"),
+                             handmotion_warning = function(w) invokeRestart("muffleWarning"))
+  expect_length(out, length(good) + 1L)
+  f <- read_failures(out)
+  expect_identical(basename(f$file), basename(name(c(71, 73, 74, 75))))
+  expect_identical(f$class, c("handmotion_error_bad_field_count", "handmotion_error_not_text",
+                              "handmotion_error_unreadable_file", "handmotion_error_unreadable_file"))
+  expect_identical(f$line, c(1L, NA, NA, NA))
+  expect_match(f$message[3], "folder")
+  expect_match(f$message[4], "broken symbolic link")
+  # the summary warning is classed and names them
+  expect_warning(suppressWarnings(read_graspdb14(dir), classes = "handmotion_warning_truncated_line"),
+                 "5 of 7 files", class = "handmotion_warning_read_failures")
+  # when every file fails, the error is classed and carries the report
+  bad <- withr::local_tempdir()
+  writeBin(as.raw(0:255), file.path(bad, basename(good[1])))
+  writeLines("x", file.path(bad, "b.txt"))
+  cnd <- tryCatch(suppressWarnings(read_graspdb14(bad)), handmotion_error_bad_file = function(e) e)
+  expect_s3_class(cnd, "handmotion_error_no_files")
+  expect_identical(nrow(cnd$failures), 2L)
+})
+
+test_that("HUST directories: unreadable files, binary files and a binary manifest are classed", {
+  g <- simulate_grasps(subjects = 1, grasps = 1:4, objects = 1, trials = 1, seed = 1)
+  dir <- withr::local_tempdir()
+  write_hust(g, dir)
+  man <- utils::read.csv(file.path(dir, "manifest.csv"))
+  writeBin(as.raw(0:255), file.path(dir, man$file[1]))
+  unlink(file.path(dir, man$file[2]))
+  dir.create(file.path(dir, man$file[2]))
+  hl <- readLines(file.path(dir, man$file[3]))
+  writeLines(c(hl, "1.5 2"), file.path(dir, man$file[3]))
+  expect_warning(suppressWarnings(read_hust(dir, truncated = "drop"), classes = "handmotion_warning_truncated_line"),
+                 "2 of 4 files", class = "handmotion_warning_read_failures")
+  out <- suppressWarnings(read_hust(dir, truncated = "drop"))
+  expect_identical(out$meta$id, man$id[3:4])
+  expect_identical(read_failures(out)$class,
+                   c("handmotion_error_not_text", "handmotion_error_unreadable_file"))
+  # a binary manifest: a classed file error, not "invalid multibyte string"
+  writeBin(as.raw(c(0x80, 0xff, 0xfe, 0x41, 0xc3, 0x28, 0x0a, 0x66)), file.path(dir, "manifest.csv"))
+  expect_error(read_hust(dir), class = "handmotion_error_bad_manifest")
+  writeBin(as.raw(c(0x80, 0xff, 0x00, 0x41)), file.path(dir, "manifest.csv"))
+  expect_error(read_hust(dir), class = "handmotion_error_not_text")
+  # all files bad: one classed error
+  unlink(file.path(dir, man$file[2]), recursive = TRUE)
+  for (f in man$file) writeBin(as.raw(0:255), file.path(dir, f))
+  write.csv(man, file.path(dir, "manifest.csv"), row.names = FALSE)
+  expect_error(suppressWarnings(read_hust(dir)), class = "handmotion_error_no_files")
+})

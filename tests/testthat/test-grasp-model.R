@@ -87,7 +87,7 @@ test_that("a constant DoF is a recorded fallback, not a crash", {
   g <- planted_grasps(n = 20, p = 3, seed = 16)
   recs <- lapply(g$recordings, function(r) { r[, 2] <- 10; r })
   g2 <- grasps(recs, meta = g$meta, dofs = g$dofs)
-  m <- fit_grasp_model(g2, warping = "linear", seed = 1)
+  expect_warning(m <- fit_grasp_model(g2, warping = "linear", seed = 1), "d2", class = "handmotion_warning_constant_dofs")
   expect_true(any(m$fallbacks$step == "fpca" & m$fallbacks$dof == "d2"))
   expect_true(all(is.na(m$var_explained["d2", ])))
   expect_true(isTRUE(m$gmm$d2$point_mass))
@@ -102,7 +102,7 @@ test_that("identical recordings give fallbacks for every DoF and the warp", {
   g <- planted_grasps(n = 1, p = 2, seed = 17)
   r <- g$recordings[[1]]
   g2 <- grasps(rep(list(r), 6), meta = data.frame(grasp = rep("Ring", 6)), dofs = g$dofs)
-  m <- fit_grasp_model(g2, warping = "linear", seed = 1)
+  expect_warning(m <- fit_grasp_model(g2, warping = "linear", seed = 1), class = "handmotion_warning_identical_recordings")
   expect_setequal(m$fallbacks$dof[m$fallbacks$step == "fpca"], c("d1", "d2"))
   expect_true("warp_fpca" %in% m$fallbacks$step)
   new <- generate(m, n = 2, seed = 1)
@@ -118,7 +118,8 @@ test_that("too few recordings, mixed types and bad arguments are clear errors", 
                   meta = data.frame(id = paste0("x", 1:10), grasp = c(a$meta$grasp, b$meta$grasp)),
                   dofs = a$dofs)
   expect_error(fit_grasp_model(mixed), class = "handmotion_error_multiple_grasps")
-  m <- fit_grasp_model(mixed, grasp = "ring", warping = "linear", seed = 1)
+  expect_warning(m <- fit_grasp_model(mixed, grasp = "ring", warping = "linear", seed = 1),
+                 class = "handmotion_warning_small_mixture")
   expect_identical(m$grasp, "Ring")
   expect_equal(m$grasp_id, 31L)
   expect_error(fit_grasp_model(mixed, grasp = "Tripod", engine = "quick"),
@@ -167,7 +168,8 @@ test_that("print and summary list what was removed and what fell back", {
   recs <- g$recordings
   recs[[2]] <- rbind(recs[[2]], recs[[2]], recs[[2]])
   recs <- lapply(recs, function(r) { r[, 3] <- 1; r })
-  m <- fit_grasp_model(grasps(recs, meta = g$meta, dofs = g$dofs), warping = "linear", seed = 1)
+  expect_warning(m <- fit_grasp_model(grasps(recs, meta = g$meta, dofs = g$dofs), warping = "linear", seed = 1),
+                 class = "handmotion_warning_constant_dofs")
   s <- summary(m)
   expect_s3_class(s, "summary_grasp_model")
   expect_identical(names(s), c("dof", "FPC1", "FPC2", "total", "mixture", "reason"))
@@ -187,7 +189,7 @@ test_that("simulated grasps fit with DTW and explain most of the variance", {
 test_that("a failed EM is replaced by a single Gaussian and recorded (Table 5.1)", {
   # 5 recordings cannot carry two full-covariance components in 2-D
   g <- planted_grasps(n = 5, p = 2, seed = 23)
-  m <- fit_grasp_model(g, warping = "linear", seed = 1)
+  expect_warning(m <- fit_grasp_model(g, warping = "linear", seed = 1), class = "handmotion_warning_small_mixture")
   em <- m$fallbacks[m$fallbacks$step == "mixture", ]
   expect_setequal(em$dof, c("d1", "d2"))
   expect_true(all(grepl("single Gaussian", em$reason)))
@@ -216,13 +218,13 @@ test_that("a model on linear warps can be drawn, whether asked for or fallen bac
   g <- planted_grasps(n = 30, p = 3, seed = 3)
   aln <- frame_pca_alignment(g, rlang::current_env(), warping = "linear")
   expect_s3_class(ggplot2::ggplot_build(autoplot(aln)), "ggplot_built")
-  asked <- fit_grasp_model(g, warping = "linear", seed = 1)
+  asked <- suppressWarnings(fit_grasp_model(g, warping = "linear", seed = 1), classes = "handmotion_warning_small_mixture")
   expect_identical(asked$warping$method, "linear")
   for (type in c("fpca", "mixture", "warps")) {
     expect_s3_class(ggplot2::ggplot_build(autoplot(asked, type = type)), "ggplot_built")
   }
   local_failing_alignment()
-  fell <- fit_grasp_model(g, seed = 1)
+  expect_warning(fell <- fit_grasp_model(g, seed = 1), class = "handmotion_warning_linear_fallback")
   expect_identical(fell$warping$method, "linear")
   expect_match(fell$fallbacks$reason[fell$fallbacks$step == "warping"], "linear warping")
   expect_s3_class(ggplot2::ggplot_build(autoplot(fell, type = "warps")), "ggplot_built")
@@ -234,7 +236,7 @@ test_that("the FPCA of a constant DoF prints and has every field of an fpca_fit"
   # delta, so printing it failed with "invalid format '%d'"
   g <- planted_grasps(n = 30, p = 3, seed = 4)
   g$recordings <- lapply(g$recordings, function(r) { r[, 2] <- 7; r })
-  m <- fit_grasp_model(g, seed = 1)
+  expect_warning(m <- fit_grasp_model(g, seed = 1), class = "handmotion_warning_constant_dofs")
   f <- m$fpca[[2]]
   expect_true(f$constant)
   expect_identical(f$n, m$n_used)

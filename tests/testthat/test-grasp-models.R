@@ -68,7 +68,8 @@ test_that("summary is a tidy table with one row per type (Tables 5.1, 5.2)", {
 
 test_that("EM fallbacks are listed per type in the summary", {
   small <- planted_grasps(n = 5, p = 2, grasp = "Palmar Pinch", seed = 4)
-  ms <- fit_grasp_models(small, warping = "linear", seed = 1)
+  expect_warning(ms <- fit_grasp_models(small, warping = "linear", seed = 1), "Palmar Pinch",
+                 class = "handmotion_warning_small_mixture")
   s <- summary(ms)
   expect_identical(s$em_fallback, "d1, d2")
   expect_identical(s$n_em_fallback, 2L)

@@ -17,7 +17,7 @@ from .api import (classify, evaluate_early_recognition, evaluate_generation, eva
                   table_5_2, table_5_3, table_5_6, table_5_7, table_5_8, write_bvh,
                   write_graspdb14, write_hust)
 from .errors import (BadFileError, BadInputError, BadRecordingError, BadSkeletonError,
-                     FitFailedError, HandmotionError, HandmotionWarning, RError,
+                     DegenerateDataWarning, FitFailedError, HandmotionError, HandmotionWarning, RError,
                      UnknownGraspError)
 from .grasps import Grasps
 from .view import HandView, hand_3d
@@ -30,7 +30,7 @@ __all__ = [
     "Grasps", "GraspModels", "GraspClassifier", "GraspRecognizer", "RecognitionStream", "HandoverModel",
     "RHandle", "Skeleton",
     "HandmotionError", "BadInputError", "BadRecordingError", "UnknownGraspError", "BadFileError",
-    "BadSkeletonError", "FitFailedError", "RError", "HandmotionWarning",
+    "BadSkeletonError", "FitFailedError", "RError", "HandmotionWarning", "DegenerateDataWarning",
     "simulate_grasps", "read_hust", "write_hust", "read_graspdb14", "write_graspdb14",
     "read_skeleton", "hand_skeleton", "forward_kinematics", "joint_names", "write_bvh",
     "fit_grasp_models", "generate", "evaluate_generation", "classify", "fit_last_frame_pca", "evaluate_loso",

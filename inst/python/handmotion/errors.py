@@ -98,6 +98,18 @@ class HandmotionWarning(_RCondition, UserWarning):
     """
 
 
+class DegenerateDataWarning(HandmotionWarning):
+    """Degenerate data accepted with a fallback (R family ``handmotion_warning_degenerate``).
+
+    One-frame or identical recordings, more components than the data's rank, a mixture with more
+    components than the recordings carry, a linear-warping fallback: the result is usable and its
+    ``print()`` in R lists what happened; ``r_class`` names the specific cases
+    (e.g. ``"handmotion_warning_one_frame"``).
+    """
+
+
 def from_r_warning(message, r_class):
     """Build the Python warning for an R warning condition."""
+    if "handmotion_warning_degenerate" in r_class:
+        return DegenerateDataWarning(message, r_class)
     return HandmotionWarning(message, r_class)
