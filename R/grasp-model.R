@@ -179,14 +179,11 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
                              arg = "fpc_scores", call = call)
   max_stall <- check_number(max_stall, "max_stall", min = 0, max = 1, min_open = TRUE, call = call)
   keep_data <- check_flag(keep_data, "keep_data", call = call)
-  if (!inherits(overlong, "overlong_rule")) {
-    hm_abort("{.arg overlong} must be made by {.fn overlong_rule}, not {describe_value(overlong)}.",
-             "bad_input", argument = "overlong", call = call)
-  }
+  overlong <- as_overlong_rule(overlong, call = call)
   x <- select_one_type(x, grasp, call)
   check_grasps_finite(x, call = call)
   settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
-                   k = as.integer(k), overlong = as_overlong_rule(overlong, call = call), warping = warping, max_stall = max_stall,
+                   k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,
                    keep_data = keep_data, gmm_max_iter = gmm_model_max_iter,
                    dependence = dependence, mixture_guard = mixture_guard, fpc_scores = fpc_scores)
   model <- with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))

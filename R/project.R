@@ -39,7 +39,7 @@
 #' pr$distance
 predict.grasp_model <- function(object, newdata, details = TRUE, ...) {
   call <- rlang::caller_env()
-  check_dots_for(list(...), predict.grasp_model, "predict", call = call)
+  check_dots_for(list(...), predict.grasp_model, "predict.grasp_model", call = call)
   check_grasps(newdata, "newdata", call = call)
   check_projection_dofs(object, newdata, call)
   project_stacked(object, stack_recordings(newdata, object$dofs), details = details)
@@ -49,7 +49,7 @@ predict.grasp_model <- function(object, newdata, details = TRUE, ...) {
 #' @export
 predict.grasp_models <- function(object, newdata, details = FALSE, ...) {
   call <- rlang::caller_env()
-  check_dots_for(list(...), predict.grasp_models, "predict", call = call)
+  check_dots_for(list(...), predict.grasp_models, "predict.grasp_models", call = call)
   check_grasps(newdata, "newdata", call = call)
   models <- fitted_models(object)
   if (length(models) == 0L) {

@@ -169,10 +169,10 @@ bad_input_cases <- function() {
     list("classify: text for models", quote(classify("x", g)), "bad_input"),
     list("predict: a number for newdata", quote(predict(clf, 42)), "bad_input"),
     list("predict: an unnamed matrix for a last-frame model", quote(predict(lf, matrix(1, 2, 16))), "bad_input"),
-    list("project: unknown argument", quote(project(ms, g, foo = 1)), "bad_input"),
+    list("predict: unknown argument", quote(predict(ms, g, foo = 1)), "bad_input"),
     list("as_grasp_confusion: text", quote(as_grasp_confusion("x")), "bad_input"),
     list("distance_table: text", quote(distance_table("x")), "bad_input"),
-    list("project: text for recordings", quote(project(m, "x")), "bad_input"),
+    list("predict: text for recordings", quote(predict(m, "x")), "bad_input"),
     # --- kinematics
     list("forward_kinematics: NaN angles", quote(forward_kinematics(ang * NaN)), "bad_recording"),
     list("forward_kinematics: no frames", quote(forward_kinematics(ang[0, ])), "bad_recording"),
