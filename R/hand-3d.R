@@ -113,10 +113,13 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
          },
          extent = apply(pos, 3, range))
   })
-  # side by side along the thumb's axis (skeleton x), a hand's width apart
+  # side by side, a hand's width apart, along the line across the camera's
+  # first view (hand3d.js looks along (0.55, -0.25, -1)): along the thumb's
+  # axis alone, the hands stood at different depths and looked different in size
   width_mm <- max(vapply(recs, function(r) diff(r$extent[, 1]), numeric(1)))
+  across <- c(1, 0, 0.55) / sqrt(1 + 0.55^2)
   for (i in seq_along(recs)) {
-    recs[[i]]$offset <- c(if (layout == "side") (i - 1) * 1.25 * width_mm else 0, 0, 0)
+    recs[[i]]$offset <- if (layout == "side") round((i - 1) * 1.25 * width_mm * across, 2) else c(0, 0, 0)
     recs[[i]]$extent <- NULL
   }
   data <- list(joints = joints$name, parent = ifelse(is.na(pidx), -1L, pidx - 1L),
@@ -124,7 +127,7 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
                colour = grDevices::rgb(t(grDevices::col2rgb(unname(finger_colours[chains]))), maxColorValue = 255),
                radius = bone_radii(skeleton),
                palm = match(intersect(palm_outline, joints$name), joints$name) - 1L,
-               rate = rates[[1]], speed = speed, autoplay = autoplay, loop = loop,
+               layout = layout, rate = rates[[1]], speed = speed, autoplay = autoplay, loop = loop,
                background = background, recordings = recs)
   htmlwidgets::createWidget("hand3d", data, width = width, height = height, package = "handmotion",
                             elementId = elementId,

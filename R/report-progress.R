@@ -11,33 +11,34 @@ report_step_signal <- function(label) {
   rlang::signal("", class = "handmotion_report_step", label = label)
 }
 
-# Each step's share of a full report's time, measured on the default design
-# (30 subjects x 33 types, leave-one-subject-out, one worker; the page's
-# figures, tables and pandoc as "the figures and the page"). Only the
-# shares matter: the time left is the time so far scaled by what remains.
-# A step not listed counts with the median share.
+# Each step's time in a full report (tables/timings.csv of reproduce_thesis()
+# on the default design: 30 subjects x 33 types, leave-one-subject-out, one
+# worker on a shared machine, 17 min wall clock for 4.7 min of CPU; the
+# figures, tables and pandoc between and after the steps as "the figures and
+# the page"). Only the shares matter: the time left is the time so far scaled
+# by what remains. A step not listed counts with the median share.
 report_step_weights <- c(
-  "simulate the data" = 1.5,
-  "fit the grasp models" = 12,
-  "classify by FPCA distance (in-sample)" = 0.8,
+  "simulate the data" = 3,
+  "fit the grasp models" = 20,
+  "classify by FPCA distance (in-sample)" = 4,
   "fit last-frame PCA" = 0.1,
-  "classify by last-frame PCA (in-sample)" = 0.2,
+  "classify by last-frame PCA (in-sample)" = 0.4,
   "generate three grasps per type" = 0.1,
-  "held-out evaluation, FPCA" = 44,
-  "held-out evaluation, last-frame PCA" = 1.5,
-  "held-out evaluation, weighted FPCA distance" = 50,
-  "held-out evaluation, shrinkage LDA" = 3,
-  "re-align two example types (Figures 5.1, 5.2)" = 0.2,
-  "frame-PCA alternative (Figure 5.3)" = 0.5,
-  "natural grasps: thesis model on the training subjects" = 8,
-  "natural grasps: copula model on the training subjects" = 8,
-  "natural grasps: evaluate_generation()" = 15,
-  "natural grasps: thesis model with the mixture guard" = 9,
-  "recognition: weighted FPCA distance (learn weights)" = 0.2,
-  "recognition: shrinkage LDA (fit)" = 0.3,
-  "recognition: classify the held-out subjects" = 1,
-  "recognition: early recognition, held out by subject" = 16,
-  "the figures and the page" = 40
+  "held-out evaluation, FPCA" = 203,
+  "held-out evaluation, last-frame PCA" = 24,
+  "held-out evaluation, weighted FPCA distance" = 455,
+  "held-out evaluation, shrinkage LDA" = 75,
+  "re-align two example types (Figures 5.1, 5.2)" = 1,
+  "frame-PCA alternative (Figure 5.3)" = 0.2,
+  "natural grasps: thesis model on the training subjects" = 15,
+  "natural grasps: copula model on the training subjects" = 10,
+  "natural grasps: evaluate_generation()" = 53,
+  "natural grasps: thesis model with the mixture guard" = 26,
+  "recognition: weighted FPCA distance (learn weights)" = 0.1,
+  "recognition: shrinkage LDA (fit)" = 1,
+  "recognition: classify the held-out subjects" = 6,
+  "recognition: early recognition, held out by subject" = 104,
+  "the figures and the page" = 33
 )
 
 # A progress printer for one report: `step(label)` as each step starts,
@@ -60,8 +61,8 @@ report_progress <- function(enabled = TRUE, out = stderr()) {
                   if (is.null(settings$loso_folds)) "leave-one-subject-out" else paste(settings$loso_folds, "folds"),
                   workers, if (workers == 1L) "" else "s"))
       if (workers == 1L) {
-        say("  (one worker: the full design takes about 2-3 minutes; future::plan(\"multisession\") ",
-            "runs the held-out folds in parallel)")
+        say("  (one worker: the full design needs about 5 minutes of one core; future::plan(\"multisession\") ",
+            "first runs the held-out folds in parallel)")
       }
     },
     step = function(label) {

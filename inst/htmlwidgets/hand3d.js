@@ -7,7 +7,7 @@
  * once, in R), so this file only places meshes. Data (x):
  *   joints, parent (0-based, -1 for the root), colour (per joint), radius
  *   (per joint, mm), palm (0-based outline indices), rate, speed, autoplay,
- *   loop, background, recordings: [{label, colour, n, pos (frame-major
+ *   loop, background, layout ("side" or "overlay"), recordings: [{label, colour, n, pos (frame-major
  *   n x joints x 3), outside (n x joints 0/1 or null), markers (n x m x 3
  *   or null), offset [x, y, z], opacity}].
  *
@@ -162,11 +162,19 @@
     div.className = "hand3d-legend";
     div.style.cssText = "position:absolute;left:8px;top:6px;font:12px sans-serif;color:#222;" +
       "background:rgba(255,255,255,0.7);padding:2px 6px;border-radius:3px";
-    div.innerHTML = x.recordings.map(function (r) {
-      var sw = r.colour ? '<span style="display:inline-block;width:10px;height:10px;margin-right:4px;background:' +
-        r.colour + '"></span>' : "";
-      return "<div>" + sw + r.label.replace(/&/g, "&amp;").replace(/</g, "&lt;") + "</div>";
-    }).join("");
+    var esc = function (t) { return t.replace(/&/g, "&amp;").replace(/</g, "&lt;"); };
+    if (x.layout === "side" && x.recordings.length > 1) {
+      // which hand is which: they stand in this order, left to right, in the first view
+      div.innerHTML = "<div>left to right (as first shown):</div>" + x.recordings.map(function (r, i) {
+        return "<div>" + (i + 1) + ". " + esc(r.label) + "</div>";
+      }).join("");
+    } else {
+      div.innerHTML = x.recordings.map(function (r) {
+        var sw = r.colour ? '<span style="display:inline-block;width:10px;height:10px;margin-right:4px;background:' +
+          r.colour + '"></span>' : "";
+        return "<div>" + sw + esc(r.label) + "</div>";
+      }).join("");
+    }
     el.appendChild(div);
   }
 
@@ -240,6 +248,7 @@
           var radius = box.getSize(new THREE.Vector3()).length() / 2;
           camera = new THREE.PerspectiveCamera(35, wh[0] / wh[1], radius / 50, radius * 50);
           camera.up.set(0, -1, 0); // fingers (skeleton -y) point up on screen
+          // (R/hand-3d.R sets side-by-side hands across this line of sight, at one depth)
           var view = new THREE.Vector3(0.55, -0.25, -1).normalize();
           var dist = radius / Math.sin(THREE.MathUtils.degToRad(35 / 2)) *
             Math.max(1, wh[1] / wh[0]) * 0.75;
