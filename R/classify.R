@@ -134,9 +134,11 @@ classifier_distances <- function(models, x, method, call = rlang::caller_env()) 
 
 no_failures <- function() data.frame(model = character(0), message = character(0))
 
-# Eq. 4.4 for every (recording, model) pair. project() on the whole model set
-# stacks the recordings once; if it fails, the models are projected one by one
-# so a single broken model costs only its own column.
+# Eq. 4.4 for every (recording, model) pair. The recordings are stacked once
+# and projected on one model at a time, keeping only the distances (the
+# scores and residuals of every model at once would be n x 33 x p x ncomp
+# numbers: 1 GB at ten times the default data); a model whose projection
+# fails costs only its own column.
 fpca_distances <- function(models, x, call = rlang::caller_env()) {
   if (length(models) == 0L) {
     hm_abort("{.arg models} holds no grasp models.", "bad_input", argument = "models", call = call)
@@ -154,10 +156,18 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
     failures <- rbind(failures, data.frame(model = unfitted$grasp,
                                            message = paste("not fitted:", unfitted$message)))
   }
-  all_pr <- tryCatch(project(models, x, details = FALSE), error = function(e) NULL)
+  st <- tryCatch({
+    check_projection_dofs(models[[1]], x, call)
+    stack_recordings(x, models[[1]]$dofs)
+  }, error = function(e) NULL)
   for (j in seq_along(models)) {
-    pr <- if (!is.null(all_pr)) all_pr[[j]] else
-      tryCatch(project(models[[j]], x, details = FALSE), error = function(e) e)
+    pr <- tryCatch(
+      if (!is.null(st) && identical(models[[j]]$dofs, models[[1]]$dofs)) {
+        project_stacked(models[[j]], st, details = FALSE)[c("distance", "ids")]
+      } else {
+        project(models[[j]], x, details = FALSE)[c("distance", "ids")]
+      },
+      error = function(e) e)
     if (inherits(pr, "error")) {
       failures <- rbind(failures, data.frame(model = types[j],
                                              message = cli::ansi_strip(conditionMessage(pr))))
