@@ -4,7 +4,7 @@
 # parses the same lines some ten times faster, and per call its set-up costs
 # about as much as a 300-line file, so the files of a directory are read in a
 # few calls: their bytes are concatenated, in chunks of about
-# `graspdb14_fread_chunk` bytes, and each chunk is one fread.
+# `graspdb14_fread_chunk` bytes, and each chunk is one fread of that text.
 #
 # A file is "well formed" when it holds only digits, signs, points, exponent
 # letters, blanks and line ends and fread finds exactly 30 fields on each of
@@ -75,17 +75,15 @@ graspdb14_fread_group <- function(plain) {
 # One fread of concatenated file contents: the 30-column matrix, or NULL when
 # fread warns, fails, or does not find 30 fields on each of `n_lines` lines.
 graspdb14_fread_bytes <- function(bytes, n_lines) {
-  tmp <- tempfile("graspdb14-", fileext = ".txt")
-  on.exit(unlink(tmp), add = TRUE)
-  con <- file(tmp, "wb")
-  for (b in bytes) writeBin(b, con)
-  close(con)
+  # one string in memory (plain bytes hold no NUL): fread parses it in place,
+  # where a temporary file would cost a disk write of the whole directory
+  text <- rawToChar(unlist(bytes, use.names = FALSE))
   # a warning is noted and muffled, not caught: unwinding out of fread's C
   # code mid-read leaves it unable to read the next file
   warned <- FALSE
   dt <- withCallingHandlers(
     tryCatch(
-      data.table::fread(tmp, sep = " ", header = FALSE, skip = 0L, quote = "", dec = ".",
+      data.table::fread(text = text, sep = " ", header = FALSE, skip = 0L, quote = "", dec = ".",
                         colClasses = "numeric", fill = FALSE, blank.lines.skip = FALSE,
                         na.strings = NULL, strip.white = TRUE, showProgress = FALSE,
                         data.table = FALSE),
