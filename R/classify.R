@@ -135,9 +135,11 @@ classifier_distances <- function(models, x, method, call = rlang::caller_env()) 
 
 no_failures <- function() data.frame(model = character(0), message = character(0))
 
-# Eq. 4.4 for every (recording, model) pair. predict() on the whole model set
-# stacks the recordings once; if it fails, the models are projected one by one
-# so a single broken model costs only its own column.
+# Eq. 4.4 for every (recording, model) pair. The recordings are stacked once
+# and projected on one model at a time, keeping only the distances (the
+# scores and residuals of every model at once would be n x 33 x p x ncomp
+# numbers: 1 GB at ten times the default data); a model whose projection
+# fails costs only its own column.
 fpca_distances <- function(models, x, call = rlang::caller_env()) {
   # types whose model could not be fitted can never be predicted: say so
   unfitted <- failed_types(models)
@@ -153,11 +155,19 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
   types <- names(models)
   ids <- x$meta$id
   d <- matrix(NA_real_, length(ids), length(models), dimnames = list(ids, types))
-  all_pr <- tryCatch(predict(models, x, details = FALSE), error = function(e) NULL)
   first_error <- NULL
+  st <- tryCatch({
+    check_projection_dofs(models[[1]], x, call)
+    stack_recordings(x, models[[1]]$dofs)
+  }, error = function(e) NULL)
   for (j in seq_along(models)) {
-    pr <- if (!is.null(all_pr)) all_pr[[j]] else
-      tryCatch(predict(models[[j]], x, details = FALSE), error = function(e) e)
+    pr <- tryCatch(
+      if (!is.null(st) && identical(models[[j]]$dofs, models[[1]]$dofs)) {
+        project_stacked(models[[j]], st, details = FALSE)[c("distance", "ids")]
+      } else {
+        predict(models[[j]], x, details = FALSE)[c("distance", "ids")]
+      },
+      error = function(e) e)
     if (inherits(pr, "error")) {
       first_error <- first_error %||% pr
       failures <- rbind(failures, data.frame(model = types[j],

@@ -32,6 +32,11 @@ graspdb14_nominal_rate <- 60
 #' (about 60 Hz). A file with a single frame or without time progress gets the
 #' nominal 60 Hz, recorded in `rate_source`.
 #'
+#' Files that hold nothing but the 30 numbers of each line are parsed by
+#' [data.table::fread()], many files per call (about 1.5 million lines, 5,000
+#' files, in a few seconds); any other layout is read line by line, and the
+#' error reports name the file, line and field either way.
+#'
 #' @param path A motion file, several files, or directories.
 #' @param recursive Look into sub-directories of directories.
 #' @param pattern Regular expression selecting the files of a directory.
@@ -101,7 +106,12 @@ read_graspdb14 <- function(path, recursive = FALSE, pattern = "\\.txt$", datatyp
     hm_abort("No GraspDB14 motion files matching {.val {pattern}} in {.file {path}}.",
              "no_files", file = path, argument = "path", call = call)
   }
-  read <- read_each_file(files, function(f) read_graspdb14_file(f, truncated = truncated, call = call))
+  # the numbers of the well-formed files, read in a few large freads
+  fields <- graspdb14_fread_many(files)
+  names(fields) <- files
+  read <- read_each_file(files, function(f) {
+    read_graspdb14_file(f, truncated = truncated, fields = fields[[f]], call = call)
+  })
   failures <- read$failures
   recs <- read$results
   types <- vapply(recs, function(r) r$info$datatype, character(1))
@@ -133,10 +143,11 @@ read_graspdb14 <- function(path, recursive = FALSE, pattern = "\\.txt$", datatyp
   out
 }
 
-# Read one motion file: metadata from its name, then the content.
-read_graspdb14_file <- function(file, truncated = "error", call = rlang::caller_env()) {
+# Read one motion file: metadata from its name, then the content (`fields`:
+# its numbers when already read by graspdb14_fread_many()).
+read_graspdb14_file <- function(file, truncated = "error", fields = NULL, call = rlang::caller_env()) {
   info <- parse_graspdb14_name(file, call = call)
-  content <- parse_graspdb14_content(file, truncated = truncated, call = call)
+  content <- parse_graspdb14_content(file, truncated = truncated, fields = fields, call = call)
   # raw CyberGlove counts are whole numbers: a "raw" file with fractional
   # values holds something else (radians under the wrong name)
   if (identical(info$datatype, "raw")) {
@@ -217,27 +228,17 @@ regex_groups <- function(x, re) {
   stats::setNames(as.list(out), attr(r, "capture.names"))
 }
 
-# Parse the content of a motion file, vectorised: read the whole file at
-# once, split into lines and fields, validate, convert.
-parse_graspdb14_content <- function(file, truncated = "error", call = rlang::caller_env()) {
-  lines <- read_text_lines(file, call = call)
-  text <- lines$text
-  keep <- nzchar(text) & !startsWith(text, "#")
-  if (!any(keep)) {
-    abort_bad_file("{.file {file}} is empty: it has no data rows.", "empty_file",
-                   file = file, line = if (length(text)) length(text) else NA_integer_, call = call)
-  }
-  line_no <- which(keep)
-  tokens <- strsplit(text[keep], "[ \t\f\v]+", perl = TRUE)
-  checked <- check_field_counts(tokens, line_no, graspdb14_n_fields, file, truncated,
-                                what = "A row is date (3), time (3), switch and 23 sensor values.",
-                                call = call)
-  tokens <- checked$tokens
-  line_no <- checked$line_no
-  dropped <- checked$dropped
-  tok <- unlist(tokens, use.names = FALSE)
-  v <- parse_numeric_fields(tok, line_no, graspdb14_n_fields, file, call = call)
-  m <- matrix(v, ncol = graspdb14_n_fields, byrow = TRUE)
+# Parse the content of a motion file: the numbers of a well-formed file come
+# from data.table::fread() (read-graspdb14-fread.R); any other file is split
+# into lines and fields in R (graspdb14_text_fields()), which reads the
+# liberal layouts (comments, blank lines, tabs, CR line ends) and names the
+# first bad line and field. The checks of the values below are the same for both.
+parse_graspdb14_content <- function(file, truncated = "error", fields = NULL, call = rlang::caller_env()) {
+  fields <- fields %||% graspdb14_fread_many(file)[[1]] %||%
+    graspdb14_text_fields(file, truncated = truncated, call = call)
+  m <- fields$values
+  line_no <- fields$line_no
+  dropped <- fields$dropped
   switch_state <- m[, 7]
   bad_sw <- which(!switch_state %in% c(0, 1))
   if (length(bad_sw)) {
@@ -266,21 +267,55 @@ parse_graspdb14_content <- function(file, truncated = "error", call = rlang::cal
   angles <- m[, 8:30, drop = FALSE]
   colnames(angles) <- handmotion::cyberglove_sensors$name
   list(angles = angles, switch = as.integer(switch_state), time = elapsed,
-       start = as.POSIXct(stamp[1], origin = "1970-01-01", tz = "UTC"),
+       start = .POSIXct(stamp[1], tz = "UTC"),
        rate = rate, duration = duration, dropped_last_line = dropped)
 }
 
+# The numbers of a file of any layout the format allows, split into lines and
+# fields in R; a wrong field count, a truncated last line or a non-numeric
+# field is an error naming the line (and field).
+graspdb14_text_fields <- function(file, truncated = "error", call = rlang::caller_env()) {
+  lines <- read_text_lines(file, call = call)
+  text <- lines$text
+  keep <- nzchar(text) & !startsWith(text, "#")
+  if (!any(keep)) {
+    abort_bad_file("{.file {file}} is empty: it has no data rows.", "empty_file",
+                   file = file, line = if (length(text)) length(text) else NA_integer_, call = call)
+  }
+  line_no <- which(keep)
+  tokens <- strsplit(text[keep], "[ \t\f\v]+", perl = TRUE)
+  checked <- check_field_counts(tokens, line_no, graspdb14_n_fields, file, truncated,
+                                what = "A row is date (3), time (3), switch and 23 sensor values.",
+                                call = call)
+  tok <- unlist(checked$tokens, use.names = FALSE)
+  v <- parse_numeric_fields(tok, checked$line_no, graspdb14_n_fields, file, call = call)
+  list(values = matrix(v, ncol = graspdb14_n_fields, byrow = TRUE), line_no = checked$line_no,
+       dropped = checked$dropped)
+}
+
 # Seconds since 1970 (UTC, as written) from year, month, day, hour, minute,
-# seconds columns; NA for impossible dates or times.
+# seconds columns; NA for impossible dates or times (years 0-9999, the days of
+# each month, leap years). Calendar arithmetic (days from the civil date), not
+# strptime: this runs once per file, thousands of times in a directory read.
 graspdb14_time <- function(d) {
-  ok <- d[, 1] == round(d[, 1]) & d[, 2] %in% 1:12 & d[, 3] %in% 1:31 &
-    d[, 4] %in% 0:23 & d[, 5] %in% 0:59 & d[, 6] >= 0 & d[, 6] < 61
-  # the date part changes rarely: convert each distinct day once
-  day_key <- d[, 1] * 10000 + d[, 2] * 100 + d[, 3]
-  days <- unique(day_key[ok])
-  day_secs <- as.numeric(as.POSIXct(sprintf("%04d-%02d-%02d", days %/% 10000, days %/% 100 %% 100, days %% 100),
-                                    format = "%Y-%m-%d", tz = "UTC"))
-  out <- day_secs[match(day_key, days)] + d[, 4] * 3600 + d[, 5] * 60 + d[, 6]
+  y <- d[, 1]
+  mo <- d[, 2]
+  leap <- (y %% 4 == 0 & y %% 100 != 0) | y %% 400 == 0
+  month_days <- c(31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31)
+  whole_in <- function(v, lo, hi) v >= lo & v <= hi & v == floor(v)
+  ok <- whole_in(y, 0, 9999) & whole_in(mo, 1, 12) & whole_in(d[, 3], 1, 31) &
+    whole_in(d[, 4], 0, 23) & whole_in(d[, 5], 0, 59) & d[, 6] >= 0 & d[, 6] < 61
+  ok[is.na(ok)] <- FALSE
+  ok[ok] <- d[ok, 3] <= month_days[mo[ok]] + (mo[ok] == 2 & leap[ok])
+  # days since 1970-01-01 of the proleptic Gregorian date (H. Hinnant's
+  # days_from_civil): years start in March so that leap days come last
+  ys <- y - (mo <= 2)
+  era <- ys %/% 400
+  yoe <- ys - era * 400
+  doy <- (153 * (mo + 9 - 12 * (mo > 2)) + 2) %/% 5 + d[, 3] - 1
+  doe <- yoe * 365 + yoe %/% 4 - yoe %/% 100 + doy
+  days <- era * 146097 + doe - 719468
+  out <- days * 86400 + d[, 4] * 3600 + d[, 5] * 60 + d[, 6]
   out[!ok] <- NA_real_
   out
 }

@@ -7,7 +7,8 @@
  * sufficient statistics, the same E-step (for k = 2 the log-likelihood as
  * psum . C1 + sum log1p(exp(neg)), with R's plogis formulation when exp
  * overflows in any running start; otherwise a log-sum-exp), the same
- * stopping rule (an iteration raising the log-likelihood by less than tol),
+ * stopping rule (an iteration raising the log-likelihood by less than tol;
+ * gmm_em_fast() passes n times its per-observation tolerance),
  * the same failure tests (weight below 1/n, covariance determinant below the
  * floor, non-finite log-likelihood) and the same merging of starts that have
  * come together (checked every 10 iterations). The starts run in lock step,

@@ -305,3 +305,20 @@ test_that("a slowly converging mixture needs more than 500 iterations, not a fal
   expect_gt(fit$iterations, 500)
   expect_gt(fit$loglik, capped$loglik)
 })
+
+test_that("the fast engine's stopping rule is per observation: ten copies of the data, the same fit", {
+  # Ten copies of every point leave the maximum-likelihood fit and every EM
+  # step unchanged and multiply the log-likelihood by ten; a rule on the mean
+  # log-likelihood stops at the same iteration (an absolute one would not).
+  X <- planted_mixture(31, 120, 0.6, c(1.2, 0.6), S2 = matrix(c(1, 0.3, 0.3, 1.5), 2))
+  one <- gmm_fit(X, max_iter = 5000L)
+  ten <- gmm_fit(X[rep(seq_len(nrow(X)), 10), ], max_iter = 5000L)
+  expect_false(one$fallback)
+  expect_gt(one$iterations, 50L)
+  expect_equal(ten$iterations, one$iterations, tolerance = 0.02)
+  expect_equal(ten$loglik, 10 * one$loglik, tolerance = 1e-8)
+  expect_equal(ten$means, one$means, tolerance = 1e-4)
+  expect_equal(ten$weights, one$weights, tolerance = 1e-4)
+  # the reference engine keeps mixtools' rule: tol on the total
+  expect_identical(gmm_default_tol[["reference"]], 1e-8)
+})

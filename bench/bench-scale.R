@@ -1,0 +1,76 @@
+# Ten times the data (issue 16): simulate_grasps(subjects = 300), 89,100
+# recordings, simulated, fitted for all 33 types on 2 multisession workers
+# and classified in-sample (FPCA distance), beside the default data
+# (30 subjects) so that every figure comes with its 10x / 1x ratio (linear
+# cost: 10). Targets on the 2-core machine: fit 30 s or less, main-process
+# peak memory 4 GB or less. Also the EM iterations per mixture (the fast
+# engine's stopping rule is per observation, so they should not grow).
+# Peak memory is the kernel's high-water mark of resident memory (VmHWM),
+# reset before each step (/proc/<pid>/clear_refs), for the main process and
+# for each worker.
+# Run from the repository root: Rscript bench/bench-scale.R (BENCH_QUICK=1:
+# three types, 3 against 30 subjects, seconds)
+source("bench/_common.R")
+
+sizes <- c(x1 = bq(30, 3), x10 = bq(300, 30))
+types <- bq(1:33, 1:3)
+hwm_gb <- function(pid = Sys.getpid()) {
+  f <- sprintf("/proc/%d/status", pid)
+  if (!file.exists(f)) return(NA_real_)
+  as.numeric(gsub("\\D", "", grep("^VmHWM", readLines(f), value = TRUE))) / 2^20
+}
+reset_hwm <- function(pids) {
+  for (p in pids) try(cat("5\n", file = sprintf("/proc/%d/clear_refs", p)), silent = TRUE)
+}
+
+future::plan(future::multisession, workers = 2)
+workers <- unique(vapply(lapply(1:2, function(i) future::future({ Sys.sleep(0.5); Sys.getpid() })),
+                         future::value, numeric(1)))
+# warm-up: the first fit in a fresh worker loads the package there
+invisible(fit_grasp_models(simulate_grasps(subjects = 2, grasps = 1:2, seed = 9), seed = 1))
+
+measure <- function(subjects) {
+  gc()
+  reset_hwm(Sys.getpid())
+  t_sim <- system.time(g <- simulate_grasps(subjects = subjects, grasps = types))
+  mem_sim <- hwm_gb()
+  gc()
+  reset_hwm(c(Sys.getpid(), workers))
+  t_fit <- system.time(ms <- fit_grasp_models(g, seed = 1))
+  mem_fit <- hwm_gb()
+  mem_workers <- max(vapply(workers, hwm_gb, numeric(1)))
+  iters <- unlist(lapply(unclass(ms), function(m) {
+    c(vapply(m$gmm, function(x) as.numeric(x$iterations), numeric(1)), m$warp$gmm$iterations)
+  }))
+  gc()
+  reset_hwm(Sys.getpid())
+  t_cl <- system.time(cl <- classify(ms, g))
+  mem_cl <- hwm_gb()
+  acc <- mean(as.character(cl$predictions$predicted) == as.character(cl$predictions$truth))
+  c(recordings = length(g), simulate = t_sim[["elapsed"]], fit = t_fit[["elapsed"]],
+    fit_cpu_main = cpu_of(t_fit), classify = t_cl[["elapsed"]], iter_median = stats::median(iters),
+    iter_mean = mean(iters), at_cap = sum(iters >= 5000), mem_simulate = mem_sim, mem_fit = mem_fit,
+    mem_workers = mem_workers, mem_classify = mem_cl, accuracy = acc)
+}
+res <- vapply(sizes, measure, numeric(13))
+future::plan(future::sequential)
+
+labels <- c(recordings = "recordings", simulate = "simulate, elapsed (s)", fit = "fit, 2 workers, elapsed (s)",
+            fit_cpu_main = "fit, main-process CPU (s)", classify = "classify in-sample, elapsed (s)",
+            iter_median = "EM iterations per mixture, median", iter_mean = "EM iterations per mixture, mean",
+            at_cap = "EM runs at the 5000 cap", mem_simulate = "peak memory, simulate (GB)",
+            mem_fit = "peak memory, fit, main (GB)", mem_workers = "peak memory, fit, a worker (GB)",
+            mem_classify = "peak memory, classify, main (GB)", accuracy = "in-sample accuracy")
+cat(sprintf("\n%-38s %10s %10s %10s\n", "", names(sizes)[1], names(sizes)[2], "ratio"))
+for (f in rownames(res)) {
+  ratio <- res[f, 2] / res[f, 1]
+  cat(sprintf("%-38s %10.4g %10.4g %10.3g\n", labels[[f]], res[f, 1], res[f, 2], ratio))
+  unit <- if (grepl("GB", labels[[f]])) "GB" else if (grepl("(s)", labels[[f]], fixed = TRUE)) "s" else ""
+  bench_record(paste0(labels[[f]], ", 10x"), res[f, 2], unit)
+  if (!f %in% c("recordings", "accuracy")) bench_record(paste0(labels[[f]], ", 10x / 1x"), ratio, "x")
+}
+cat(sprintf("\n10x fit %.1f s (target 30 s: %s); main-process peak %.2f GB (target 4 GB: %s); load average %s\n",
+            res["fit", 2], if (res["fit", 2] <= 30) "met" else "MISSED",
+            max(res[c("mem_simulate", "mem_fit", "mem_classify"), 2]),
+            if (max(res[c("mem_simulate", "mem_fit", "mem_classify"), 2]) <= 4) "met" else "MISSED",
+            format(load_avg())))
