@@ -281,6 +281,15 @@ validate_sampler <- function(model, call = rlang::caller_env()) {
   if (length(model$warp$mean) != L || length(model$warp$components) != L * smp$warp$d) {
     bad("its warp basis does not match its warp sampler")
   }
+  if (identical(model$dependence$type, "copula")) {
+    cop <- model$dependence$copula
+    D <- NROW(cop$columns)
+    if (!is.list(cop) || !is.data.frame(cop$columns) || !is.double(cop$root) ||
+        !identical(dim(cop$root), c(D, D)) || !is.double(cop$quantiles) ||
+        NCOL(cop$quantiles) != D || NROW(cop$quantiles) != length(cop$z)) {
+      bad("its copula (columns, root, quantiles) is incomplete")
+    }
+  }
   invisible(model)
 }
 

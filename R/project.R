@@ -44,6 +44,7 @@ project.grasp_model <- function(object, x, details = TRUE, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), project.grasp_model, "project", call = call)
   check_grasps(x, call = call)
+  validate_projection_model(object, call)
   check_projection_dofs(object, x, call)
   project_stacked(object, stack_recordings(x, object$dofs), details = details)
 }
@@ -57,6 +58,7 @@ project.grasp_models <- function(object, x, details = FALSE, ...) {
   if (length(object) == 0L) {
     hm_abort("{.arg object} holds no grasp models.", "bad_input", argument = "object", call = call)
   }
+  for (m in object) validate_projection_model(m, call)
   check_projection_dofs(object[[1]], x, call)
   st <- stack_recordings(x, object[[1]]$dofs)
   lapply(unclass(object), function(m) project_stacked(m, st, details = details))
@@ -67,6 +69,36 @@ project.grasp_models <- function(object, x, details = FALSE, ...) {
 #' @export
 predict.grasp_model <- function(object, newdata, ...) {
   project.grasp_model(object, newdata, ...)
+}
+
+# A model whose basis was changed after fitting would reach the native kernel
+# with arrays of the wrong size (it refuses them, with an unclassed error):
+# say which part does not fit, as validate_sampler() does for generate().
+validate_projection_model <- function(model, call) {
+  bad <- function(what, .envir = parent.frame()) {
+    what <- cli::format_inline(what, .envir = .envir)
+    hm_abort(c("The model of {.val {model$grasp %||% \"?\"}} cannot project: {what}.",
+               i = "Was it changed after fitting? Refit it with {.fn fit_grasp_model}."),
+             "bad_model", argument = "object", grasp = model$grasp, call = call)
+  }
+  if (!inherits(model, "grasp_model")) bad("it is not a {.cls grasp_model}")
+  L <- model$target_length
+  p <- length(model$dofs)
+  k <- model$settings$ncomp
+  if (!is.character(model$dofs) || p == 0L) bad("it names no DoFs")
+  if (!is.numeric(L) || length(L) != 1L || !is.finite(L) || L < 2) bad("its target length is not a frame count")
+  if (!is.numeric(k) || length(k) != 1L || !is.finite(k) || k < 1) bad("its number of FPCs is not a count")
+  if (!is.double(model$basis$mean) || !identical(dim(model$basis$mean), as.integer(c(L, p)))) {
+    bad("its basis mean is not {L} x {p}")
+  }
+  if (!is.double(model$basis$components) || length(model$basis$components) != L * p * k) {
+    bad("its basis components are not {L} x {p} x {k}")
+  }
+  if (length(model$fpca) != p ||
+      !all(vapply(model$fpca, function(f) length(f$weights) == L, logical(1)))) {
+    bad("its quadrature weights do not match {L} frames for {p} DoF{?s}")
+  }
+  invisible(model)
 }
 
 check_projection_dofs <- function(model, x, call) {
