@@ -217,6 +217,7 @@ bad_input_cases <- function() {
     list("hand_3d: text", quote(hand_3d("x")), "bad_input"),
     list("hand_3d: zero rate", quote(hand_3d(g[1], rate = 0)), "bad_input"),
     list("hand_3d: unknown argument", quote(hand_3d(g[1], foo = 1)), "bad_input"),
+    list("hand_3d: a unit through ...", quote(hand_3d(g[1], unit = "rad")), "bad_input"),
     list("plot_pose_grid: no recordings per group", quote(plot_pose_grid(g, per_group = 0)), "bad_input"),
     list("plot_frame_counts: negative bins", quote(plot_frame_counts(g, binwidth = -1)), "bad_input"),
     # --- simulation, alignment and the rest
