@@ -75,12 +75,7 @@ predict.grasp_model <- function(object, newdata, ...) {
 # with arrays of the wrong size (it refuses them, with an unclassed error):
 # say which part does not fit, as validate_sampler() does for generate().
 validate_projection_model <- function(model, call) {
-  bad <- function(what, .envir = parent.frame()) {
-    what <- cli::format_inline(what, .envir = .envir)
-    hm_abort(c("The model of {.val {model$grasp %||% \"?\"}} cannot project: {what}.",
-               i = "Was it changed after fitting? Refit it with {.fn fit_grasp_model}."),
-             "bad_model", argument = "object", grasp = model$grasp, call = call)
-  }
+  bad <- model_fault(model, "project", "object", call)
   if (!inherits(model, "grasp_model")) bad("it is not a {.cls grasp_model}")
   L <- model$target_length
   p <- length(model$dofs)
