@@ -118,7 +118,8 @@ dtw_pair_reference <- function(x, template, window) {
 #' @param recordings A list of numeric matrices (frames x DoFs, same DoFs),
 #'   one grasp type; names are used as ids. A [grasps()] object is accepted.
 #' @param target_length Length `L` of the warped recordings; default
-#'   `round(mean(n_frames))`.
+#'   `round(mean(n_frames))`; at most 1,000,000 frames (the warped array
+#'   holds `n x L x p` numbers).
 #' @param engine `"fast"` or `"reference"` pairwise DTW (see
 #'   `dtw_align_pair()`).
 #' @param max_iter Maximum number of DBA iterations (0 = align to the linear
@@ -166,7 +167,7 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
   if (inherits(recordings, "grasps")) recordings <- recordings$recordings
   recs <- align_check_recordings(recordings, call)
   n_frames <- vapply(recs, nrow, integer(1))
-  L <- check_whole(target_length, "target_length", allow_null = TRUE, call = call) %||%
+  L <- check_whole(target_length, "target_length", max = 1e6, allow_null = TRUE, call = call) %||%
     max(1L, as.integer(round(mean(n_frames))))
   check_whole(max_iter, "max_iter", min = 0, call = call)
   overlong_check_mult(tol, "tol", call)

@@ -136,7 +136,10 @@ check_dots_for <- function(dots, fun, fun_name, exclude = character(), call = rl
   unknown <- setdiff(nms, setdiff(names(formals(fun)), c("...", exclude)))
   if (length(unknown)) {
     shown <- ifelse(nzchar(unknown), unknown, "<unnamed>")
-    hm_abort(c("{.arg ...} is passed to {.fn {fun_name}}, which has no argument{?s} {.val {shown}}.",
+    # an argument the caller sets itself is not "unknown" to `fun`
+    set_here <- intersect(unknown, exclude)
+    hm_abort(c(if (length(set_here)) "{.arg ...} cannot set {.val {set_here}}: this function sets {?it/them} itself."
+               else "{.arg ...} is passed to {.fn {fun_name}}, which has no argument{?s} {.val {shown}}.",
                i = "Arguments passed on must be named; see {.help [{.fn {fun_name}}](handmotion::{fun_name})}."),
              "bad_input", argument = "...", call = call)
   }

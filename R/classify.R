@@ -163,6 +163,7 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
   for (j in seq_along(models)) {
     pr <- tryCatch(
       if (!is.null(st) && identical(models[[j]]$dofs, models[[1]]$dofs)) {
+        validate_projection_model(models[[j]], call)  # before the native kernel
         project_stacked(models[[j]], st, details = FALSE)[c("distance", "ids")]
       } else {
         predict(models[[j]], x, details = FALSE)[c("distance", "ids")]

@@ -243,17 +243,24 @@ generation_limit_margin <- 0.05
 # in the kernel too: src/generate-kernel.c, HM_MAX_GENERATED_FRAMES).
 max_grasps_per_call <- 1e7
 
+# The error raiser of a model validator: bad(what) says that `model` cannot
+# `action` (generate, project) because of `what` (cli inline markup,
+# interpolated in the caller), as a handmotion_error_bad_model.
+model_fault <- function(model, action, arg, call) {
+  function(what, .envir = parent.frame()) {
+    what <- cli::format_inline(what, .envir = .envir)
+    hm_abort(c("The model of {.val {model$grasp %||% \"?\"}} cannot {action}: {what}.",
+               i = "Was it changed after fitting? Refit it with {.fn fit_grasp_model}."),
+             "bad_model", argument = arg, grasp = model$grasp, call = call)
+  }
+}
+
 # Check a model's stored sampler and basis against each other before they
 # reach native code: a model altered by hand (a component count that does
 # not match its arrays, a basis of another size) gets a classed error naming
 # what does not fit, not a crash.
 validate_sampler <- function(model, call = rlang::caller_env()) {
-  bad <- function(what, .envir = parent.frame()) {
-    what <- cli::format_inline(what, .envir = .envir)
-    hm_abort(c("The model of {.val {model$grasp %||% \"?\"}} cannot generate: {what}.",
-               i = "Was it changed after fitting? Refit it with {.fn fit_grasp_model}."),
-             "bad_model", argument = "x", grasp = model$grasp, call = call)
-  }
+  bad <- model_fault(model, "generate", "x", call)
   if (!inherits(model, "grasp_model")) bad("it is not a {.cls grasp_model}")
   smp <- model$sampler %||% build_sampler(model)
   B <- model$basis
@@ -280,6 +287,15 @@ validate_sampler <- function(model, call = rlang::caller_env()) {
   if (length(B$components) != L * p * smp$dofs$d) bad("its basis components do not match its sampler")
   if (length(model$warp$mean) != L || length(model$warp$components) != L * smp$warp$d) {
     bad("its warp basis does not match its warp sampler")
+  }
+  if (identical(model$dependence$type, "copula")) {
+    cop <- model$dependence$copula
+    D <- NROW(cop$columns)
+    if (!is.list(cop) || !is.data.frame(cop$columns) || !is.double(cop$root) ||
+        !identical(dim(cop$root), c(D, D)) || !is.double(cop$quantiles) ||
+        NCOL(cop$quantiles) != D || NROW(cop$quantiles) != length(cop$z)) {
+      bad("its copula (columns, root, quantiles) is incomplete")
+    }
   }
   invisible(model)
 }

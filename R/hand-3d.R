@@ -80,7 +80,8 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
   }
   background <- grDevices::rgb(t(bg), maxColorValue = 255)  # R names ("grey90") are not CSS colours
   rate <- check_number(rate, "rate", min = 0, min_open = TRUE, allow_null = TRUE, call = call)
-  check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton"),
+  # (the unit comes with each hand, so it is not one of the arguments passed on)
+  check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton", "unit"),
                  call = call)
   hands <- hand_3d_inputs(x, recording, rate, call)
   if (length(hands) > hand_3d_max) {

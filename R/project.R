@@ -41,6 +41,7 @@ predict.grasp_model <- function(object, newdata, details = TRUE, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), predict.grasp_model, "predict.grasp_model", call = call)
   check_grasps(newdata, "newdata", call = call)
+  validate_projection_model(object, call)
   check_projection_dofs(object, newdata, call)
   project_stacked(object, stack_recordings(newdata, object$dofs), details = details)
 }
@@ -55,9 +56,35 @@ predict.grasp_models <- function(object, newdata, details = FALSE, ...) {
   if (length(models) == 0L) {
     hm_abort("{.arg object} holds no fitted grasp models.", "bad_input", argument = "object", call = call)
   }
+  for (m in models) validate_projection_model(m, call)
   check_projection_dofs(models[[1]], newdata, call)
   st <- stack_recordings(newdata, models[[1]]$dofs)
   lapply(models, function(m) project_stacked(m, st, details = details))
+}
+
+# A model whose basis was changed after fitting would reach the native kernel
+# with arrays of the wrong size (it refuses them, with an unclassed error):
+# say which part does not fit, as validate_sampler() does for generate().
+validate_projection_model <- function(model, call) {
+  bad <- model_fault(model, "project", "object", call)
+  if (!inherits(model, "grasp_model")) bad("it is not a {.cls grasp_model}")
+  L <- model$target_length
+  p <- length(model$dofs)
+  k <- model$settings$ncomp
+  if (!is.character(model$dofs) || p == 0L) bad("it names no DoFs")
+  if (!is.numeric(L) || length(L) != 1L || !is.finite(L) || L < 2) bad("its target length is not a frame count")
+  if (!is.numeric(k) || length(k) != 1L || !is.finite(k) || k < 1) bad("its number of FPCs is not a count")
+  if (!is.double(model$basis$mean) || !identical(dim(model$basis$mean), as.integer(c(L, p)))) {
+    bad("its basis mean is not {L} x {p}")
+  }
+  if (!is.double(model$basis$components) || length(model$basis$components) != L * p * k) {
+    bad("its basis components are not {L} x {p} x {k}")
+  }
+  if (length(model$fpca) != p ||
+      !all(vapply(model$fpca, function(f) length(f$weights) == L, logical(1)))) {
+    bad("its quadrature weights do not match {L} frames for {p} DoF{?s}")
+  }
+  invisible(model)
 }
 
 check_projection_dofs <- function(model, x, call) {
