@@ -67,6 +67,10 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
   if (is.null(grasps)) {
     types <- present
   } else {
+    if (length(grasps) == 0L) {
+      hm_abort("{.arg grasps} must name at least one grasp type (or be {.code NULL} for all).",
+               "bad_input", argument = "grasps", call = call)
+    }
     types <- as.character(as_feix_grasp(grasps, call = call))
     absent <- setdiff(types, present)
     if (length(absent)) {
@@ -75,8 +79,9 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
     }
   }
   if (length(types) == 0L) {
-    hm_abort("{.arg x} has no labelled recordings: every grasp is {.val NA}.",
-             "bad_input", argument = "x", call = call)
+    hm_abort(if (length(x) == 0L) "{.arg x} holds no recordings (an empty selection?)." else
+               "{.arg x} has no labelled recordings: every grasp is {.val NA}.",
+             "no_labels", argument = "x", call = call)
   }
   # Ship each worker only its own type's recordings.
   parts <- lapply(types, function(g) x[!is.na(x$meta$grasp) & x$meta$grasp == g])

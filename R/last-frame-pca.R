@@ -65,7 +65,8 @@ fit_last_frame_pca <- function(x, k = 5, grasps = NULL) {
 labelled_types <- function(x, grasps = NULL, call = rlang::caller_env()) {
   have <- feix_order(unique(as.character(stats::na.omit(x$meta$grasp))))
   if (length(have) == 0L) {
-    hm_abort("{.arg x} has no labelled recordings: every {.field grasp} is NA.", "no_labels",
+    hm_abort(if (length(x) == 0L) "{.arg x} holds no recordings (an empty selection?)." else
+               "{.arg x} has no labelled recordings: every {.field grasp} is NA.", "no_labels",
              argument = "x", call = call)
   }
   if (is.null(grasps)) return(have)

@@ -199,3 +199,10 @@ test_that("HUST directories: unreadable files, binary files and a binary manifes
   write.csv(man, file.path(dir, "manifest.csv"), row.names = FALSE)
   expect_error(suppressWarnings(read_hust(dir)), class = "handmotion_error_no_files")
 })
+
+test_that("an empty selection is said as such, not as unlabelled recordings", {
+  g <- simulate_grasps(subjects = 2, grasps = 1, objects = 1, trials = 2, seed = 1)
+  empty <- g[g$meta$subject == "nobody"]
+  expect_error(fit_grasp_models(empty), "no recordings", class = "handmotion_error_no_labels")
+  expect_error(fit_grasp_models(g, grasps = integer(0)), "at least one", class = "handmotion_error_bad_input")
+})
