@@ -38,8 +38,10 @@ graspdb14_fread_many <- function(files) {
 # blanks and line ends; NULL otherwise (or when it is empty or unreadable).
 graspdb14_plain_bytes <- function(file) {
   size <- file.size(file)
-  if (is.na(size) || size == 0) return(NULL)
-  bytes <- tryCatch(readBin(file, "raw", size), error = function(e) NULL)
+  # a folder, broken link or unreadable file is left to the per-file reader,
+  # which reports it (unreadable_file) without R's connection warnings
+  if (is.na(size) || size == 0 || dir.exists(file) || file.access(file, 4L) != 0L) return(NULL)
+  bytes <- tryCatch(suppressWarnings(readBin(file, "raw", size)), error = function(e) NULL)
   if (length(bytes) != size) return(NULL)
   counts <- .Call(hm_byte_counts, bytes)
   if (sum(counts[graspdb14_plain_codes]) != size) return(NULL)
