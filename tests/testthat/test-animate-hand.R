@@ -23,7 +23,7 @@ test_that("long recordings are thinned and grasps give a title", {
   animate_hand(g, f, recording = 2, max_frames = 50)
   doc <- xml2::read_html(f)
   expect_length(xml2::xml_find_all(doc, "//svg/g"), 50L)
-  expect_match(xml2::xml_text(xml2::xml_find_first(doc, "//h3")), "Lateral")
+  expect_match(xml2::xml_text(xml2::xml_find_first(doc, "//div[@class='hm-title']")), "Lateral")
   expect_error(animate_hand(g, f, recording = 3), class = "handmotion_error_bad_input")
 })
 
