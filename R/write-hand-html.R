@@ -91,7 +91,8 @@ hand_animation_html <- function(pose, skeleton, keep, interval_ms, fps, size, ti
     "<style>body{font-family:sans-serif}</style>",
     "</head><body>",
     sprintf('<div class="handmotion-animation" style="display:inline-block;font:13px sans-serif">'),
-    paste0("<h3>", esc(title), "</h3>"),
+    # a bold line, not a heading: copied into a document it must not join its outline
+    paste0("<div class=\"hm-title\" style=\"font-weight:bold;font-size:15px;margin:6px 0\">", esc(title), "</div>"),
     sprintf('<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" viewBox="0 0 %d %d" %s>',
             size, size, size, size, svg_style),
     groups, "</svg>",
@@ -124,7 +125,7 @@ hand_animation_html <- function(pose, skeleton, keep, interval_ms, fps, size, ti
     "})(document.currentScript.parentNode);", "</script>", "</div>", "</body></html>")
 }
 
-# Playback speeds offered by animate_hand()'s page.
+# Playback speeds offered by write_hand_animation()'s HTML page.
 animation_speeds <- c(0.1, 0.25, 0.5, 1, 2)
 
 # Joint names from the root out to each fingertip, named by finger.

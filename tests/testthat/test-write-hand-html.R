@@ -25,7 +25,7 @@ test_that("long recordings are thinned and grasps give a title", {
   write_hand_animation(g, f, recording = 2, max_frames = 50)
   doc <- xml2::read_html(f)
   expect_length(xml2::xml_find_all(doc, "//svg/g"), 50L)
-  expect_match(xml2::xml_text(xml2::xml_find_first(doc, "//h3")), "Lateral")
+  expect_match(xml2::xml_text(xml2::xml_find_first(doc, "//div[@class='hm-title']")), "Lateral")
   expect_error(write_hand_animation(g, f, recording = 3), class = "handmotion_error_bad_input")
   # one hand per page: several are a video's job
   expect_error(write_hand_animation(list(a = g[1], b = g[2]), f), class = "handmotion_error_bad_input")
