@@ -6,11 +6,23 @@
 #' assignment (`vf1`, `vf2`, `vf3`: "palm", or finger numbers 1 = thumb to
 #' 5 = little finger); and whether the thumb is abducted or adducted.
 #'
+#' The columns are those of Feix et al. (2016), Fig. 4, the overview of the
+#' 33 types. Checked against that figure: Extension Type (18) has VF2 2-4;
+#' Tripod Variation (21) is intermediate; Sphere 4 Finger (26) and Sphere 3
+#' Finger (28) are pad opposition with VF1 the thumb; Ventral (32) has VF2 2.
+#' In Adduction Grip (23) the object sits between the sides of index and
+#' middle finger; the one virtual finger the taxonomy lists for it is 3, in
+#' the place other types give VF2 (so read in a third-party annotation tool
+#' built on the taxonomy; the figure itself was not at hand), so VF1 is the
+#' index (2) and VF2 the middle finger (3). The simulated posture would be
+#' the same either way (both fingers take the `side` role).
+#'
 #' @format A data frame with 33 rows and 8 columns: `id`, `name`, `class`,
 #'   `opposition`, `vf1`, `vf2`, `vf3`, `thumb`.
 #' @source Feix, T., Romero, J., Schmiedmayer, H.-B., Dollar, A. M. and Kragic,
 #'   D. (2016). The GRASP taxonomy of human grasp types. *IEEE Transactions on
-#'   Human-Machine Systems* 46(1), 66-77. Built by `data-raw/feix_taxonomy.R`.
+#'   Human-Machine Systems* 46(1), 66-77, Fig. 4. Built by
+#'   `data-raw/feix_taxonomy.R`.
 #' @examples
 #' feix_taxonomy[feix_taxonomy$class == "precision", c("id", "name", "vf2")]
 "feix_taxonomy"

@@ -4,6 +4,23 @@
 # Systems 46(1), 66-77: the 33 types with their class (power / intermediate /
 # precision), opposition type, virtual-finger assignment and thumb position.
 # Names follow the thesis' Table 5.1 (Jeppsson 2017), which numbers the types 1-33.
+# The columns follow the paper's Fig. 4 (the overview of the 33 types with class,
+# opposition type, virtual fingers and thumb position). Checked against it (the
+# first version was typed from memory): 18 Extension Type VF2 2-4 (not 2-5);
+# 21 Tripod Variation intermediate (not precision); 26 Sphere 4 Finger and
+# 28 Sphere 3 Finger pad opposition with VF1 the thumb (not palm); 32 Ventral
+# VF2 2 (not 3).
+# 23 Adduction Grip: VF1 2 (index), VF2 3 (middle), kept. The object is held
+# between the sides of index and middle finger; the taxonomy lists one
+# finger, 3, as the type's virtual finger, in the place every other type
+# uses for VF2. Source of that reading: a third-party annotation tool built
+# on the taxonomy (a MATLAB GUI found by code search) writes "3" in its VF2
+# field for Adduction Grip, and agrees with Fig. 4 where we could check it
+# (2-4 for Extension Type, intermediate 3-4 for Tripod Variation, pad for
+# the two sphere types, 2 for Ventral); the paper's figure itself was not at
+# hand. So the index is the opposing VF1. Swapping
+# them would not change the simulated posture (both fingers take the `side`
+# role); it decides only which finger's flexion follows the object size.
 tax <- read.table(text = "
 id|name|class|opposition|vf1|vf2|vf3|thumb
 1|Large Diameter|power|palm|palm|2-5||abducted
@@ -23,21 +40,21 @@ id|name|class|opposition|vf1|vf2|vf3|thumb
 15|Fixed Hook|power|palm|palm|2-5||adducted
 16|Lateral|intermediate|side|1|2||adducted
 17|Index Finger Extension|power|palm|palm|3-5|2|adducted
-18|Extension Type|power|pad|1|2-5||abducted
+18|Extension Type|power|pad|1|2-4||abducted
 19|Distal Type|power|pad|1|2-5||abducted
 20|Writing Tripod|precision|side|1|3|2|abducted
-21|Tripod Variation|precision|side|1|3-4|2|abducted
+21|Tripod Variation|intermediate|side|1|3-4|2|abducted
 22|Parallel Extension|precision|pad|1|2-5||adducted
 23|Adduction Grip|intermediate|side|2|3||abducted
 24|Tip Pinch|precision|pad|1|2||abducted
 25|Lateral Tripod|intermediate|side|1|3|2|adducted
-26|Sphere 4 Finger|power|palm|palm|2-4||abducted
+26|Sphere 4 Finger|power|pad|1|2-4||abducted
 27|Quadpod|precision|pad|1|2-4||abducted
-28|Sphere 3 Finger|power|palm|palm|2-3||abducted
+28|Sphere 3 Finger|power|pad|1|2-3||abducted
 29|Stick|intermediate|side|1|2||adducted
 30|Palmar|power|palm|palm|2-5||adducted
 31|Ring|power|pad|1|2||abducted
-32|Ventral|intermediate|side|1|3||adducted
+32|Ventral|intermediate|side|1|2||adducted
 33|Inferior Pincer|precision|pad|1|2||abducted
 ", sep = "|", header = TRUE, stringsAsFactors = FALSE, strip.white = TRUE,
    colClasses = "character")

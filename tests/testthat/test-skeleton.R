@@ -39,8 +39,13 @@ test_that("the default hand has GraspDB14's joints and anthropometric lengths", 
   pos <- skeleton_rest_positions(s)
   # middle fingertip one hand length (189 mm) from the wrist crease
   expect_equal(sqrt(sum(pos["mf-tip", ]^2)), 189, tolerance = 0.01)
-  # Buchholz et al.: middle proximal phalanx 0.277 hand lengths
-  expect_equal(sqrt(sum((pos["mf-pip", ] - pos["mf-mcp", ])^2)), 0.277 * 189, tolerance = 0.01)
+  # Buchholz et al.: middle proximal phalanx 0.266 hand lengths (not An et
+  # al.'s ratio-derived 0.277); index metacarpal with its hand-breadth term
+  seg <- function(a, b) sqrt(sum((pos[b, ] - pos[a, ])^2))
+  expect_equal(seg("mf-mcp", "mf-pip"), 0.266 * 189, tolerance = 0.01)
+  expect_equal(seg("if-mcp", "if-pip"), 0.245 * 189, tolerance = 0.01)
+  expect_equal(seg("if-cmc", "if-mcp"), sqrt((0.374 * 189)^2 + (0.126 * 84)^2), tolerance = 0.01)
+  expect_equal(seg("mf-cmc", "mf-mcp"), 0.373 * 189, tolerance = 0.01)
   # finger lengths ordered as in a real hand: middle > index, ring > little
   reach <- sqrt(rowSums(pos^2))
   expect_gt(reach["mf-tip"], reach["if-tip"])
