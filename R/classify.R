@@ -153,10 +153,10 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
   types <- names(models)
   ids <- x$meta$id
   d <- matrix(NA_real_, length(ids), length(models), dimnames = list(ids, types))
-  all_pr <- tryCatch(predict(models, x, details = FALSE), error = function(e) NULL)
+  all_pr <- tryCatch(stats::predict(models, x, details = FALSE), error = function(e) NULL)
   for (j in seq_along(models)) {
     pr <- if (!is.null(all_pr)) all_pr[[j]] else
-      tryCatch(predict(models[[j]], x, details = FALSE), error = function(e) e)
+      tryCatch(stats::predict(models[[j]], x, details = FALSE), error = function(e) e)
     if (inherits(pr, "error")) {
       failures <- rbind(failures, data.frame(model = types[j],
                                              message = cli::ansi_strip(conditionMessage(pr))))
