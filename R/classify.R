@@ -166,7 +166,7 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
         validate_projection_model(models[[j]], call)  # before the native kernel
         project_stacked(models[[j]], st, details = FALSE)[c("distance", "ids")]
       } else {
-        predict(models[[j]], x, details = FALSE)[c("distance", "ids")]
+        stats::predict(models[[j]], x, details = FALSE)[c("distance", "ids")]
       },
       error = function(e) e)
     if (inherits(pr, "error")) {

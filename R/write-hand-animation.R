@@ -56,8 +56,8 @@
 #' @seealso [hand_3d()] to turn the hand interactively.
 #' @export
 #' @examples
-#' \donttest{
 #' g <- simulate_grasps(subjects = 1, grasps = 17, objects = 1, trials = 2, seed = 1)
+#' \donttest{
 #' f <- write_hand_animation(list(first = g[1], second = g[2]), tempfile(fileext = ".gif"),
 #'                           max_frames = 12, width = 320, height = 240)
 #' attr(f, "frames")
