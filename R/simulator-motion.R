@@ -187,10 +187,8 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   rest <- rep_row(p$rest, N) + p$subject_rest_share * offset[s_idx, , drop = FALSE] + p$rest_sd * e_rest
   amp <- p$aperture_scale[g] * design$size^p$object_aperture * exp(p$aperture_sd * e_ap)
   # pre-shaping: on the way, the open hand already leans towards the type's
-  # final posture (a share `preshape` x `preshape_scale` of its distance from
-  # the mean posture, at most all of it)
-  lean <- min(1, p$preshape * p$preshape_scale[[g]])
-  peak <- rest + outer(amp, p$aperture) + rep_row(lean * (base - centre), N)
+  # final posture (a share `preshape` of its distance from the mean posture)
+  peak <- rest + outer(amp, p$aperture) + rep_row(p$preshape * (base - centre), N)
 
   # ---- trajectories -----------------------------------------------------------
   Ft <- sum(n)
