@@ -40,7 +40,8 @@ def test_directory_read_reports_failures(hm, tmp_path, ro):
     good = files[0]
     (tmp_path / good).write_bytes(open(os.path.join(src, good), "rb").read())
     (tmp_path / "01_05_ex03-rad-001-grasp-su01.txt").write_text("2014 09 15 08 02 09.0 1 0.1 0.2\n")
-    g = hm.read_graspdb14(str(tmp_path))
+    with pytest.warns(hm.HandmotionWarning, match="could not be read"):
+        g = hm.read_graspdb14(str(tmp_path))
     assert len(g) == 1
     assert len(g.failures) == 1
     assert "01_05_ex03" in g.failures["file"].iloc[0]
