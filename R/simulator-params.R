@@ -124,8 +124,8 @@
 #' (2017), chapter 5, type by type and over seeds (the table below says what
 #' holds on every seed and what does not).
 #' `data-raw/calibrate-simulator.R` (rerun it with
-#' `Rscript data-raw/calibrate-simulator.R path/to/thesis-tables`; 13.5
-#' minutes on two cores shared with other work) tunes only simulator parameters, by seeded,
+#' `Rscript data-raw/calibrate-simulator.R path/to/thesis-tables`; 7-14
+#' minutes on two cores shared with other work, from the shipped values) tunes only simulator parameters, by seeded,
 #' deterministic updates of all 33 types at once, every figure the mean over
 #' seeds 1-5 (3 in the early rounds), and writes them to
 #' `data-raw/simulator-calibration.csv`, which `data-raw/simulator-params.R`
@@ -139,8 +139,11 @@
 #'    explained by two FPCs per DoF matches Table 5.2, and `preshape_scale`
 #'    per type until the per-type recall of the FPCA classifier follows Table
 #'    5.6's: the thesis' recalls moved by one common shift on the logit scale
-#'    (0.33) so that their mean is the thesis' accuracy, because some types
-#'    keep a higher recall than the thesis' even without pre-shaping.
+#'    (0.37) so that their mean is the thesis' accuracy, because some types
+#'    keep a higher recall than the thesis' even without pre-shaping. Types
+#'    whose jitter is at its floor and still explain too little (the
+#'    pinches) would pull the overall Table 5.2 mean down; the 18 types that
+#'    can still move aim 0.6 points above their Table 5.2 value instead.
 #'
 #' The frame counts (`target_frames`) are Table 5.1's, exactly.
 #' [calibration_report()] recomputes every figure from the package's outputs
@@ -150,19 +153,21 @@
 #' | figure (thesis) | aim | achieved |
 #' |---|---|---|
 #' | Table 5.1 target frames | equal | equal for all 33 types, every seed |
-#' | Table 5.2 mean variance per type | within 2 points | 32 types on every seed; Palmar Pinch (98.70) 2.24 below on average (2.0-2.7): it stays near 96.5 even without timing jitter |
-#' | Table 5.2 overall mean (95.90) | within 0.5 (package: 1) | 95.47 (95.2-96.0); beyond 0.5 on 4 of 10 seeds |
+#' | Table 5.2 mean variance per type | within 2 points | 31 types on every seed; Palmar Pinch (98.70) 2.24 below on average (2.0-2.7 on every seed): it stays near 96.5 even without timing jitter; Tripod Variation 2.16 on one seed |
+#' | Table 5.2 overall mean (95.90) | within 0.5 (package: 1) | 95.71 (95.49-96.21), every seed |
 #' | Table 5.7 pc5 per type | within 0.05 | largest gap 0.029-0.044, 0.052 on seed 9 |
-#' | last-frame PCA accuracy (64.0%) | within 4 points (package: 5) | 64.2% (59.4-66.1%); 4.6 below on seed 5 |
-#' | FPCA accuracy (35.1%) | within 4 points (package: 5) | 36.0% (34.9-37.6%), every seed |
-#' | Table 5.8 per-type recall, weighted correlation with the thesis | at least 0.7 | 0.89 (0.83-0.94), every seed |
-#' | Table 5.6 per-type recall, weighted correlation with the thesis | at least 0.7 | 0.78 (0.73-0.85), every seed |
-#' | thesis confusion groups among our 10 largest Table 5.6 cells | at least 2 of 3 | 1 (0-2): not reached |
-#' | Table 5.3 counts (28 / 14 / 12 / 9) | within 5 | 11 / 4.6 / 2.6 / 29: not reached |
+#' | last-frame PCA accuracy (64.0%) | within 4 points (package: 5) | 64.2% (59.6-66.2%); 4.4 below on seed 5 |
+#' | FPCA accuracy (35.1%) | within 4 points (package: 5) | 36.0% (34.9-37.2%), every seed |
+#' | Table 5.8 per-type recall, weighted correlation with the thesis | at least 0.7 | 0.89 (0.83-0.93), every seed |
+#' | Table 5.6 per-type recall, weighted correlation with the thesis | at least 0.7 | 0.80 (0.74-0.86), every seed |
+#' | thesis confusion groups among our 10 largest Table 5.6 cells | at least 2 of 3 | 1 on every seed (on seed 1: adducted thumb taken for light tool): not reached |
+#' | Table 5.3 counts (28 / 14 / 12 / 9) | within 5 | 10.4 / 3.9 / 2.4 / 29: not reached |
 #'
 #' Not calibrated: the confusions between types and the Table 5.3 counts. In
-#' our Table 5.3 one model is the closest of 23-32 types (the thesis: palmar
-#' pinch, of nine), so few types and models have their minimum at home.
+#' our Table 5.3 one model (Distal Type on seed 1, whose `posture_spread`
+#' sits at the 0.3 floor, near the mean posture of all types, for its thesis
+#' recall of 0.36) is the closest of 24-33 types (the thesis: palmar pinch,
+#' of nine), so few types and models have their minimum at home.
 #'
 #' Calibrated values per type (`preshape` 0.262, `final_variability` 1):
 #' `posture_spread` moves the type's final posture away from (above 1) or
@@ -175,39 +180,39 @@
 #' the taxonomy's few attributes cannot say, not anatomical measurements.
 #' | type | nearest taxonomy posture (deg) | posture_spread | lean (preshape x preshape_scale) | factor_scale | jitter_scale |
 #' |---|---|---|---|---|---|
-#' | 1 Large Diameter | Power Disk (18) | 1.25 | 0.45 | 0.86 | 0.56 |
-#' | 2 Small Diameter | Medium Wrap (52) | 0.45 | 0.40 | 0.21 | 0.38 |
-#' | 3 Medium Wrap | Sphere 3 Finger (31) | 1.23 | 0.33 | 0.32 | 0.25 |
-#' | 4 Adducted Thumb | Light Tool (11) | 0.61 | 0.38 | 0.10 | 0.06 |
-#' | 5 Light Tool | Adducted Thumb (11) | 0.42 | 0.86 | 0.83 | 0.05 |
-#' | 6 Prismatic 4 Finger | Prismatic 3 Finger (21) | 1.41 | 0.01 | 0.70 | 0.02 |
-#' | 7 Prismatic 3 Finger | Prismatic 4 Finger (21) | 1.15 | 0.01 | 0.89 | 0.02 |
-#' | 8 Prismatic 2 Finger | Prismatic 3 Finger (21) | 0.82 | 0.09 | 1.16 | 0.02 |
+#' | 1 Large Diameter | Power Disk (18) | 1.26 | 0.40 | 0.86 | 0.43 |
+#' | 2 Small Diameter | Medium Wrap (52) | 0.45 | 0.29 | 0.20 | 0.21 |
+#' | 3 Medium Wrap | Sphere 3 Finger (31) | 1.22 | 0.29 | 0.31 | 0.11 |
+#' | 4 Adducted Thumb | Light Tool (11) | 0.61 | 0.43 | 0.10 | 0.05 |
+#' | 5 Light Tool | Adducted Thumb (11) | 0.42 | 0.89 | 0.83 | 0.03 |
+#' | 6 Prismatic 4 Finger | Prismatic 3 Finger (21) | 1.42 | 0.01 | 0.71 | 0.02 |
+#' | 7 Prismatic 3 Finger | Prismatic 4 Finger (21) | 1.16 | 0.01 | 0.89 | 0.02 |
+#' | 8 Prismatic 2 Finger | Prismatic 3 Finger (21) | 0.82 | 0.04 | 1.16 | 0.02 |
 #' | 9 Palmar Pinch | Tripod (13) | 0.88 | 1.00 | 1.67 | 0.02 |
-#' | 10 Power Disk | Power Sphere (15) | 1.38 | 0.01 | 0.25 | 1.05 |
-#' | 11 Power Sphere | Power Disk (15) | 0.91 | 0.23 | 0.74 | 0.89 |
-#' | 12 Precision Disk | Precision Sphere (24) | 1.23 | 0.01 | 0.36 | 0.56 |
-#' | 13 Precision Sphere | Quadpod (7) | 2.10 | 0.06 | 0.62 | 0.02 |
-#' | 14 Tripod | Quadpod (7) | 2.21 | 0.02 | 1.07 | 0.02 |
-#' | 15 Fixed Hook | Adducted Thumb (61) | 0.49 | 0.40 | 1.34 | 0.02 |
-#' | 16 Lateral | Ventral (10) | 1.83 | 0.01 | 1.01 | 0.46 |
-#' | 17 Index Finger Extension | Tripod Variation (55) | 0.64 | 0.21 | 0.76 | 0.02 |
-#' | 18 Extension Type | Prismatic 3 Finger (43) | 0.30 | 0.07 | 1.08 | 0.02 |
-#' | 19 Distal Type | Precision Sphere (17) | 0.30 | 0.01 | 0.85 | 0.66 |
-#' | 20 Writing Tripod | Lateral Tripod (11) | 0.48 | 0.01 | 0.90 | 1.04 |
-#' | 21 Tripod Variation | Writing Tripod (15) | 0.57 | 0.01 | 0.67 | 1.19 |
-#' | 22 Parallel Extension | Prismatic 4 Finger (48) | 1.09 | 0.22 | 0.79 | 0.02 |
-#' | 23 Adduction Grip | Palmar (47) | 0.83 | 0.06 | 1.09 | 0.02 |
-#' | 24 Tip Pinch | Inferior Pincer (16) | 0.75 | 0.06 | 1.77 | 0.02 |
-#' | 25 Lateral Tripod | Writing Tripod (11) | 0.49 | 0.41 | 1.14 | 0.02 |
-#' | 26 Sphere 4 Finger | Sphere 3 Finger (22) | 0.48 | 1.00 | 0.81 | 0.47 |
-#' | 27 Quadpod | Precision Sphere (7) | 1.73 | 0.15 | 0.66 | 0.02 |
-#' | 28 Sphere 3 Finger | Sphere 4 Finger (22) | 0.64 | 0.25 | 1.00 | 0.33 |
-#' | 29 Stick | Ventral (5) | 0.89 | 0.01 | 0.95 | 0.80 |
-#' | 30 Palmar | Adduction Grip (47) | 1.53 | 0.01 | 1.20 | 0.48 |
-#' | 31 Ring | Sphere 3 Finger (25) | 0.59 | 0.81 | 0.93 | 0.26 |
-#' | 32 Ventral | Stick (5) | 1.51 | 0.50 | 0.81 | 0.13 |
-#' | 33 Inferior Pincer | Tripod (10) | 2.28 | 0.41 | 0.88 | 0.02 |
+#' | 10 Power Disk | Power Sphere (15) | 1.38 | 0.01 | 0.25 | 0.94 |
+#' | 11 Power Sphere | Power Disk (15) | 0.91 | 0.43 | 0.74 | 0.77 |
+#' | 12 Precision Disk | Precision Sphere (24) | 1.24 | 0.01 | 0.36 | 0.13 |
+#' | 13 Precision Sphere | Quadpod (7) | 2.09 | 0.08 | 0.62 | 0.02 |
+#' | 14 Tripod | Quadpod (7) | 2.21 | 0.01 | 1.07 | 0.02 |
+#' | 15 Fixed Hook | Adducted Thumb (61) | 0.49 | 0.46 | 1.34 | 0.02 |
+#' | 16 Lateral | Ventral (10) | 1.84 | 0.01 | 1.01 | 0.23 |
+#' | 17 Index Finger Extension | Tripod Variation (55) | 0.65 | 0.31 | 0.76 | 0.02 |
+#' | 18 Extension Type | Prismatic 3 Finger (43) | 0.30 | 0.08 | 1.08 | 0.02 |
+#' | 19 Distal Type | Precision Sphere (17) | 0.30 | 0.01 | 0.85 | 0.52 |
+#' | 20 Writing Tripod | Lateral Tripod (11) | 0.48 | 0.01 | 0.90 | 0.89 |
+#' | 21 Tripod Variation | Writing Tripod (15) | 0.57 | 0.01 | 0.67 | 1.08 |
+#' | 22 Parallel Extension | Prismatic 4 Finger (48) | 1.09 | 0.23 | 0.79 | 0.02 |
+#' | 23 Adduction Grip | Palmar (47) | 0.83 | 0.04 | 1.09 | 0.02 |
+#' | 24 Tip Pinch | Inferior Pincer (16) | 0.75 | 0.01 | 1.77 | 0.02 |
+#' | 25 Lateral Tripod | Writing Tripod (11) | 0.49 | 0.44 | 1.14 | 0.02 |
+#' | 26 Sphere 4 Finger | Sphere 3 Finger (22) | 0.48 | 1.00 | 0.81 | 0.28 |
+#' | 27 Quadpod | Precision Sphere (7) | 1.73 | 0.08 | 0.67 | 0.02 |
+#' | 28 Sphere 3 Finger | Sphere 4 Finger (22) | 0.64 | 0.24 | 1.00 | 0.07 |
+#' | 29 Stick | Ventral (5) | 0.89 | 0.01 | 0.95 | 0.66 |
+#' | 30 Palmar | Adduction Grip (47) | 1.51 | 0.01 | 1.20 | 0.11 |
+#' | 31 Ring | Sphere 3 Finger (25) | 0.59 | 0.78 | 0.93 | 0.06 |
+#' | 32 Ventral | Stick (5) | 1.52 | 0.50 | 0.81 | 0.05 |
+#' | 33 Inferior Pincer | Tripod (10) | 2.27 | 0.35 | 0.88 | 0.02 |
 #'
 #' @param ... Elements to replace, by name (e.g. `noise_sd = 0`).
 #' @return A named list (see Elements), validated.

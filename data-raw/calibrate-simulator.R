@@ -49,7 +49,7 @@
 # verification printed at the end (calibration_report(seeds = ) recomputes
 # them independently).
 #
-# Run from the package root (13.5 minutes on 2 cores shared with other work,
+# Run from the package root (7-14 minutes on 2 cores shared with other work,
 # starting from the shipped values; less on a quiet machine):
 #   Rscript data-raw/calibrate-simulator.R [path/to/thesis-tables]
 # The thesis tables default to ../shared/thesis-tables (HANDMOTION_SHARED).
@@ -72,7 +72,7 @@ STAGE1_ROUNDS <- 10L
 # pinch types, far beyond what the taxonomy supports; with these bounds the
 # calibrated final postures lie within -2 to 76 degrees on every driven DoF)
 SPREAD_RANGE <- c(0.3, 2.5)
-STAGE2_SEEDS <- list(1:3, 1:3, 1:3, 1:3, 1:5)  # seeds per stage-2 round; the last one verifies
+STAGE2_SEEDS <- list(1:3, 1:3, 1:3, 1:5)  # seeds per stage-2 round; the last one verifies
 
 # ---- targets (read here, used only to steer the simulator's knobs) ----------
 read_tab <- function(f) utils::read.csv(file.path(tables, f), stringsAsFactors = FALSE)
@@ -226,11 +226,22 @@ for (it in seq_along(STAGE2_SEEDS)) {
       it, length(seeds), elapsed(), max(abs(mv - target$mean_var)), feix_levels()[worst], mean(mv), r,
       sqrt(mean((rec - target$recall_fpca)^2)), mean(rec))
   if (it == length(STAGE2_SEEDS)) break
+  # a rerun starts from the shipped values: take the shift they were tuned
+  # to (the median, since types at the floor are off their goals)
+  if (it == 1L) shift <- stats::median(logit(target$recall_fpca) - logit(rec))
   shift <- shift + (logit(mean(rec)) - logit(acc_fpca))
   goal_fpca <- logit(target$recall_fpca) - shift
   say("    FPCA goal shift %.2f on the logit scale", shift)
   # Table 5.2: the unexplained share u = 100 - mean grows about linearly with
-  # the jitter's variance, u = u0 + a j^2: a secant step on j^2 per type
+  # the jitter's variance, u = u0 + a j^2: a secant step on j^2 per type.
+  # Types at the jitter floor that still explain too little (the pinches)
+  # pull the overall mean (95.90) down; the types that can still move aim a
+  # little higher instead (at most 0.6 points) to keep the overall mean.
+  at_floor <- p$jitter_scale <= 0.021
+  deficit <- sum(pmax(target$mean_var - mv, 0)[at_floor])
+  lift <- min(0.6, deficit / max(1, sum(!at_floor)))
+  u_goal <- 100 - target$mean_var - ifelse(at_floor, 0, lift)
+  say("    Table 5.2 goals of the %d movable types raised by %.2f points", sum(!at_floor), lift)
   u <- 100 - mv
   j2 <- p$jitter_scale^2
   hj <- rbind(hj, j2)
