@@ -10,7 +10,9 @@
 # The objects the calls work on, built once. Files are written to a fixed
 # relative folder so that the messages (which name them) are reproducible.
 bad_input_fixtures <- function(dir) {
-  e <- new.env(parent = globalenv())
+  # (inside the test environment, which sees the namespace: several rows call
+  # internal functions, which R CMD check does not attach as load_all() does)
+  e <- new.env(parent = environment())
   local(envir = e, {
     g <- simulate_grasps(subjects = 3, grasps = 1:3, objects = 1, trials = 2, seed = 1)
     m <- suppressWarnings(fit_grasp_model(g, grasp = 1, seed = 1))
