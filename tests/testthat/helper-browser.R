@@ -15,10 +15,22 @@ skip_without_browser <- function() {
   if (!nzchar(chromium_path())) skip("no chromium: install it (tools/setup.sh does) to run the browser tests")
 }
 
+# A fresh profile per call and no background networking: with the shared
+# default profile and chromium's own update/sync connections (refused on a
+# closed network) a screenshot of a page with two WebGL widgets once hung for
+# minutes; with these it takes seconds.
 browser_args <- function(budget_ms) {
   c("--headless=new", "--no-sandbox", "--disable-gpu-sandbox", "--use-angle=swiftshader",
     "--enable-unsafe-swiftshader", "--hide-scrollbars", "--no-first-run", "--disable-extensions",
+    "--disable-background-networking", "--disable-component-update", "--disable-sync",
+    paste0("--user-data-dir=", tempfile("chromium-profile")),
     sprintf("--virtual-time-budget=%d", as.integer(budget_ms)))
+}
+
+# chromium run under coreutils' timeout, so a page that never settles fails
+# its check instead of stalling the run
+browser_run <- function(args, ...) {
+  suppressWarnings(system2("timeout", c("300", chromium_path(), args), ...))
 }
 
 # A page to open: a URL as it is, a file as a file:// URL.
@@ -26,27 +38,26 @@ page_url <- function(page) if (grepl("^https?://", page)) page else paste0("file
 
 # The page's DOM after `budget_ms` of virtual time.
 browser_dom <- function(page, budget_ms = 1000) {
-  out <- suppressWarnings(system2(chromium_path(), c(browser_args(budget_ms), "--dump-dom", shQuote(page_url(page))),
-                                  stdout = TRUE, stderr = FALSE))
+  out <- browser_run(c(browser_args(budget_ms), "--dump-dom", shQuote(page_url(page))),
+                     stdout = TRUE, stderr = FALSE)
   paste(out, collapse = "\n")
 }
 
 # The page's console after `budget_ms` of virtual time: one line per message
 # (console.log/warn/error and uncaught exceptions), as chromium logs them.
 browser_console <- function(page, budget_ms = 1000) {
-  out <- suppressWarnings(system2(chromium_path(), c(browser_args(budget_ms), "--enable-logging=stderr", "--v=0",
-                                                     "--dump-dom", shQuote(page_url(page))),
-                                  stdout = FALSE, stderr = TRUE))
+  out <- browser_run(c(browser_args(budget_ms), "--enable-logging=stderr", "--v=0",
+                       "--dump-dom", shQuote(page_url(page))),
+                     stdout = FALSE, stderr = TRUE)
   sub('^.*:CONSOLE[^]]*\\] ', "", grep(":CONSOLE", out, value = TRUE, fixed = TRUE))
 }
 
 # A screenshot (PNG path) of the page after `budget_ms` of virtual time.
 browser_screenshot <- function(page, budget_ms = 1000, size = c(800, 500)) {
   png <- tempfile(fileext = ".png")
-  suppressWarnings(system2(chromium_path(), c(browser_args(budget_ms), sprintf("--window-size=%d,%d", size[1], size[2]),
-                                              paste0("--screenshot=", png),
-                                              shQuote(page_url(page))),
-                           stdout = FALSE, stderr = FALSE))
+  browser_run(c(browser_args(budget_ms), sprintf("--window-size=%d,%d", size[1], size[2]),
+                paste0("--screenshot=", png), shQuote(page_url(page))),
+              stdout = FALSE, stderr = FALSE)
   png
 }
 
