@@ -130,10 +130,13 @@ autoplot.early_recognition <- function(object, ...) {
     ggplot2::geom_hline(yintercept = 1 / attr(object, "classes"), linetype = "dotted", colour = "grey50") +
     ggplot2::geom_line(colour = "#2166ac") +
     ggplot2::geom_point(colour = "#2166ac") +
-    ggplot2::facet_wrap(~axis, scales = "free_x") +
+    # the panel strip, placed under the axis, is the x-axis title: time and
+    # fraction need different titles when both are shown
+    ggplot2::facet_wrap(~axis, scales = "free_x", strip.position = "bottom") +
     ggplot2::scale_y_continuous(labels = function(v) paste0(round(100 * v), "%"), limits = c(0, 1)) +
     ggplot2::labs(x = NULL, y = "held-out accuracy",
                   title = "Early grasp recognition",
                   subtitle = sprintf("%s; dotted: chance", attr(object, "scheme"))) +
-    ggplot2::theme_minimal(base_size = 11)
+    ggplot2::theme_minimal(base_size = 11) +
+    ggplot2::theme(strip.placement = "outside", strip.text = ggplot2::element_text(size = 11))
 }

@@ -91,7 +91,7 @@
 evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5,
                                 overlong = c(iqr_mult = 3, median_mult = 1.5), seed = 1) {
   call <- rlang::caller_env()
-  sets <- if (inherits(models, "grasp_models")) list(model = models) else models
+  sets <- if (inherits(models, "grasp_models")) stats::setNames(list(models), model_set_name(models)) else models
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasp_models")) ||
       is.null(names(sets)) || any(!nzchar(names(sets)))) {
     hm_abort("{.arg models} must be a {.cls grasp_models} set or a named list of them.", "bad_input",
@@ -168,7 +168,17 @@ generation_metrics <- data.frame(
   family = c("discriminability", "discriminability", "dependence", "dependence", "recognisability",
              "plausibility", "plausibility", "plausibility"),
   better = c("lower", "higher", "lower", "lower", "higher", "lower", "closer", "lower"),
+  label = c("kernel MMD\u00b2", "MMD permutation p-value", "final-posture correlation gap",
+            "velocity correlation gap", "recognised by LDA",
+            "frames outside limits", "log jerk (smoothness)", "duration KS distance"),
   stringsAsFactors = FALSE)
+
+# A lone model set is named after its dependence ("independent" is the
+# thesis' model), so tables and legends say which model they show.
+model_set_name <- function(models) {
+  dep <- unique(vapply(fitted_models(models), function(m) m$dependence$type %||% "independent", character(1)))
+  if (length(dep) == 1L) dep else "model"
+}
 
 generation_rows <- function(model, type, got, base) {
   mt <- generation_metrics
@@ -357,7 +367,8 @@ autoplot.generation_evaluation <- function(object, metric = NULL, ...) {
   d <- d[d$grasp != "overall", ]
   metric <- metric %||% setdiff(generation_metrics$metric, "mmd_p")
   d <- d[d$metric %in% metric, ]
-  d$metric <- factor(d$metric, levels = metric)
+  d$metric <- factor(generation_metrics$label[match(d$metric, generation_metrics$metric)],
+                     levels = generation_metrics$label[match(metric, generation_metrics$metric)])
   ggplot2::ggplot(d, ggplot2::aes(.data$baseline, .data$generated, colour = .data$model)) +
     ggplot2::geom_abline(slope = 1, intercept = 0, linetype = "dashed", colour = "grey50") +
     ggplot2::geom_point(alpha = 0.75) +
