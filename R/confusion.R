@@ -371,7 +371,8 @@ autoplot.grasp_confusion <- function(object, type = "heatmap", normalise = FALSE
 confusion_key <- function(levels, lab) {
   if (identical(as.character(levels), as.character(lab))) return(NULL)
   key <- paste(lab, levels)
-  # pack whole entries into lines of at most ~150 characters
-  line <- cumsum(nchar(key) + 3L) %/% 150L
+  # pack whole entries into lines of at most ~90 characters: at the caption's
+  # 7 points that is about 5.5 inches, narrower than the figures it goes in
+  line <- cumsum(nchar(key) + 3L) %/% 90L
   paste(vapply(split(key, line), paste, character(1), collapse = " \u00b7 "), collapse = "\n")
 }
