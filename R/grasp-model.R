@@ -650,7 +650,10 @@ print.grasp_model <- function(x, ...) {
 #'   variance explained by each FPC (`FPC1`, `FPC2`, ...) and in total
 #'   (`total`), the mixture used (`"mixture"`, `"single Gaussian"` or
 #'   `"point mass"`) and the fallback reason. The recordings removed and the
-#'   fallbacks are kept as attributes `removed` and `fallbacks` and printed.
+#'   fallbacks are kept as attributes `removed` and `fallbacks` and printed;
+#'   attribute `dependence_matrix` is the DoF x DoF correlation between the
+#'   DoFs' first FPC scores the model generates with (the identity for the
+#'   thesis' independent DoFs, `dependence = "independent"`).
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)

@@ -21,8 +21,8 @@ test_that("a frame seen in the reference is reconstructed almost exactly", {
 test_that("ranked 6 markers beat 3, the no-PCA regression and the hand-picked set on unseen data", {
   ref <- split$ref
   test <- split$test
-  rk <- rank_markers(ref)
-  m6 <- select_markers(rk, 6)
+  m6 <- select_markers(ref, 6)
+  rk <- attr(m6, "ranking")
   m3 <- select_markers(rk, 3)
   e6 <- handover_error(test, reconstruct(fit_handover(ref, m6), test))
   e3 <- handover_error(test, reconstruct(fit_handover(ref, m3), test))
@@ -190,11 +190,11 @@ test_that("search-based selection returns a logged greedy set", {
                class = "handmotion_error_reference_too_small")
 })
 
-test_that("compare_marker_sets tabulates and plots the comparison", {
-  cmp <- compare_marker_sets(split$ref, split$test[1:2],
-                             sets = list(a = c("thumb_tip", "index_tip"),
-                                         b = list(markers = c("thumb_tip", "index_tip"), method = "direct")),
-                             k = 64)
+test_that("handover_error(by = \"markers\") tabulates and plots the comparison", {
+  cmp <- handover_error(split$test[1:2], by = "markers", reference = split$ref,
+                        sets = list(a = c("thumb_tip", "index_tip"),
+                                    b = list(markers = c("thumb_tip", "index_tip"), method = "direct")),
+                        k = 64)
   expect_s3_class(cmp, "handover_comparison")
   expect_equal(as.character(cmp$set), c("a", "b"))
   expect_equal(cmp$method, c("pca", "direct"))
@@ -202,7 +202,11 @@ test_that("compare_marker_sets tabulates and plots the comparison", {
   expect_output(print(cmp), "handover_comparison")
   b <- ggplot2::ggplot_build(ggplot2::autoplot(cmp))
   expect_equal(b$data[[1]]$y, cmp$error)
-  expect_error(compare_marker_sets(split$ref, split$test, sets = list(1)), class = "handmotion_error_bad_input")
+  # each row is the plain error of that set's reconstruction
+  fit_a <- fit_handover(split$ref, c("thumb_tip", "index_tip"), k = 64)
+  expect_equal(cmp$error[1], handover_error(split$test[1:2], reconstruct(fit_a, split$test[1:2])))
+  expect_error(handover_error(split$test, by = "markers", reference = split$ref, sets = list(1)),
+               class = "handmotion_error_bad_input")
 })
 
 test_that("the figures build: markers on the hand, component trajectories, ranking", {
@@ -221,7 +225,7 @@ test_that("the figures build: markers on the hand, component trajectories, ranki
   # with all components and smoothing the plotted scores are the model's smoothed scores
   s <- attr(rec, "handover")$scores[[1]]
   expect_equal(d5$score[d5$source == "3 markers" & d5$component == "PC1"], unname(s[, 1]))
-  b_rank <- ggplot2::ggplot_build(ggplot2::autoplot(rank_markers(split$ref)))
+  b_rank <- ggplot2::ggplot_build(ggplot2::autoplot(attr(select_markers(split$ref), "ranking")))
   expect_equal(nrow(b_rank$data[[1]]), 13)
   expect_output(print(fit), "handover_model")
 })
