@@ -146,27 +146,14 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
     failures <- rbind(failures, data.frame(model = unfitted$grasp,
                                            message = paste("not fitted:", unfitted$message)))
   }
-  models <- new_grasp_models(fitted_models(models))
-  if (length(models) == 0L) {
-    hm_abort("{.arg models} holds no fitted grasp models.", "bad_input", argument = "models", call = call)
-  }
-  types <- names(models)
+  projections <- project_models(models, x, "models", details = FALSE, call = call,
+                                keep = function(pr) pr[c("distance", "ids")], keep_going = TRUE)
+  types <- names(projections)
   ids <- x$meta$id
-  d <- matrix(NA_real_, length(ids), length(models), dimnames = list(ids, types))
+  d <- matrix(NA_real_, length(ids), length(types), dimnames = list(ids, types))
   first_error <- NULL
-  st <- tryCatch({
-    check_projection_dofs(models[[1]], x, call)
-    stack_recordings(x, models[[1]]$dofs)
-  }, error = function(e) NULL)
-  for (j in seq_along(models)) {
-    pr <- tryCatch(
-      if (!is.null(st) && identical(models[[j]]$dofs, models[[1]]$dofs)) {
-        validate_projection_model(models[[j]], call)  # before the native kernel
-        project_stacked(models[[j]], st, details = FALSE)[c("distance", "ids")]
-      } else {
-        stats::predict(models[[j]], x, details = FALSE)[c("distance", "ids")]
-      },
-      error = function(e) e)
+  for (j in seq_along(types)) {
+    pr <- projections[[j]]
     if (inherits(pr, "error")) {
       first_error <- first_error %||% pr
       failures <- rbind(failures, data.frame(model = types[j],
@@ -190,7 +177,7 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
               i = "See {.field failures} of the result."),
             "projection_failed")
   }
-  tl <- vapply(unclass(models), function(m) as.numeric(m$target_length %||% NA_real_), numeric(1))
+  tl <- vapply(fitted_models(models), function(m) as.numeric(m$target_length %||% NA_real_), numeric(1))
   names(tl) <- types
   list(distances = d, target_length = tl, failures = failures)
 }

@@ -34,14 +34,9 @@ fit_last_frame_pca <- function(x, k = 5, grasps = NULL, call = rlang::caller_env
 # Grasp types to model: the requested ones (validated) or all labelled types
 # present, in Feix order.
 labelled_types <- function(x, grasps = NULL, call = rlang::caller_env()) {
-  have <- feix_order(unique(as.character(stats::na.omit(x$meta$grasp))))
-  if (length(have) == 0L) {
-    hm_abort(if (length(x) == 0L) "{.arg x} holds no recordings (an empty selection?)." else
-               "{.arg x} has no labelled recordings: every {.field grasp} is NA.", "no_labels",
-             argument = "x", call = call)
-  }
-  if (is.null(grasps)) return(have)
-  want <- as.character(as_feix_grasp(grasps, call = call))
+  have <- check_some_types(feix_order(unique(as.character(stats::na.omit(x$meta$grasp)))), x, call = call)
+  want <- check_grasp_selection(grasps, "grasps", call = call)
+  if (is.null(want)) return(have)
   absent <- setdiff(want, have)
   if (length(absent) > 0L) {
     hm_abort("No recordings of grasp type{?s} {.val {absent}} in {.arg x}.", "bad_input",

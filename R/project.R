@@ -52,14 +52,29 @@ predict.grasp_models <- function(object, newdata, details = FALSE, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), predict.grasp_models, "predict.grasp_models", call = call)
   check_grasps(newdata, "newdata", call = call)
-  models <- fitted_models(object)
+  project_models(object, newdata, "object", details = details, call = call)
+}
+
+# Every fitted model of a set projects `newdata`: each model is validated
+# and the recordings are stacked once per DoF set (all models share one in
+# practice). `keep` reduces each projection as it is made (the FPCA
+# classifier keeps only the distances: all scores of every model would be
+# n x 33 x p x ncomp numbers); with `keep_going` a model that cannot project
+# gives its error in its place instead of stopping the rest.
+project_models <- function(models, newdata, arg, details, call, keep = identity, keep_going = FALSE) {
+  models <- fitted_models(models)
   if (length(models) == 0L) {
-    hm_abort("{.arg object} holds no fitted grasp models.", "bad_input", argument = "object", call = call)
+    hm_abort("{.arg {arg}} holds no fitted grasp models.", "bad_input", argument = arg, call = call)
   }
-  for (m in models) validate_projection_model(m, call)
-  check_projection_dofs(models[[1]], newdata, call)
-  st <- stack_recordings(newdata, models[[1]]$dofs)
-  lapply(models, function(m) project_stacked(m, st, details = details))
+  stacks <- list()
+  one <- function(m) {
+    validate_projection_model(m, call)  # before the native kernel
+    check_projection_dofs(m, newdata, call)
+    key <- paste(m$dofs, collapse = "\r")
+    if (is.null(stacks[[key]])) stacks[[key]] <<- stack_recordings(newdata, m$dofs)
+    keep(project_stacked(m, stacks[[key]], details = details))
+  }
+  lapply(models, function(m) if (keep_going) tryCatch(one(m), error = function(e) e) else one(m))
 }
 
 # A model whose basis was changed after fitting would reach the native kernel
