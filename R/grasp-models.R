@@ -326,7 +326,7 @@ summary.grasp_models <- function(object, ...) {
                         min_var = NA_real_, median_var = NA_real_, mean_var = NA_real_, max_var = NA_real_,
                         failed = m$message, stringsAsFactors = FALSE))
     }
-    ve <- 100 * rowSums(m$var_explained)
+    ve <- 100 * rowSums(model_var_explained(m))
     fb <- m$fallbacks
     em <- fb$dof[fb$step == "mixture"]
     const <- fb$dof[fb$step == "fpca"]

@@ -89,12 +89,8 @@ validate_projection_model <- function(model, call) {
   if (!is.character(model$dofs) || p == 0L) bad("it names no DoFs")
   if (!is.numeric(L) || length(L) != 1L || !is.finite(L) || L < 2) bad("its target length is not a frame count")
   if (!is.numeric(k) || length(k) != 1L || !is.finite(k) || k < 1) bad("its number of FPCs is not a count")
-  if (!is.double(model$basis$mean) || !identical(dim(model$basis$mean), as.integer(c(L, p)))) {
-    bad("its basis mean is not {L} x {p}")
-  }
-  if (!is.double(model$basis$components) || length(model$basis$components) != L * p * k) {
-    bad("its basis components are not {L} x {p} x {k}")
-  }
+  fault <- fpca_shape_fault(model, k)
+  if (!is.null(fault)) bad(fault)
   if (length(model$fpca) != p ||
       !all(vapply(model$fpca, function(f) length(f$weights) == L, logical(1)))) {
     bad("its quadrature weights do not match {L} frames for {p} DoF{?s}")
@@ -171,16 +167,17 @@ project_stacked <- function(model, st, details = TRUE, time_weights = NULL) {
   # quadrature weights per DoF; a constant DoF's basis has zero components,
   # so the kernel gives it zero scores and its distance to the mean
   w <- vapply(model$fpca, function(f) as.double(f$weights), numeric(L))
-  res <- .Call(hm_project_batch, st$values, ix$rows, ix$nxt, ix$f, model$basis$mean,
-               model$basis$components, w, w * (time_weights %||% 1))
+  B <- model_basis(model)
+  res <- .Call(hm_project_batch, st$values, ix$rows, ix$nxt, ix$f, B$mean,
+               B$components, w, w * (time_weights %||% 1))
   scores <- array(res$scores, c(n, p, k), dimnames = list(st$ids, model$dofs, paste0("FPC", seq_len(k))))
   resid <- matrix(res$residual, n, p, dimnames = list(st$ids, model$dofs))
   if (details) {
     warped <- fitted <- matrix(0, n * L, p)
     for (j in seq_len(p)) {
       warped[, j] <- warp_dof(ix, st$values[, j])
-      fitted[, j] <- as.vector(matrix(model$basis$mean[, j], L, n) +
-                                 matrix(model$basis$components[, j, ], L) %*% t(matrix(scores[, j, ], n, k)))
+      fitted[, j] <- as.vector(matrix(B$mean[, j], L, n) +
+                                 matrix(B$components[, j, ], L) %*% t(matrix(scores[, j, ], n, k)))
     }
   }
   out <- list(scores = scores, residual = resid, distance = sqrt(rowSums(resid^2)),
