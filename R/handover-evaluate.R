@@ -95,7 +95,7 @@ unit_factor <- function(unit) if (identical(unit, "rad")) 180 / pi else 1
 #' `"search"`). `recon` is then not used.
 #'
 #' @param truth,recon [grasps()] objects with the same recordings (ids, frame
-#'   counts and DoFs), e.g. a test set and `reconstruct(model, test)`.
+#'   counts and DoFs), e.g. a test set and `predict(model, test)` ([predict.handover_model()]).
 #' @param by `"overall"` (one number), `"recording"`, `"frame"`, `"dof"`,
 #'   `"ncomp"` (the PCA error per number of components) or `"markers"` (per
 #'   marker set), see Details.
@@ -153,7 +153,7 @@ handover_error <- function(truth, recon = NULL, by = c("overall", "recording", "
   }
   if (by == "ncomp") return(handover_pca_error(reference %||% truth, truth, call = call))
   if (is.null(recon)) {
-    hm_abort("Give {.arg recon}, e.g. {.code reconstruct(model, truth)}.", "bad_input",
+    hm_abort("Give {.arg recon}, e.g. {.code predict(model, truth)}.", "bad_input",
              argument = "recon", call = call)
   }
   check_grasps(recon, "recon", call = call)
@@ -166,7 +166,7 @@ handover_error <- function(truth, recon = NULL, by = c("overall", "recording", "
   }
   if (!is.null(differ)) {
     hm_abort(c("{.arg truth} and {.arg recon} must hold the same recordings, frame counts and DoFs.",
-               x = differ, i = "Compare a query with {.code reconstruct(model, query)}."),
+               x = differ, i = "Compare a query with {.code predict(model, query)}."),
              "bad_input", argument = "recon", call = call)
   }
   if (!identical(truth$unit, recon$unit)) {
@@ -208,7 +208,7 @@ compare_marker_sets <- function(reference, test, sets = NULL, search = TRUE, ...
     if (!is.list(s)) s <- list(markers = s, method = "pca")
     if (is.null(s$method)) s$method <- "pca"
     model <- fit_handover(reference, s$markers, method = s$method, ...)
-    rec <- reconstruct(model, test)
+    rec <- stats::predict(model, test)
     e <- handover_error(test, rec, by = "recording")
     data.frame(set = nm, method = s$method, n_markers = length(s$markers),
                markers = paste(s$markers, collapse = ", "), error = handover_error(test, rec),

@@ -13,7 +13,8 @@
 #' reference database recorded with the full marker set: a PCA of the
 #' reference joint angles and, for each reference frame, the positions of the
 #' sparse markers (relative to the root link) and the component scores.
-#' [reconstruct()] then rebuilds all joint angles from the sparse markers.
+#' `predict()` ([predict.handover_model()]) then rebuilds all joint angles
+#' from the sparse markers.
 #'
 #' For each query frame the regression weights every reference frame by the
 #' inverse Euclidean distance between its sparse markers and the query's, and
@@ -56,7 +57,7 @@
 #'   weights.
 #' @param skeleton,... Passed to [forward_kinematics()] (e.g. `mapping`).
 #' @return An object of class `handover_model`.
-#' @seealso [reconstruct()], [select_markers()], [handover_error()] (`by = "markers"` compares marker sets)
+#' @seealso [predict.handover_model()], [select_markers()], [handover_error()] (`by = "markers"` compares marker sets)
 #' @export
 #' @examples
 #' set.seed(1)
@@ -65,7 +66,7 @@
 #' ref <- grasps(list(ang, ang[40:1, ] * 0.8), dofs = hust_dofs$name)
 #' fit <- fit_handover(ref, markers = c("index_tip", "ring_tip", "thumb_tip"), k = 30)
 #' fit
-#' rec <- reconstruct(fit, ref[1])
+#' rec <- predict(fit, ref[1])
 #' handover_error(ref[1], rec)
 fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth = TRUE,
                          filter_size = NULL, method = c("pca", "direct"), ridge = 1e-3,

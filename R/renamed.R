@@ -35,6 +35,7 @@
 #' | `fit_grasp_classifier(x, at = , prior = )` | unchanged: `method = "discriminant"` is the default |
 #' | `rank_markers(x, weighting = )` | `attr(`[select_markers()]`(x, n, weighting = ), "ranking")`; `select_markers(x, n)` takes the top `n` |
 #' | `compare_marker_sets(reference, test, sets = )` | [handover_error()]`(test, by = "markers", reference = reference, sets = )` |
+#' | `reconstruct(model, query)` | `predict(model, query)` ([predict.handover_model()]) |
 #' | `hand_pose(x, frame = )` + `autoplot()` | `autoplot(x, type = "hand", frame = )` ([autoplot.grasps()]); a skeleton's rest pose: `autoplot(hand_skeleton())` |
 #'
 #' @name handmotion-renamed
@@ -44,6 +45,6 @@
 #'   hust_joint_map clamp_to_limits markers_from_angles hand_marker_set handpicked_markers
 #'   search_markers handover_pca_error align_recordings overlong_rule find_overlong simulator_params
 #'   calibration_report fit_frame_pca_model fit_last_frame_pca fit_weighted_fpca rank_markers
-#'   compare_marker_sets hand_pose
+#'   compare_marker_sets hand_pose reconstruct
 #' @keywords internal
 NULL

@@ -391,7 +391,8 @@ def fit_handover(reference, markers=6, **kwargs):
 
 
 def reconstruct(model, query, **kwargs):
-    """Rebuild all joint angles from sparse markers; returns a :class:`Grasps`.
+    """Rebuild all joint angles from sparse markers (R's ``predict()`` on the model); returns a
+    :class:`Grasps`.
 
     ``query`` is a :class:`Grasps` (its markers are computed by forward kinematics)
     or a numpy array frames x (3 x markers) of marker positions (NaN = occluded).
@@ -399,4 +400,4 @@ def reconstruct(model, query, **kwargs):
     if not isinstance(model, HandoverModel):
         raise BadInputError("model must come from fit_handover()")
     q = query if isinstance(query, np.ndarray) and query.ndim == 2 else _as_grasps(query, "query")
-    return r_to_py(call("reconstruct", model, q, **kwargs))
+    return r_to_py(call(r().r["predict"], model, q, **kwargs))
