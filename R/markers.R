@@ -187,30 +187,30 @@ place_markers <- function(pos, ms, call = rlang::caller_env()) {
 
 # Stack the marker matrices of a grasps object (or accept a matrix, a data
 # frame or a list of marker matrices with the same columns).
-stack_markers <- function(x, skeleton, call = rlang::caller_env(), ...) {
+stack_markers <- function(x, skeleton, arg = "reference", call = rlang::caller_env(), ...) {
   if (inherits(x, "grasps")) x <- markers_from_angles(x, skeleton = skeleton, ...)
   if (is.data.frame(x)) x <- as.matrix(x)
   what <- "a {.cls grasps} object or a numeric frames x (3 * markers) marker matrix (or a list of them),"
   if (is.list(x)) {
     if (length(x) == 0L) {
-      hm_abort(paste("{.arg reference} must be", what, "not an empty list."), "bad_input",
-               argument = "reference", call = call)
+      hm_abort(paste("{.arg {arg}} must be", what, "not an empty list."), "bad_input",
+               argument = arg, call = call)
     }
     for (i in seq_along(x)) {
       if (!is.matrix(x[[i]]) || !is.numeric(x[[i]])) {
-        hm_abort(paste("{.arg reference[[{i}]]} must be a numeric marker matrix, not {describe_value(x[[i]])}."),
-                 "bad_markers", argument = "reference", recording = i, call = call)
+        hm_abort(paste("{.arg {arg}[[{i}]]} must be a numeric marker matrix, not {describe_value(x[[i]])}."),
+                 "bad_markers", argument = arg, recording = i, call = call)
       }
       if (!identical(colnames(x[[i]]), colnames(x[[1]]))) {
-        hm_abort("{.arg reference[[{i}]]} has other columns than {.arg reference[[1]]}: every marker matrix needs the same markers in the same order.",
-                 "bad_markers", argument = "reference", recording = i, call = call)
+        hm_abort("{.arg {arg}[[{i}]]} has other columns than {.arg {arg}[[1]]}: every marker matrix needs the same markers in the same order.",
+                 "bad_markers", argument = arg, recording = i, call = call)
       }
     }
     x <- do.call(rbind, x)
   }
   if (!is.matrix(x) || !is.numeric(x)) {
-    hm_abort(paste("{.arg reference} must be", what, "not {describe_value(x)}."),
-             "bad_input", argument = "reference", call = call)
+    hm_abort(paste("{.arg {arg}} must be", what, "not {describe_value(x)}."),
+             "bad_input", argument = arg, call = call)
   }
   x
 }
@@ -219,32 +219,33 @@ stack_markers <- function(x, skeleton, call = rlang::caller_env(), ...) {
 # documented there): a data frame of class marker_ranking, most influential
 # marker first, with the eigenvalues and the weighting as attributes.
 rank_markers <- function(reference, weighting = c("eigenvalue", "equal"),
-                         n_components = NULL, skeleton = hand_skeleton(), ..., call = rlang::caller_env()) {
+                         n_components = NULL, skeleton = hand_skeleton(), ..., arg = "reference",
+                         call = rlang::caller_env()) {
   weighting <- check_choice(weighting, c("eigenvalue", "equal"), arg = "weighting", call = call)
   check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton"),
                  call = call)
-  m <- stack_markers(reference, skeleton, call = call, ...)
-  markers <- marker_names_of(m, call = call)
-  check_marker_names(markers, arg = "reference", call = call)
+  m <- stack_markers(reference, skeleton, arg = arg, call = call, ...)
+  markers <- marker_names_of(m, arg = arg, call = call)
+  check_marker_names(markers, arg = arg, call = call)
   # the forearm markers are constant on the root link (documented)
   keep <- markers %in% hand_marker_set()$marker[hand_marker_set()$segment == "hand"]
   if (!any(keep)) {
-    hm_abort("{.arg reference} has no hand markers to rank, only {.val {markers}}.",
-             "bad_markers", argument = "reference", call = call)
+    hm_abort("{.arg {arg}} has no hand markers to rank, only {.val {markers}}.",
+             "bad_markers", argument = arg, call = call)
   }
   if (!all(keep)) {
     m <- m[, marker_columns(markers[keep]), drop = FALSE]
     markers <- markers[keep]
   }
   if (nrow(m) < 2L) {
-    hm_abort("Ranking needs at least two frames of marker positions; {.arg reference} has {nrow(m)}.",
-             "reference_too_small", argument = "reference", call = call)
+    hm_abort("Ranking needs at least two frames of marker positions; {.arg {arg}} has {nrow(m)}.",
+             "reference_too_small", argument = arg, call = call)
   }
   bad <- which(!is.finite(m), arr.ind = TRUE)
   if (nrow(bad)) {
-    hm_abort(c("{.arg reference} has {nrow(bad)} missing or infinite marker coordinate{?s}.",
+    hm_abort(c("{.arg {arg}} has {nrow(bad)} missing or infinite marker coordinate{?s}.",
                x = "First in column {.val {colnames(m)[bad[1, 2]]}}, frame {bad[1, 1]}."),
-             "bad_markers", argument = "reference", column = colnames(m)[bad[1, 2]],
+             "bad_markers", argument = arg, column = colnames(m)[bad[1, 2]],
              line = bad[1, 1], call = call)
   }
   e <- eigen(stats::cov(m), symmetric = TRUE)
@@ -385,7 +386,7 @@ select_markers <- function(x = NULL, n = 6, method = c("ranked", "handpicked", "
       if (is.null(x)) {
         hm_abort("Ranking markers needs a reference {.arg x}.", "bad_input", argument = "x", call = call)
       }
-      rk <- if (inherits(x, "marker_ranking")) x else rank_markers(x, ..., call = call)
+      rk <- if (inherits(x, "marker_ranking")) x else rank_markers(x, ..., arg = "x", call = call)
       if (n > nrow(rk)) {
         hm_abort("{.arg n} must be a whole number from 1 to {nrow(rk)}, not {.val {format(n)}}.",
                  "bad_markers", argument = "n", call = call)

@@ -60,8 +60,11 @@ predict.grasp_models <- function(object, newdata, details = FALSE, ...) {
 # practice). `keep` reduces each projection as it is made (the FPCA
 # classifier keeps only the distances: all scores of every model would be
 # n x 33 x p x ncomp numbers); with `keep_going` a model that cannot project
-# gives its error in its place instead of stopping the rest.
-project_models <- function(models, newdata, arg, details, call, keep = identity, keep_going = FALSE) {
+# gives its error in its place instead of stopping the rest. `time_weights`,
+# a function of the model, gives each its weights on the template time (the
+# weighted FPCA distance); NULL is eq. 4.4.
+project_models <- function(models, newdata, arg, details, call, keep = identity, keep_going = FALSE,
+                           time_weights = NULL) {
   models <- fitted_models(models)
   if (length(models) == 0L) {
     hm_abort("{.arg {arg}} holds no fitted grasp models.", "bad_input", argument = arg, call = call)
@@ -72,7 +75,8 @@ project_models <- function(models, newdata, arg, details, call, keep = identity,
     check_projection_dofs(m, newdata, call)
     key <- paste(m$dofs, collapse = "\r")
     if (is.null(stacks[[key]])) stacks[[key]] <<- stack_recordings(newdata, m$dofs)
-    keep(project_stacked(m, stacks[[key]], details = details))
+    keep(project_stacked(m, stacks[[key]], details = details,
+                         time_weights = if (!is.null(time_weights)) time_weights(m)))
   }
   lapply(models, function(m) if (keep_going) tryCatch(one(m), error = function(e) e) else one(m))
 }

@@ -58,18 +58,16 @@ distance_time_weights <- function(L, time) {
 
 # The weighted distances, recordings x models.
 weighted_fpca_distances <- function(object, x, call = rlang::caller_env()) {
-  models <- object$models
-  check_projection_dofs(models[[1]], x, call)
-  st <- stack_recordings(x, models[[1]]$dofs)
   types <- rownames(object$scale)
-  d <- vapply(types, function(ty) {
-    m <- models[[ty]]
-    r <- project_stacked(m, st, details = FALSE,
-                         time_weights = distance_time_weights(m$target_length, object$time))
-    s2 <- object$scale[ty, ]
-    drop(r$residual^2 %*% (1 / s2)) + sum(log(s2)) - 2 * score_log_density(m, r$scores)
-  }, numeric(length(x$recordings)))
-  matrix(d, length(x$recordings), length(types), dimnames = list(x$meta$id, types))
+  d <- project_models(object$models, x, "models", details = FALSE, call = call,
+                      time_weights = function(m) distance_time_weights(m$target_length, object$time),
+                      keep = function(r) {
+                        s2 <- object$scale[r$grasp, ]
+                        drop(r$residual^2 %*% (1 / s2)) + sum(log(s2)) -
+                          2 * score_log_density(object$models[[r$grasp]], r$scores)
+                      })
+  matrix(unlist(d[types], use.names = FALSE), length(x$recordings), length(types),
+         dimnames = list(x$meta$id, types))
 }
 
 # Sum over DoFs of the log density of each recording's FPC scores under the
