@@ -25,9 +25,9 @@ calibration_report <- function(x = NULL, models = NULL, last_frame = NULL, seed 
     hm_abort("{.arg models} must be a {.cls grasp_models} object from {.fn fit_grasp_models}, not {.obj_type_friendly {models}}.",
              "bad_input", argument = "models", call = call)
   }
-  if (is.null(last_frame)) last_frame <- fit_last_frame_pca(x, k = 5)
+  if (is.null(last_frame)) last_frame <- fit_grasp_classifier(x, method = "last_frame", k = 5)
   if (!inherits(last_frame, "last_frame_pca")) {
-    hm_abort("{.arg last_frame} must be a {.cls last_frame_pca} object from {.fn fit_last_frame_pca}, not {.obj_type_friendly {last_frame}}.",
+    hm_abort("{.arg last_frame} must be a {.cls last_frame_pca} object from {.code fit_grasp_classifier(method = \"last_frame\")}, not {.obj_type_friendly {last_frame}}.",
              "bad_input", argument = "last_frame", call = call)
   }
   ours <- calibration_measure(x, models, last_frame)

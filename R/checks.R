@@ -146,6 +146,29 @@ check_dots_for <- function(dots, fun, fun_name, exclude = character(), call = rl
   invisible(dots)
 }
 
+# Grasp types asked for by name or id (`grasps = ` of a fit, `grasp = ` of
+# generate()): NULL means all and stays NULL; an empty vector is an error
+# (it would silently select nothing); otherwise the Feix names.
+check_grasp_selection <- function(grasps, arg, call = rlang::caller_env()) {
+  if (is.null(grasps)) return(NULL)
+  if (length(grasps) == 0L) {
+    hm_abort("{.arg {arg}} must name at least one grasp type (or be {.code NULL} for all).",
+             "bad_input", argument = arg, call = call)
+  }
+  as.character(as_feix_grasp(grasps, call = call))
+}
+
+# The grasp types a fit found in `x` (`types`) must not be none: an empty
+# selection and a set without labels are told apart (class no_labels).
+check_some_types <- function(types, x, call = rlang::caller_env()) {
+  if (length(types) == 0L) {
+    hm_abort(if (length(x) == 0L) "{.arg x} holds no recordings (an empty selection?)." else
+               "{.arg x} has no labelled recordings: every {.field grasp} is {.val NA}.",
+             "no_labels", argument = "x", call = call)
+  }
+  invisible(types)
+}
+
 # A short description of an offending value for messages: the value itself
 # when it is one short atom, otherwise its type and length.
 describe_value <- function(x) {

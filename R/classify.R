@@ -21,18 +21,18 @@
 #'   object from [fit_grasp_models()].
 #' * `"last_frame"` (Table 5.8): the Euclidean distance between the recording's
 #'   last frame and its projection on each type's first `k` PCs; `models` is a
-#'   [fit_last_frame_pca()] result.
+#'   `fit_grasp_classifier(method = "last_frame")` result.
 #' * `"weighted_fpca"` (the thesis' proposed fix): `models` is a
-#'   [fit_weighted_fpca()] result: per-type DoF weights and time weights.
+#'   `fit_grasp_classifier(method = "weighted_fpca")` result: per-type DoF
+#'   weights and time weights.
 #' * `"discriminant"` (beyond the thesis): `models` is a
-#'   [fit_grasp_classifier()] result; the "distance" to a type is minus the
-#'   log of its posterior probability.
+#'   `fit_grasp_classifier(method = "discriminant")` result; the "distance"
+#'   to a type is minus the log of its posterior probability.
 #'
-#' The recording goes to the model with the smallest distance. When `models`
-#' is a fitted object the method follows from its class; when `models` is a
-#' [grasps()] training set, the models are fitted on it first with the
-#' arguments in `...` (e.g. `k = 5`), which is what the thesis did (training and
-#' test set are the same). See [evaluate_loso()] for an honest held-out
+#' The recording goes to the model with the smallest distance. The method
+#' follows from the class of `models`; nothing is fitted here (the thesis
+#' fitted and classified the same recordings: `classify(fit, x)` with a `fit`
+#' on `x` does that visibly). See [evaluate_loso()] for an honest held-out
 #' estimate.
 #'
 #' One-type data are not an error: with a single model every recording is
@@ -40,15 +40,14 @@
 #' projection fails gives a column of `NA` distances, recorded in `$failures`
 #' with a warning; a recording with no finite distance gets `NA` as prediction.
 #'
-#' @param models Fitted models: a [fit_grasp_models()] result (FPCA distance),
-#'   a [fit_last_frame_pca()] result, a [fit_weighted_fpca()] result or a
-#'   [fit_grasp_classifier()] result. A `grasps` object is refused with a
+#' @param models Fitted models: a [fit_grasp_models()] result (FPCA distance)
+#'   or a [fit_grasp_classifier()] result (any `method`). A `grasps` object is refused with a
 #'   hint: fitting is a separate, visible step (for a held-out estimate see
 #'   [evaluate_loso()], which fits on training subjects only).
 #' @param x A [grasps()] object to classify.
 #' @param method `"fpca"`, `"last_frame"`, `"discriminant"` or
-#'   `"weighted_fpca"`. Inferred from `models` when it is
-#'   a fitted object; giving a method that contradicts it is an error.
+#'   `"weighted_fpca"`. Inferred from `models`; giving a method that
+#'   contradicts it is an error.
 #' @param ... Not used; an error if given.
 #' @return An object of class `grasp_classification`: a list with
 #'   `predictions` (data frame: `id`, `subject`, `truth`, `predicted`,
@@ -63,7 +62,7 @@
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' lf <- fit_last_frame_pca(g, k = 2)
+#' lf <- fit_grasp_classifier(g, method = "last_frame", k = 2)
 #' cl <- classify(lf, g)
 #' cl
 #' grasp_confusion(cl)
@@ -72,12 +71,12 @@ classify <- function(models, x, method = c("fpca", "last_frame", "discriminant",
   check_grasps(x, call = call)
   rlang::check_dots_empty(error = function(cnd) {
     hm_abort(c("{.fn classify} takes fitted models and the recordings, nothing more.",
-               i = "Give fitting arguments to {.fn fit_grasp_models} or {.fn fit_last_frame_pca}."),
+               i = "Give fitting arguments to {.fn fit_grasp_models} or {.fn fit_grasp_classifier}."),
              "bad_input", argument = "...", call = call)
   })
   if (inherits(models, "grasps")) {
     hm_abort(c("{.arg models} must be fitted models, not a {.cls grasps} object.",
-               i = "Fit first: {.code classify(fit_grasp_models(train), x)} or {.code classify(fit_last_frame_pca(train), x)}.",
+               i = "Fit first: {.code classify(fit_grasp_models(train), x)} or {.code classify(fit_grasp_classifier(train, method = \"last_frame\"), x)}.",
                i = "{.fn evaluate_loso} fits on training subjects and classifies the held-out ones."),
              "bad_input", argument = "models", call = call)
   }
@@ -106,13 +105,12 @@ resolve_method <- function(models, method, defaulted, call = rlang::caller_env()
 
 # Fit the models a method needs on a training set.
 fit_classifier <- function(train, method, fit_args) {
-  fitter <- switch(method, last_frame = fit_last_frame_pca, fpca = fit_grasp_models,
-                   discriminant = fit_grasp_classifier, weighted_fpca = fit_weighted_fpca)
+  if (method != "fpca") return(do.call(fit_grasp_classifier, c(list(train, method = method), fit_args)))
   # The FPCA distance reads only each model's mean curves and FPCs, never
   # its score mixtures; one Gaussian (k = 1, closed form) instead of the EM
   # for two components halves the refit without changing one prediction.
-  if (method == "fpca" && is.null(fit_args$k)) fit_args$k <- 1L
-  do.call(fitter, c(list(train), fit_args))
+  if (is.null(fit_args$k)) fit_args$k <- 1L
+  do.call(fit_grasp_models, c(list(train), fit_args))
 }
 
 classifier_distances <- function(models, x, method, call = rlang::caller_env()) {
@@ -148,27 +146,14 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
     failures <- rbind(failures, data.frame(model = unfitted$grasp,
                                            message = paste("not fitted:", unfitted$message)))
   }
-  models <- new_grasp_models(fitted_models(models))
-  if (length(models) == 0L) {
-    hm_abort("{.arg models} holds no fitted grasp models.", "bad_input", argument = "models", call = call)
-  }
-  types <- names(models)
+  projections <- project_models(models, x, "models", details = FALSE, call = call,
+                                keep = function(pr) pr[c("distance", "ids")], keep_going = TRUE)
+  types <- names(projections)
   ids <- x$meta$id
-  d <- matrix(NA_real_, length(ids), length(models), dimnames = list(ids, types))
+  d <- matrix(NA_real_, length(ids), length(types), dimnames = list(ids, types))
   first_error <- NULL
-  st <- tryCatch({
-    check_projection_dofs(models[[1]], x, call)
-    stack_recordings(x, models[[1]]$dofs)
-  }, error = function(e) NULL)
-  for (j in seq_along(models)) {
-    pr <- tryCatch(
-      if (!is.null(st) && identical(models[[j]]$dofs, models[[1]]$dofs)) {
-        validate_projection_model(models[[j]], call)  # before the native kernel
-        project_stacked(models[[j]], st, details = FALSE)[c("distance", "ids")]
-      } else {
-        stats::predict(models[[j]], x, details = FALSE)[c("distance", "ids")]
-      },
-      error = function(e) e)
+  for (j in seq_along(types)) {
+    pr <- projections[[j]]
     if (inherits(pr, "error")) {
       first_error <- first_error %||% pr
       failures <- rbind(failures, data.frame(model = types[j],
@@ -192,7 +177,7 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
               i = "See {.field failures} of the result."),
             "projection_failed")
   }
-  tl <- vapply(unclass(models), function(m) as.numeric(m$target_length %||% NA_real_), numeric(1))
+  tl <- vapply(fitted_models(models), function(m) as.numeric(m$target_length %||% NA_real_), numeric(1))
   names(tl) <- types
   list(distances = d, target_length = tl, failures = failures)
 }
@@ -246,7 +231,7 @@ print.grasp_classification <- function(x, ...) {
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' lf <- fit_last_frame_pca(g, k = 2)
+#' lf <- fit_grasp_classifier(g, method = "last_frame", k = 2)
 #' cl <- classify(lf, g)
 #' summary(cl)
 #' head(as.data.frame(cl))
@@ -289,7 +274,7 @@ as.data.frame.grasp_classification <- function(x, row.names = NULL, optional = F
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' distance_table(classify(fit_last_frame_pca(g, k = 2), g))
+#' distance_table(classify(fit_grasp_classifier(g, method = "last_frame", k = 2), g))
 distance_table <- function(models, x = NULL) {
   call <- rlang::caller_env()
   cl <- if (inherits(models, "grasp_classification")) models else {

@@ -37,10 +37,10 @@
 #'
 #' @param x A [grasps()] object with `grasp` and `subject` metadata.
 #' @param method `"fpca"` ([fit_grasp_models()] + projection distance),
-#'   `"last_frame"` ([fit_last_frame_pca()]), `"discriminant"`
-#'   ([fit_grasp_classifier()]) or `"weighted_fpca"` ([fit_weighted_fpca()]).
+#'   or `"last_frame"`, `"discriminant"` or `"weighted_fpca"`
+#'   ([fit_grasp_classifier()] with that `method`).
 #' @param fit_args A list of arguments for the fitting function (e.g.
-#'   `list(k = 5)` for last-frame PCA).
+#'   `list(k = 5)` for last-frame PCA: the `...` of [fit_grasp_classifier()]).
 #' @param subjects Subjects to hold out (default: all). Other subjects are
 #'   always in the training set.
 #' @param folds `NULL` for one fold per subject (LOSO), or a number `k` of

@@ -207,9 +207,10 @@ draw_batch <- function(model, n, warp = TRUE, limits = NULL, call = rlang::calle
   # the copula model draws its scores here, the independent one in the kernel
   scores <- if (identical(model$dependence$type, "copula")) draw_copula_scores(model, n)
   lim <- generation_limits(model, limits %||% identical(model$dependence$type, "copula"))
+  B <- model_basis(model)
   tryCatch(
-    .Call(hm_generate_batch, as.integer(n), smp$dofs, smp$warp, model$basis$mean,
-          model$basis$components, as.numeric(model$warp$mean),
+    .Call(hm_generate_batch, as.integer(n), smp$dofs, smp$warp, B$mean,
+          B$components, as.numeric(model$warp$mean),
           matrix(as.numeric(model$warp$components), model$target_length), isTRUE(warp),
           model$dofs, scores$alpha, scores$beta, lim$lo, lim$hi, generation_limit_margin),
     error = function(e) {
@@ -263,12 +264,9 @@ validate_sampler <- function(model, call = rlang::caller_env()) {
   bad <- model_fault(model, "generate", "x", call)
   if (!inherits(model, "grasp_model")) bad("it is not a {.cls grasp_model}")
   smp <- model$sampler %||% build_sampler(model)
-  B <- model$basis
   L <- model$target_length
   p <- length(model$dofs)
-  if (!is.numeric(B$mean) || !identical(dim(B$mean), c(as.integer(L), p))) {
-    bad("its basis mean is not {L} x {p}")
-  }
+  if (length(model$fpca) != p) bad("it does not hold one FPCA per DoF")
   check_stack <- function(st, p_want, what) {
     dims <- c(st$p, st$k, st$d)
     if (!is.numeric(dims) || length(dims) != 3L || anyNA(dims) || any(dims < 1)) {
@@ -284,7 +282,8 @@ validate_sampler <- function(model, call = rlang::caller_env()) {
   }
   check_stack(smp$dofs, p, "DoF")
   check_stack(smp$warp, 1L, "warp")
-  if (length(B$components) != L * p * smp$dofs$d) bad("its basis components do not match its sampler")
+  fault <- fpca_shape_fault(model, smp$dofs$d)
+  if (!is.null(fault)) bad(paste0(fault, ", as its sampler has"))
   if (length(model$warp$mean) != L || length(model$warp$components) != L * smp$warp$d) {
     bad("its warp basis does not match its warp sampler")
   }

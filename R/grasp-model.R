@@ -135,10 +135,13 @@
 #'   `dofs`, `rate`, `unit`, `target_length`, `argvals`, `n_input`, `n_used`,
 #'   `ids` (recordings used), `removed` (data frame: `id`, `n_frames`, `reason`,
 #'   `detail`), `warping` (method, fallback reason, engine, ...), `fpca` (one
-#'   `fpca_fit()` per DoF), `basis` (`mean` L x p and `components`
-#'   L x p x ncomp arrays), `var_explained` (p x ncomp proportions), `scores`
-#'   (n x p x ncomp array), `gmm` (one `gmm_fit()` per DoF), `warp` (the warp
-#'   FPCA, scores and mixture), `fallbacks` (data frame: `step`, `dof`,
+#'   FPCA per DoF: `mean` and `components` on the template grid, `scores`
+#'   n x ncomp, `var_explained`; each stored only there, [summary()] tabulates
+#'   the variance explained), `gmm` (one Gaussian mixture per DoF), `warp`
+#'   (the warp FPCA, scores and mixture), `sampler` (the mixtures' cumulative
+#'   weights and covariance roots, derived from `gmm` and cached because
+#'   rebuilding them would make a one-grasp [generate()] about four times
+#'   slower), `fallbacks` (data frame: `step`, `dof`,
 #'   `reason`), `settings`, `engine`, `timing` (seconds per step) and, with
 #'   `keep_data`, `alignment` (a `grasp_alignment`: `warped` array n x L x p,
 #'   `warps` n x L, `n_frames`, `degenerate`, `method`, ...),
@@ -304,28 +307,20 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
 }
 
 # The one constructor of class "grasp_model": the fitted parts in (one FPCA
-# and one mixture per DoF, the warp model), and the views the kernels and
-# methods read derived here, from them only: the stacked `basis` (mean and
-# components, L x p (x ncomp)), the `scores` (n x p x ncomp) and
-# `var_explained` (p x ncomp) arrays, the generation `sampler` and the
-# cross-DoF `dependence`. They are kept (the kernels would otherwise rebuild
-# them at every call: the sampler alone costs about 1 ms, four times a
-# one-grasp generate()), but nothing sets them apart from the FPCA and the
-# mixtures they come from.
+# and one mixture per DoF, the warp model), each stored once. The stacked
+# views are derived when needed (model_basis(), model_scores(),
+# model_var_explained(): a few arrays of L x p x ncomp numbers, microseconds).
+# Two derived parts are kept: the generation `sampler` (the mixtures'
+# cumulative weights and covariance roots; rebuilding it costs about 1 ms,
+# four times a one-grasp generate()) and the cross-DoF `dependence` (a fit of
+# its own); nothing sets them apart from the mixtures and scores they come
+# from.
 new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, argvals, n_input, n_used,
                             ids, removed, warping, fpca, gmm, warp, fallbacks, settings, engine, timing,
                             limits, alignment = NULL, degenerate_data = empty_degenerate_notes()) {
-  q <- settings$ncomp
-  labels <- paste0("FPC", seq_len(q))
-  scores <- array(0, c(n_used, length(dofs), q), dimnames = list(ids, dofs, labels))
-  for (j in seq_along(dofs)) scores[, j, ] <- fpca[[j]]$scores
-  var_explained <- matrix(vapply(fpca, function(f) as.numeric(f$var_explained), numeric(q)),
-                          length(dofs), q, byrow = TRUE, dimnames = list(dofs, labels))
   model <- list(grasp = grasp, grasp_id = grasp_id, dofs = dofs, rate = rate, unit = unit,
                 target_length = target_length, argvals = argvals, n_input = n_input, n_used = n_used,
-                ids = ids, removed = removed, warping = warping, fpca = fpca,
-                basis = model_basis(fpca, dofs, q), var_explained = var_explained, scores = scores,
-                gmm = gmm, warp = warp, fallbacks = fallbacks, settings = settings, engine = engine,
+                ids = ids, removed = removed, warping = warping, fpca = fpca, gmm = gmm, warp = warp, fallbacks = fallbacks, settings = settings, engine = engine,
                 timing = timing)
   model$sampler <- build_sampler(model)
   model$dependence <- list(type = settings$dependence,
@@ -350,8 +345,7 @@ validate_grasp_model <- function(x) {
     identical(names(x$fpca), x$dofs), identical(names(x$gmm), x$dofs),
     all(vapply(x$fpca, inherits, logical(1), "fpca_fit")),
     all(vapply(x$gmm, inherits, logical(1), "gmm_fit")),
-    has_dim(x$basis$mean, c(L, p)), has_dim(x$basis$components, c(L, p, q)),
-    has_dim(x$scores, c(n, p, q)), has_dim(x$var_explained, c(p, q)),
+    is.null(fpca_shape_fault(x)), has_dim(model_scores(x), c(n, p, q)),
     nrow(x$warp$components) == L, nrow(x$warp$scores) == n,
     is.data.frame(x$removed), is.data.frame(x$fallbacks), is.data.frame(x$degenerate_data),
     x$dependence$type %in% c("independent", "copula"),
@@ -537,16 +531,52 @@ gmm_reason <- function(fit) {
 
 # Mean curves (L x p) and components (L x p x ncomp) of every DoF, laid out
 # for vectorised generation and projection.
-model_basis <- function(fpca, dofs, ncomp) {
-  L <- length(fpca[[1]]$mean)
-  p <- length(dofs)
-  mean <- matrix(0, L, p, dimnames = list(NULL, dofs))
-  comps <- array(0, c(L, p, ncomp), dimnames = list(NULL, dofs, paste0("FPC", seq_len(ncomp))))
-  for (j in seq_len(p)) {
-    mean[, j] <- fpca[[j]]$mean
-    comps[, j, ] <- fpca[[j]]$components
+# The views of a model's per-DoF FPCAs that the kernels and methods read,
+# stacked over DoFs: the basis (`mean` L x p, `components` L x p x ncomp),
+# the training scores (n x p x ncomp) and the variance explained (p x ncomp).
+model_basis <- function(model) {
+  dofs <- model$dofs
+  q <- model$settings$ncomp
+  L <- model$target_length
+  mean <- matrix(0, L, length(dofs), dimnames = list(NULL, dofs))
+  comps <- array(0, c(L, length(dofs), q), dimnames = list(NULL, dofs, paste0("FPC", seq_len(q))))
+  for (j in seq_along(dofs)) {
+    mean[, j] <- model$fpca[[j]]$mean
+    comps[, j, ] <- model$fpca[[j]]$components
   }
   list(mean = mean, components = comps)
+}
+
+model_scores <- function(model) {
+  dofs <- model$dofs
+  q <- model$settings$ncomp
+  scores <- array(0, c(model$n_used, length(dofs), q), dimnames = list(model$ids, dofs, paste0("FPC", seq_len(q))))
+  for (j in seq_along(dofs)) scores[, j, ] <- model$fpca[[j]]$scores
+  scores
+}
+
+model_var_explained <- function(model) {
+  q <- model$settings$ncomp
+  matrix(vapply(model$fpca, function(f) as.numeric(f$var_explained), numeric(q)),
+         length(model$dofs), q, byrow = TRUE, dimnames = list(model$dofs, paste0("FPC", seq_len(q))))
+}
+
+# What in a model's FPCAs the kernels could not take (NULL when nothing): a
+# model changed by hand gets a classed error naming it (see model_fault()),
+# not a crash or an R error from model_basis().
+fpca_shape_fault <- function(model, ncomp = model$settings$ncomp) {
+  L <- model$target_length
+  if (length(model$fpca) != length(model$dofs)) return("it does not hold one FPCA per DoF")
+  for (j in seq_along(model$fpca)) {
+    f <- model$fpca[[j]]
+    if (!is.numeric(f$mean) || length(f$mean) != L) {
+      return(sprintf("the FPCA mean of DoF %s does not have %d frames", model$dofs[j], L))
+    }
+    if (!is.numeric(f$components) || length(f$components) != L * ncomp) {
+      return(sprintf("the FPCs of DoF %s are not %d frames x %d", model$dofs[j], L, ncomp))
+    }
+  }
+  NULL
 }
 
 empty_removed <- function() {
@@ -622,7 +652,7 @@ print.grasp_model <- function(x, ...) {
               x$n_input, x$n_used, rm[["overlong"]], rm[["degenerate warp"]]))
   cat(sprintf("  target length: %d frames at %g Hz; warping: %s\n", x$target_length, x$rate,
               x$warping$method))
-  ve <- 100 * rowSums(x$var_explained)
+  ve <- 100 * rowSums(model_var_explained(x))
   if (any(is.finite(ve))) {
     cat(sprintf("  variance explained by %d FPCs per DoF: min %.1f%%, median %.1f%%, max %.1f%%\n",
                 x$settings$ncomp, min(ve, na.rm = TRUE), stats::median(ve, na.rm = TRUE),
@@ -650,13 +680,16 @@ print.grasp_model <- function(x, ...) {
 #'   variance explained by each FPC (`FPC1`, `FPC2`, ...) and in total
 #'   (`total`), the mixture used (`"mixture"`, `"single Gaussian"` or
 #'   `"point mass"`) and the fallback reason. The recordings removed and the
-#'   fallbacks are kept as attributes `removed` and `fallbacks` and printed.
+#'   fallbacks are kept as attributes `removed` and `fallbacks` and printed;
+#'   attribute `dependence_matrix` is the DoF x DoF correlation between the
+#'   DoFs' first FPC scores the model generates with (the identity for the
+#'   thesis' independent DoFs, `dependence = "independent"`).
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
 #' summary(fit_grasp_model(g, seed = 1))
 summary.grasp_model <- function(object, ...) {
-  ve <- 100 * object$var_explained
+  ve <- 100 * model_var_explained(object)
   mix <- vapply(object$gmm, function(g) {
     if (isTRUE(g$point_mass)) "point mass" else if (isTRUE(g$fallback)) "single Gaussian" else "mixture"
   }, character(1))

@@ -64,25 +64,13 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   present <- levels(droplevels(x$meta$grasp))
-  if (is.null(grasps)) {
-    types <- present
-  } else {
-    if (length(grasps) == 0L) {
-      hm_abort("{.arg grasps} must name at least one grasp type (or be {.code NULL} for all).",
-               "bad_input", argument = "grasps", call = call)
-    }
-    types <- as.character(as_feix_grasp(grasps, call = call))
-    absent <- setdiff(types, present)
-    if (length(absent)) {
-      hm_abort("No recordings of grasp type{?s} {.val {absent}} in {.arg x}.",
-               "too_few_recordings", argument = "grasps", call = call)
-    }
+  types <- check_grasp_selection(grasps, "grasps", call = call) %||% present
+  absent <- setdiff(types, present)
+  if (length(absent)) {
+    hm_abort("No recordings of grasp type{?s} {.val {absent}} in {.arg x}.",
+             "too_few_recordings", argument = "grasps", call = call)
   }
-  if (length(types) == 0L) {
-    hm_abort(if (length(x) == 0L) "{.arg x} holds no recordings (an empty selection?)." else
-               "{.arg x} has no labelled recordings: every grasp is {.val NA}.",
-             "no_labels", argument = "x", call = call)
-  }
+  check_some_types(types, x, call = call)
   # Ship each worker only its own type's recordings.
   parts <- lapply(types, function(g) x[!is.na(x$meta$grasp) & x$meta$grasp == g])
   names(parts) <- types
@@ -259,11 +247,7 @@ select_models <- function(x, grasp, call) {
     }
     return(fitted_models(x))
   }
-  if (length(grasp) == 0L) {
-    hm_abort("{.arg grasp} must name at least one grasp type (or be {.code NULL} for all).",
-             "bad_input", argument = "grasp", call = call)
-  }
-  keep <- as.character(as_feix_grasp(grasp, call = call))
+  keep <- check_grasp_selection(grasp, "grasp", call = call)
   absent <- setdiff(keep, names(x))
   if (length(absent)) {
     hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input",
@@ -342,7 +326,7 @@ summary.grasp_models <- function(object, ...) {
                         min_var = NA_real_, median_var = NA_real_, mean_var = NA_real_, max_var = NA_real_,
                         failed = m$message, stringsAsFactors = FALSE))
     }
-    ve <- 100 * rowSums(m$var_explained)
+    ve <- 100 * rowSums(model_var_explained(m))
     fb <- m$fallbacks
     em <- fb$dof[fb$step == "mixture"]
     const <- fb$dof[fb$step == "fpca"]

@@ -414,6 +414,10 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
 #'   with a generated one (the columns are fractions of each grasp's own
 #'   duration, since the two rarely have the same number of frames); with
 #'   `compare` one row per set.
+#' * `type = "hand"`: every recording's hand at the given frame(s) (by
+#'   default its last), one panel per recording and frame: a time strip of
+#'   chosen frames, or the final postures of a few recordings. The drawing is
+#'   described in [autoplot.hand_pose()].
 #' * `type = "frame_counts"`: a histogram of the number of frames of every
 #'   recording, one panel per grasp type, coloured by whether the over-long
 #'   rule of [fit_grasp_model()] (`overlong`) removes the recording before
@@ -422,7 +426,7 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
 #'   aligned recordings and their warping paths).
 #'
 #' @param object A [grasps()] object.
-#' @param type `"curves"`, `"poses"`, `"strip"` or `"frame_counts"`.
+#' @param type `"curves"`, `"poses"`, `"hand"`, `"strip"` or `"frame_counts"`.
 #' @param colour For `"curves"`: metadata column to colour by, `"grasp"`
 #'   (default) or `"subject"` (or any other metadata column).
 #' @param dofs For `"curves"`: DoFs to show (names or indices); all by
@@ -435,7 +439,8 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
 #' @param label For `"poses"` and `"strip"`: the name of `object`'s set
 #'   (shown with `compare`; default `"x"`).
 #' @param frame For `"poses"`: frame to draw, `"last"` (default), `"first"` or
-#'   an index.
+#'   an index. For `"hand"`: the same, or several frame indices (one panel
+#'   each).
 #' @param by For `"poses"`: metadata column to group by (one panel per value).
 #' @param per_group For `"poses"`: recordings drawn per group and set (the
 #'   first ones).
@@ -453,9 +458,10 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
 #'   [fit_grasp_model()].
 #' @param binwidth For `"frame_counts"`: width of the histogram bins, in
 #'   frames.
-#' @param skeleton,view For `"poses"` and `"strip"`: a [hand_skeleton()] and
-#'   the viewing direction (see [autoplot.hand_pose()]).
-#' @param ... For `"poses"` and `"strip"`, passed to [forward_kinematics()].
+#' @param skeleton,view For `"poses"`, `"hand"` and `"strip"`: a
+#'   [hand_skeleton()] and the viewing direction (see [autoplot.hand_pose()]).
+#' @param ... For `"poses"`, `"hand"` and `"strip"`, passed to
+#'   [forward_kinematics()].
 #' @return A ggplot object. For `"poses"` its layers' data have columns `set`
 #'   and `group`; for `"strip"` `set`, `id`, `frame` and `time` (the
 #'   fraction of the recording's duration, as a label); for
@@ -467,10 +473,11 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
 #' ggplot2::autoplot(g)
 #' ggplot2::autoplot(g, type = "poses", view = "radial")
 #' ggplot2::autoplot(g, type = "poses", label = "recorded", compare = list(again = g))
+#' ggplot2::autoplot(g[1], type = "hand", frame = c(1, 20, 40), view = "palm")
 #' ggplot2::autoplot(g, type = "strip", n_frames = 4)
 #' ggplot2::autoplot(g, type = "frame_counts")
 #' @method autoplot grasps
-autoplot.grasps <- function(object, type = c("curves", "poses", "strip", "frame_counts"),
+autoplot.grasps <- function(object, type = c("curves", "poses", "hand", "strip", "frame_counts"),
                             colour = "grasp", dofs = NULL, max_recordings = 200,
                             compare = NULL, label = NULL, frame = "last", by = "grasp", per_group = 1L,
                             ncol = NULL, recording = 1L, n_frames = 6L, grasp = NULL,
@@ -492,6 +499,8 @@ autoplot.grasps <- function(object, type = c("curves", "poses", "strip", "frame_
     curves = plot_grasp_curves(object, colour, dofs, max_recordings, call),
     poses = plot_pose_grid(sets(), frame = frame, by = by, per_group = per_group, skeleton = skeleton,
                            view = view, ncol = ncol, ..., call = call),
+    hand = autoplot.hand_pose(hand_pose(object, frame = frame, skeleton = skeleton, ..., call = call),
+                              view = view),
     strip = plot_frame_strip(sets(), recording = recording, n_frames = n_frames, skeleton = skeleton,
                              view = view, ..., call = call),
     frame_counts = plot_frame_counts(object, grasp = grasp, rule = as_overlong_rule(overlong, call = call),

@@ -85,18 +85,38 @@ unit_factor <- function(unit) if (identical(unit, "rad")) 180 / pi else 1
 #' projecting `truth` onto the reference PCA and back. `recon` is then not
 #' used.
 #'
+#' With `by = "markers"` it compares marker sets (the paper's Figures 2 and
+#' 4): one hand-over model per marker set is fitted on `reference`
+#' ([fit_handover()]) and reconstructs `truth`, the test set (ideally unseen
+#' grasp types and subjects). The default sets are the paper's comparison:
+#' the ranked 3- and 6-marker sets ([select_markers()]), the 6-marker set
+#' without PCA (`method = "direct"`, Figure 2), the hand-picked set and a
+#' search-based 6-marker set (`select_markers(method = "handpicked")` and
+#' `"search"`). `recon` is then not used.
+#'
 #' @param truth,recon [grasps()] objects with the same recordings (ids, frame
-#'   counts and DoFs), e.g. a test set and `reconstruct(model, test)`.
-#' @param by `"overall"` (one number), `"recording"`, `"frame"`, `"dof"`, or
-#'   `"ncomp"` (the PCA error per number of components, see Details).
+#'   counts and DoFs), e.g. a test set and `predict(model, test)` ([predict.handover_model()]).
+#' @param by `"overall"` (one number), `"recording"`, `"frame"`, `"dof"`,
+#'   `"ncomp"` (the PCA error per number of components) or `"markers"` (per
+#'   marker set), see Details.
 #' @param reference For `by = "ncomp"`: a [grasps()] object whose frames the
 #'   PCA is fitted on, or a `handover_model` (its PCA is used); `truth` by
-#'   default.
+#'   default. For `by = "markers"` (needed): the [grasps()] reference database
+#'   the hand-over models are fitted on.
+#' @param sets For `by = "markers"`: `NULL` for the default comparison, or a
+#'   named list whose elements are marker-name vectors or lists
+#'   `list(markers = , method = )`.
+#' @param ... For `by = "markers"` only: `search` (include the search-based
+#'   set in the default comparison; default `TRUE`, the slow part) and
+#'   arguments of [fit_handover()] (e.g. `k`, `ncomp`).
 #' @return A number (degrees) for `by = "overall"`, else a data frame with
 #'   column `error`. For `by = "ncomp"` a data frame of class
 #'   `handover_pca_error`: `ncomp`, `error` (degrees) and `variance`
 #'   (cumulative proportion of reference variance), with an [autoplot()]
-#'   method.
+#'   method. For `by = "markers"` a data frame of class
+#'   `handover_comparison`: `set`, `method`, `n_markers`, `markers`, `error`
+#'   (degrees, over all test frames) and `error_sd` (standard deviation of
+#'   the per-recording errors), with an [autoplot()] method.
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 1, grasps = 1:2, objects = 1, trials = 1)
@@ -107,14 +127,33 @@ unit_factor <- function(unit) if (identical(unit, "rad")) 180 / pi else 1
 #' pe <- handover_error(g, by = "ncomp")
 #' head(pe)
 #' ggplot2::autoplot(pe)
-handover_error <- function(truth, recon = NULL, by = c("overall", "recording", "frame", "dof", "ncomp"),
-                           reference = NULL) {
+#' g3 <- simulate_grasps(subjects = 3, grasps = 1:4, objects = 1, trials = 1)
+#' cmp <- handover_error(g3[g3$meta$subject == "S03"], by = "markers",
+#'                       reference = g3[g3$meta$subject != "S03"], search = FALSE)
+#' cmp
+#' ggplot2::autoplot(cmp)
+handover_error <- function(truth, recon = NULL, by = c("overall", "recording", "frame", "dof", "ncomp", "markers"),
+                           reference = NULL, sets = NULL, ...) {
   call <- rlang::caller_env()
   by <- check_choice(by, arg = "by", call = rlang::current_env())
   check_grasps(truth, "truth", call = call)
+  if (by == "markers") {
+    if (is.null(reference)) {
+      hm_abort("Comparing marker sets needs a {.arg reference} to fit the hand-over models on.",
+               "bad_input", argument = "reference", call = call)
+    }
+    dots <- list(...)
+    check_dots_for(dots[rlang::names2(dots) != "search"], fit_handover, "fit_handover",
+                   exclude = c("reference", "markers", "method"), call = call)
+    return(compare_marker_sets(reference, truth, sets = sets, ..., call = call))
+  }
+  if (...length() > 0L) {
+    hm_abort("{.arg ...} is used only with {.code by = \"markers\"}.", "bad_input",
+             argument = "...", call = call)
+  }
   if (by == "ncomp") return(handover_pca_error(reference %||% truth, truth, call = call))
   if (is.null(recon)) {
-    hm_abort("Give {.arg recon}, e.g. {.code reconstruct(model, truth)}.", "bad_input",
+    hm_abort("Give {.arg recon}, e.g. {.code predict(model, truth)}.", "bad_input",
              argument = "recon", call = call)
   }
   check_grasps(recon, "recon", call = call)
@@ -127,7 +166,7 @@ handover_error <- function(truth, recon = NULL, by = c("overall", "recording", "
   }
   if (!is.null(differ)) {
     hm_abort(c("{.arg truth} and {.arg recon} must hold the same recordings, frame counts and DoFs.",
-               x = differ, i = "Compare a query with {.code reconstruct(model, query)}."),
+               x = differ, i = "Compare a query with {.code predict(model, query)}."),
              "bad_input", argument = "recon", call = call)
   }
   if (!identical(truth$unit, recon$unit)) {
@@ -147,40 +186,17 @@ handover_error <- function(truth, recon = NULL, by = c("overall", "recording", "
     dof = data.frame(dof = truth$dofs, error = colMeans(do.call(rbind, err)), row.names = NULL))
 }
 
-#' Compare marker sets and methods for hand-over
-#'
-#' Fits one hand-over model per marker set on `reference` and reports the
-#' joint-angle error of reconstructing `test` (the paper's Figures 2 and 4).
-#' The default sets are the paper's comparison: our ranked 3- and 6-marker
-#' sets ([select_markers()]), the 6-marker set without PCA (`method =
-#' "direct"`, Figure 2), the hand-picked set and a search-based 6-marker set
-#' (`select_markers(method = "handpicked")` and `"search"`).
-#'
-#' @param reference A [grasps()] reference database.
-#' @param test A [grasps()] test set (ideally unseen grasp types and subjects).
-#' @param sets `NULL` for the default comparison, or a named list whose
-#'   elements are marker-name vectors or lists `list(markers = , method = )`.
-#' @param search Include the search-based set in the default comparison.
-#' @param ... Passed to [fit_handover()] (e.g. `k`, `ncomp`).
-#' @return A data frame of class `handover_comparison`: `set`, `method`,
-#'   `n_markers`, `markers`, `error` (degrees, [handover_error()] over all
-#'   test frames) and `error_sd` (standard deviation of the per-recording
-#'   errors).
-#' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 3, grasps = 1:4, objects = 1, trials = 1)
-#' ref <- g[g$meta$subject != "S03"]
-#' cmp <- compare_marker_sets(ref, g[g$meta$subject == "S03"], search = FALSE)
-#' cmp
-#' ggplot2::autoplot(cmp)
-compare_marker_sets <- function(reference, test, sets = NULL, search = TRUE, ...) {
-  call <- rlang::caller_env()
+# handover_error(by = "markers") (documented there): one hand-over model
+# per marker set, fitted on `reference`, reconstructing `test`; `...` goes to
+# fit_handover().
+compare_marker_sets <- function(reference, test, sets = NULL, search = TRUE, ..., call = rlang::caller_env()) {
   check_grasps(reference, "reference", call = call)
-  check_grasps(test, "test", call = call)
+  check_grasps(test, "truth", call = call)
+  search <- check_flag(search, "search", call = call)
   if (is.null(sets)) {
-    rk <- rank_markers(reference)
-    sets <- list(`ranked (3)` = select_markers(rk, 3), `ranked (6)` = select_markers(rk, 6),
-                 `ranked (6), no PCA` = list(markers = select_markers(rk, 6), method = "direct"),
+    six <- as.vector(select_markers(reference, 6))
+    sets <- list(`ranked (3)` = six[1:3], `ranked (6)` = six,
+                 `ranked (6), no PCA` = list(markers = six, method = "direct"),
                  `hand-picked (6)` = handpicked_markers())
     if (search) sets$`search (6)` <- as.vector(search_markers(reference, 6))
   }
@@ -192,7 +208,7 @@ compare_marker_sets <- function(reference, test, sets = NULL, search = TRUE, ...
     if (!is.list(s)) s <- list(markers = s, method = "pca")
     if (is.null(s$method)) s$method <- "pca"
     model <- fit_handover(reference, s$markers, method = s$method, ...)
-    rec <- reconstruct(model, test)
+    rec <- stats::predict(model, test)
     e <- handover_error(test, rec, by = "recording")
     data.frame(set = nm, method = s$method, n_markers = length(s$markers),
                markers = paste(s$markers, collapse = ", "), error = handover_error(test, rec),

@@ -4,8 +4,11 @@
 
 #' Reconstruct full hand motion from sparse markers
 #'
-#' @param model A fitted model, here a `handover_model` from [fit_handover()].
-#' @param query Either a [grasps()] object (its markers are computed by
+#' `predict()` on a hand-over model rebuilds every joint angle from the
+#' sparse markers of `newdata`.
+#'
+#' @param object A `handover_model` from [fit_handover()].
+#' @param newdata Either a [grasps()] object (its markers are computed by
 #'   forward kinematics, for evaluation against its own joint angles), or a
 #'   frames x (3 * m) matrix of recorded marker positions relative to the
 #'   root link (one recording), or a list of such matrices. Matrix columns
@@ -34,22 +37,21 @@
 #' fit <- fit_handover(ref, markers = c("index_tip", "ring_tip", "thumb_tip"), k = 30)
 #' mk <- forward_kinematics(ang, markers = fit$markers)
 #' mk[5, 1:3] <- NaN   # the index tip is occluded in frame 5
-#' rec <- reconstruct(fit, mk)
+#' rec <- predict(fit, mk)
 #' attr(rec, "handover")$markers_used[[1]][1:6]
-reconstruct <- function(model, query, ...) UseMethod("reconstruct")
-
-#' @rdname reconstruct
-#' @export
-reconstruct.handover_model <- function(model, query, ...) {
+predict.handover_model <- function(object, newdata, ...) {
   call <- rlang::caller_env()
+  check_dots_for(list(...), predict.handover_model, "predict.handover_model", call = call)
+  model <- object
+  query <- newdata
   cols <- marker_columns(model$markers)
   if (inherits(query, "grasps")) {
     if (!identical(query$dofs, model$dofs)) {
       first <- which(rep_len(query$dofs, length(model$dofs)) != model$dofs)[1]
-      hm_abort(c("The DoFs of {.arg query} differ from the model's.",
-                 x = if (length(query$dofs) != length(model$dofs)) "{.arg query} has {length(query$dofs)} DoFs, the model {length(model$dofs)}."
+      hm_abort(c("The DoFs of {.arg newdata} differ from the model's.",
+                 x = if (length(query$dofs) != length(model$dofs)) "{.arg newdata} has {length(query$dofs)} DoFs, the model {length(model$dofs)}."
                      else "DoF {first} is {.val {query$dofs[first]}}, the model's {.val {model$dofs[first]}}."),
-               "bad_input", argument = "query", call = call)
+               "bad_input", argument = "newdata", call = call)
     }
     mk <- do.call(markers_from_angles, c(list(query, skeleton = model$skeleton, markers = model$markers),
                                          model$fk_args))
@@ -57,8 +59,8 @@ reconstruct.handover_model <- function(model, query, ...) {
   } else {
     if (is.matrix(query) || is.data.frame(query)) query <- list(query)
     if (!is.list(query) || length(query) == 0L) {
-      hm_abort("{.arg query} must be a grasps object, a marker matrix or a list of marker matrices, not {.obj_type_friendly {query}}.",
-               "bad_input", argument = "query", call = call)
+      hm_abort("{.arg newdata} must be a grasps object, a marker matrix or a list of marker matrices, not {.obj_type_friendly {query}}.",
+               "bad_input", argument = "newdata", call = call)
     }
     mk <- lapply(seq_along(query), function(i) as_query_markers(query[[i]], cols, i, call))
     meta <- data.frame(id = if (!is.null(names(query)) && all(nzchar(names(query))))
@@ -79,49 +81,36 @@ reconstruct.handover_model <- function(model, query, ...) {
   out
 }
 
-#' @rdname reconstruct
-#' @export
-reconstruct.default <- function(model, query, ...) {
-  hm_abort("{.arg model} must be a {.cls handover_model} from {.fn fit_handover}, not {describe_value(model)}.",
-           "bad_input", argument = "model", call = rlang::caller_env())
-}
-
-#' @rdname reconstruct
-#' @param object A `handover_model`.
-#' @param newdata The query, as `query` in `reconstruct()`.
-#' @export
-predict.handover_model <- function(object, newdata, ...) reconstruct(object, newdata, ...)
-
 # Check and reorder one query marker matrix to the model's marker columns.
 as_query_markers <- function(m, cols, i, call) {
   if (is.data.frame(m)) m <- as.matrix(m)
   if (!is.matrix(m) || !is.numeric(m)) {
-    hm_abort("{.arg query[[{i}]]} must be a numeric frames x (3 * markers) matrix, not {.obj_type_friendly {m}}.",
-             "bad_markers", argument = "query", recording = i, call = call)
+    hm_abort("{.arg newdata[[{i}]]} must be a numeric frames x (3 * markers) matrix, not {.obj_type_friendly {m}}.",
+             "bad_markers", argument = "newdata", recording = i, call = call)
   }
   if (!is.null(colnames(m))) {
     miss <- setdiff(cols, colnames(m))
     if (length(miss)) {
-      hm_abort(c("{.arg query[[{i}]]} lacks marker column{?s} {.val {miss}}.",
+      hm_abort(c("{.arg newdata[[{i}]]} lacks marker column{?s} {.val {miss}}.",
                  i = "The model was fitted on markers {.val {sub('\\\\.x$', '', cols[c(TRUE, FALSE, FALSE)])}}."),
-               "bad_markers", argument = "query", recording = i, column = miss, call = call)
+               "bad_markers", argument = "newdata", recording = i, column = miss, call = call)
     }
     m <- m[, cols, drop = FALSE]
   } else {
     # unnamed columns cannot be checked: in another order than the model's
     # they would give a plausible but wrong hand
-    hm_abort(c("{.arg query[[{i}]]} has unnamed columns; name them {.val {utils::head(cols, 3)}}, ... (x, y, z per marker).",
+    hm_abort(c("{.arg newdata[[{i}]]} has unnamed columns; name them {.val {utils::head(cols, 3)}}, ... (x, y, z per marker).",
                i = "{.fn markers_from_angles} returns named marker columns."),
-             "bad_markers", argument = "query", recording = i, call = call)
+             "bad_markers", argument = "newdata", recording = i, call = call)
   }
   if (nrow(m) == 0L) {
-    hm_abort("{.arg query[[{i}]]} has no frames.", "bad_markers", argument = "query", recording = i, call = call)
+    hm_abort("{.arg newdata[[{i}]]} has no frames.", "bad_markers", argument = "newdata", recording = i, call = call)
   }
   inf <- which(is.infinite(m), arr.ind = TRUE)
   if (nrow(inf)) {
-    hm_abort(c("{.arg query[[{i}]]} has {nrow(inf)} infinite marker coordinate{?s}.",
+    hm_abort(c("{.arg newdata[[{i}]]} has {nrow(inf)} infinite marker coordinate{?s}.",
                x = "First in column {.val {colnames(m)[inf[1, 2]]}}, frame {inf[1, 1]}."),
-             "bad_markers", argument = "query", recording = i, column = colnames(m)[inf[1, 2]],
+             "bad_markers", argument = "newdata", recording = i, column = colnames(m)[inf[1, 2]],
              line = inf[1, 1], call = call)
   }
   storage.mode(m) <- "double"
@@ -140,13 +129,13 @@ reconstruct_one <- function(model, m, id, call) {
     bad <- which(used == 0L)
     hm_abort(c("In recording {.val {id}}, {length(bad)} frame{?s} ha{?s/ve} no visible marker: {.val {utils::head(bad, 10)}}{if (length(bad) > 10) ', ...' else ''}.",
                i = "Hand-over needs at least one of the markers {.val {model$markers}} in every frame; trim or fill those frames."),
-             "occluded", recording = id, argument = "query", call = call)
+             "occluded", recording = id, argument = "newdata", call = call)
   }
   q <- model$ncomp
   if (model$method == "direct") {
     if (any(used < nm)) {
       hm_abort("The no-PCA baseline cannot handle occluded markers (recording {.val {id}}).",
-               "occluded", recording = id, argument = "query", call = call)
+               "occluded", recording = id, argument = "newdata", call = call)
     }
     dr <- model$direct
     ang <- sweep(sweep(m, 2, dr$mu_x) %*% dr$beta, 2, dr$mu_y, "+")

@@ -3,7 +3,7 @@
 # query frame from the sparse markers to the principal components, a cone
 # filter over the component trajectories, back-projection to joint angles.
 # Marker placement, ranking and selection are in R/markers.R; the search
-# baseline and the evaluation (handover_error(), compare_marker_sets()) in
+# baseline and the evaluation (handover_error()) in
 # R/handover-evaluate.R; reconstruction in R/handover-reconstruct.R; the
 # regression core is in C (src/handover-lwr.c).
 
@@ -13,7 +13,8 @@
 #' reference database recorded with the full marker set: a PCA of the
 #' reference joint angles and, for each reference frame, the positions of the
 #' sparse markers (relative to the root link) and the component scores.
-#' [reconstruct()] then rebuilds all joint angles from the sparse markers.
+#' `predict()` ([predict.handover_model()]) then rebuilds all joint angles
+#' from the sparse markers.
 #'
 #' For each query frame the regression weights every reference frame by the
 #' inverse Euclidean distance between its sparse markers and the query's, and
@@ -56,7 +57,7 @@
 #'   weights.
 #' @param skeleton,... Passed to [forward_kinematics()] (e.g. `mapping`).
 #' @return An object of class `handover_model`.
-#' @seealso [reconstruct()], [select_markers()], [compare_marker_sets()]
+#' @seealso [predict.handover_model()], [select_markers()], [handover_error()] (`by = "markers"` compares marker sets)
 #' @export
 #' @examples
 #' set.seed(1)
@@ -65,7 +66,7 @@
 #' ref <- grasps(list(ang, ang[40:1, ] * 0.8), dofs = hust_dofs$name)
 #' fit <- fit_handover(ref, markers = c("index_tip", "ring_tip", "thumb_tip"), k = 30)
 #' fit
-#' rec <- reconstruct(fit, ref[1])
+#' rec <- predict(fit, ref[1])
 #' handover_error(ref[1], rec)
 fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth = TRUE,
                          filter_size = NULL, method = c("pca", "direct"), ridge = 1e-3,
@@ -79,10 +80,11 @@ fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth =
   ref_all <- do.call(rbind, all_markers)
   if (is.numeric(markers) && length(markers) == 1L) {
     n_hand <- sum(hand_marker_set()$segment == "hand")
-    markers <- select_markers(rank_markers(ref_all),
-                              check_whole(markers, "markers", max = n_hand, class = "bad_markers", call = call))
+    n <- check_whole(markers, "markers", max = n_hand, class = "bad_markers", call = call)
+    markers <- rank_markers(ref_all, call = call)$marker[seq_len(n)]
   }
   check_marker_names(markers, call = call)
+  markers <- as.vector(markers)  # a select_markers() result's ranking or search stays there
   hand <- hand_marker_set()$marker[hand_marker_set()$segment == "hand"]
   if (!all(markers %in% hand)) {
     hm_abort(c("{.arg markers}: marker{?s} {.val {setdiff(markers, hand)}} ride{?s/} on the root link and {?is/are} constant there.",

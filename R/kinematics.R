@@ -240,7 +240,7 @@ check_mapping <- function(mapping, skeleton, call) {
 #'   `list(NULL, joint names, c("x", "y", "z"))`; for a `grasps` object, a list
 #'   of such arrays named by recording id (also for a set of one). Each array has an attribute `"fk"`: a list with `mode`, the
 #'   `mapping` rows applied, `deactivated` and `ignored` DoFs.
-#' @seealso [hand_pose()] to draw the result, [write_bvh()].
+#' @seealso `autoplot(x, type = "hand")` ([autoplot.grasps()]) to draw the hand, [write_bvh()].
 #' @export
 #' @examples
 #' skel <- hand_skeleton()

@@ -6,38 +6,9 @@
 # the type's mean last frame): the reconstruction error of the type's k-PC
 # subspace. The type with the smallest error wins.
 
-#' Fit last-frame PCA models, one per grasp type
-#'
-#' For every grasp type in `x`, takes the last frame of each recording, centres
-#' on the type's mean last frame and computes its principal components (no
-#' scaling: all DoFs share the angle unit). Used by [classify()] with
-#' `method = "last_frame"`; `cumulative_variance()` gives the thesis' Table 5.7.
-#'
-#' A type with `n` recordings has at most `n - 1` informative PCs. When
-#' `n - 1 < k` the type uses `n - 1` components (0 for a single recording:
-#' distance to the mean); this fallback is recorded in `$k_used` and announced
-#' with a warning of class `handmotion_warning_few_recordings`.
-#'
-#' @param x A [grasps()] object. Unlabelled recordings (`grasp` `NA`) are
-#'   ignored and counted in `$n_unlabelled`.
-#' @param k Number of PCs used for classification (default 5, as the thesis).
-#' @param grasps Optional subset of grasp types to fit (names or ids); all
-#'   types present by default.
-#' @return An object of class `last_frame_pca`: a list with `models` (one per
-#'   type: `mean`, `rotation`, `sdev`, `cumvar`, `n`), `k`, `k_used` (named
-#'   integer), `dofs` and `n_unlabelled`.
-#' @seealso `cumulative_variance()`, [classify()], [predict.last_frame_pca()]
-#' @export
-#' @examples
-#' set.seed(1)
-#' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
-#' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6),
-#'                                     subject = rep(paste0("s", 1:6), each = 2)))
-#' fit <- fit_last_frame_pca(g, k = 2)
-#' fit
-#' summary(fit)
-fit_last_frame_pca <- function(x, k = 5, grasps = NULL) {
-  call <- rlang::caller_env()
+# fit_grasp_classifier(method = "last_frame"): one PCA of the last frames per
+# grasp type (documented there).
+fit_last_frame_pca <- function(x, k = 5, grasps = NULL, call = rlang::caller_env()) {
   check_grasps(x, call = call)
   k <- check_whole(k, "k", max = length(x$dofs), call = call)
   types <- labelled_types(x, grasps, call = call)
@@ -63,14 +34,9 @@ fit_last_frame_pca <- function(x, k = 5, grasps = NULL) {
 # Grasp types to model: the requested ones (validated) or all labelled types
 # present, in Feix order.
 labelled_types <- function(x, grasps = NULL, call = rlang::caller_env()) {
-  have <- feix_order(unique(as.character(stats::na.omit(x$meta$grasp))))
-  if (length(have) == 0L) {
-    hm_abort(if (length(x) == 0L) "{.arg x} holds no recordings (an empty selection?)." else
-               "{.arg x} has no labelled recordings: every {.field grasp} is NA.", "no_labels",
-             argument = "x", call = call)
-  }
-  if (is.null(grasps)) return(have)
-  want <- as.character(as_feix_grasp(grasps, call = call))
+  have <- check_some_types(feix_order(unique(as.character(stats::na.omit(x$meta$grasp)))), x, call = call)
+  want <- check_grasp_selection(grasps, "grasps", call = call)
+  if (is.null(want)) return(have)
   absent <- setdiff(want, have)
   if (length(absent) > 0L) {
     hm_abort("No recordings of grasp type{?s} {.val {absent}} in {.arg x}.", "bad_input",
@@ -110,7 +76,7 @@ pca_of_frames <- function(frames) {
 
 #' Cumulative variance explained by last-frame PCs (Table 5.7)
 #'
-#' @param fit A [fit_last_frame_pca()] result.
+#' @param fit A `fit_grasp_classifier(method = "last_frame")` result.
 #' @return A data frame with one row per grasp type: `grasp_id`, `grasp` and
 #'   `pc1` ... `pc<p>`, the cumulative fraction of variance explained by the
 #'   first 1 ... p principal components of the type's last frames (`NA` for a
@@ -120,7 +86,7 @@ pca_of_frames <- function(frames) {
 #' set.seed(2)
 #' recs <- lapply(1:8, function(i) matrix(rnorm(5 * 16), 5, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c(1, 2), 4)))
-#' cumulative_variance(fit_last_frame_pca(g, k = 2))
+#' cumulative_variance(fit_grasp_classifier(g, method = "last_frame", k = 2))
 cumulative_variance <- function(fit) {
   if (!inherits(fit, "last_frame_pca")) {
     hm_abort("{.arg fit} must be a {.cls last_frame_pca} object, not {.obj_type_friendly {fit}}.",
@@ -137,7 +103,7 @@ cumulative_variance <- function(fit) {
 
 #' Classify recordings with last-frame PCA models
 #'
-#' @param object A [fit_last_frame_pca()] result.
+#' @param object A [fit_grasp_classifier()] result with `method = "last_frame"`.
 #' @param newdata A [grasps()] object with the same DoFs.
 #' @param type `"class"` for the predicted grasp type (factor over the fitted
 #'   types), `"distance"` for the n x types matrix of Euclidean distances
@@ -149,7 +115,7 @@ cumulative_variance <- function(fit) {
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' fit <- fit_last_frame_pca(g, k = 2)
+#' fit <- fit_grasp_classifier(g, method = "last_frame", k = 2)
 #' table(predict(fit, g), g$meta$grasp, dnn = c("predicted", "truth"))
 predict.last_frame_pca <- function(object, newdata, type = c("class", "distance"), ...) {
   call <- rlang::caller_env()

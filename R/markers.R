@@ -187,93 +187,65 @@ place_markers <- function(pos, ms, call = rlang::caller_env()) {
 
 # Stack the marker matrices of a grasps object (or accept a matrix, a data
 # frame or a list of marker matrices with the same columns).
-stack_markers <- function(x, skeleton, call = rlang::caller_env(), ...) {
+stack_markers <- function(x, skeleton, arg = "reference", call = rlang::caller_env(), ...) {
   if (inherits(x, "grasps")) x <- markers_from_angles(x, skeleton = skeleton, ...)
   if (is.data.frame(x)) x <- as.matrix(x)
   what <- "a {.cls grasps} object or a numeric frames x (3 * markers) marker matrix (or a list of them),"
   if (is.list(x)) {
     if (length(x) == 0L) {
-      hm_abort(paste("{.arg reference} must be", what, "not an empty list."), "bad_input",
-               argument = "reference", call = call)
+      hm_abort(paste("{.arg {arg}} must be", what, "not an empty list."), "bad_input",
+               argument = arg, call = call)
     }
     for (i in seq_along(x)) {
       if (!is.matrix(x[[i]]) || !is.numeric(x[[i]])) {
-        hm_abort(paste("{.arg reference[[{i}]]} must be a numeric marker matrix, not {describe_value(x[[i]])}."),
-                 "bad_markers", argument = "reference", recording = i, call = call)
+        hm_abort(paste("{.arg {arg}[[{i}]]} must be a numeric marker matrix, not {describe_value(x[[i]])}."),
+                 "bad_markers", argument = arg, recording = i, call = call)
       }
       if (!identical(colnames(x[[i]]), colnames(x[[1]]))) {
-        hm_abort("{.arg reference[[{i}]]} has other columns than {.arg reference[[1]]}: every marker matrix needs the same markers in the same order.",
-                 "bad_markers", argument = "reference", recording = i, call = call)
+        hm_abort("{.arg {arg}[[{i}]]} has other columns than {.arg {arg}[[1]]}: every marker matrix needs the same markers in the same order.",
+                 "bad_markers", argument = arg, recording = i, call = call)
       }
     }
     x <- do.call(rbind, x)
   }
   if (!is.matrix(x) || !is.numeric(x)) {
-    hm_abort(paste("{.arg reference} must be", what, "not {describe_value(x)}."),
-             "bad_input", argument = "reference", call = call)
+    hm_abort(paste("{.arg {arg}} must be", what, "not {describe_value(x)}."),
+             "bad_input", argument = arg, call = call)
   }
   x
 }
 
-#' Rank markers by their influence on the principal components (Algorithm 1)
-#'
-#' Principal component analysis of the marker positions of a reference
-#' database (13 hand markers, 39 coordinates, relative to the root link); each
-#' marker's influence is the sum over components of the absolute eigenvector
-#' coefficients of its x, y and z coordinates, each weighted by the
-#' component's eigenvalue (the paper's Algorithm 1). The variant
-#' `weighting = "equal"` treats the first `n_components` components as
-#' equally important and ignores the rest; the paper found both similar for
-#' `n_components` between a quarter and three quarters of the dimension, and
-#' worse results when all components are used equally.
-#'
-#' The forearm markers are constant relative to the root link and are not
-#' ranked.
-#'
-#' @param reference A [grasps()] object (markers are computed by
-#'   [forward_kinematics()]) or a frames x (3 * markers) marker matrix with
-#'   columns named `<marker>.x` etc.
-#' @param weighting `"eigenvalue"` (the paper's choice) or `"equal"`.
-#' @param n_components For `weighting = "equal"`, the number of leading
-#'   components counted; default half the dimension.
-#' @param skeleton,... Passed to [forward_kinematics()] for a grasps object.
-#' @return A data frame of class `marker_ranking`, ordered from most to least
-#'   influential: `rank`, `marker`, `influence`, `share` (influence / total);
-#'   attributes `eigenvalues` and `weighting`.
-#' @seealso [select_markers()]
-#' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 2, grasps = 1:4, objects = 1, trials = 1)
-#' rank_markers(g)
-#' rank_markers(g, weighting = "equal")
+# select_markers(method = "ranked")'s ranking (the paper's Algorithm 1,
+# documented there): a data frame of class marker_ranking, most influential
+# marker first, with the eigenvalues and the weighting as attributes.
 rank_markers <- function(reference, weighting = c("eigenvalue", "equal"),
-                         n_components = NULL, skeleton = hand_skeleton(), ...) {
-  call <- rlang::caller_env()
-  weighting <- check_choice(weighting, arg = "weighting", call = rlang::current_env())
+                         n_components = NULL, skeleton = hand_skeleton(), ..., arg = "reference",
+                         call = rlang::caller_env()) {
+  weighting <- check_choice(weighting, c("eigenvalue", "equal"), arg = "weighting", call = call)
   check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton"),
                  call = call)
-  m <- stack_markers(reference, skeleton, call = call, ...)
-  markers <- marker_names_of(m, call = call)
-  check_marker_names(markers, arg = "reference", call = call)
+  m <- stack_markers(reference, skeleton, arg = arg, call = call, ...)
+  markers <- marker_names_of(m, arg = arg, call = call)
+  check_marker_names(markers, arg = arg, call = call)
   # the forearm markers are constant on the root link (documented)
   keep <- markers %in% hand_marker_set()$marker[hand_marker_set()$segment == "hand"]
   if (!any(keep)) {
-    hm_abort("{.arg reference} has no hand markers to rank, only {.val {markers}}.",
-             "bad_markers", argument = "reference", call = call)
+    hm_abort("{.arg {arg}} has no hand markers to rank, only {.val {markers}}.",
+             "bad_markers", argument = arg, call = call)
   }
   if (!all(keep)) {
     m <- m[, marker_columns(markers[keep]), drop = FALSE]
     markers <- markers[keep]
   }
   if (nrow(m) < 2L) {
-    hm_abort("Ranking needs at least two frames of marker positions; {.arg reference} has {nrow(m)}.",
-             "reference_too_small", argument = "reference", call = call)
+    hm_abort("Ranking needs at least two frames of marker positions; {.arg {arg}} has {nrow(m)}.",
+             "reference_too_small", argument = arg, call = call)
   }
   bad <- which(!is.finite(m), arr.ind = TRUE)
   if (nrow(bad)) {
-    hm_abort(c("{.arg reference} has {nrow(bad)} missing or infinite marker coordinate{?s}.",
+    hm_abort(c("{.arg {arg}} has {nrow(bad)} missing or infinite marker coordinate{?s}.",
                x = "First in column {.val {colnames(m)[bad[1, 2]]}}, frame {bad[1, 1]}."),
-             "bad_markers", argument = "reference", column = colnames(m)[bad[1, 2]],
+             "bad_markers", argument = arg, column = colnames(m)[bad[1, 2]],
              line = bad[1, 1], call = call)
   }
   e <- eigen(stats::cov(m), symmetric = TRUE)
@@ -330,10 +302,21 @@ print.marker_ranking <- function(x, ...) {
 #' relative to it and only drawn. `select_markers()` chooses `n` of the hand
 #' markers by one of three methods:
 #'
-#' * `"ranked"` (the paper's): the top `n` of [rank_markers()]. Because the
-#'   sets are prefixes of one ranking they are nested: the 3-marker set is
-#'   inside the 6-marker set, so recording more markers only adds markers
-#'   (the paper's Section 5).
+#' * `"ranked"` (the paper's, Wheatland et al.'s Algorithm 1): the top `n`
+#'   of a ranking of the hand markers by their influence on the principal
+#'   components of the marker positions of the reference `x` (relative to
+#'   the root link). Each marker's influence is the sum over components of
+#'   the absolute eigenvector coefficients of its x, y and z coordinates,
+#'   each weighted by the component's eigenvalue (`weighting =
+#'   "eigenvalue"`); `weighting = "equal"` treats the first `n_components`
+#'   components (default half the dimension) as equally important and ignores
+#'   the rest (the paper found both similar for `n_components` between a
+#'   quarter and three quarters of the dimension, and worse results when all
+#'   components are used equally). The forearm markers are constant relative
+#'   to the root link and are not ranked. The whole ranking comes with the
+#'   result (attribute `"ranking"`); because the sets are prefixes of one
+#'   ranking they are nested: the 3-marker set is inside the 6-marker set, so
+#'   recording more markers only adds markers (the paper's Section 5).
 #' * `"handpicked"`: the manually chosen six-marker baseline after Hoyet et
 #'   al. (2012): the tips of the thumb, index and little finger, the thumb IP
 #'   joint and the index and little-finger base knuckles. Like the paper's set
@@ -348,11 +331,15 @@ print.marker_ranking <- function(x, ...) {
 #'   times; about `13 n` reconstructions), or with `exhaustive = TRUE` every
 #'   `choose(13, n)` set (1,716 for six markers: slow).
 #'
-#' @param x A [grasps()] reference (a marker matrix or a `marker_ranking`
-#'   also do for `"ranked"`; `NULL` for `"handpicked"`).
+#' @param x A [grasps()] reference (for `"ranked"` also a frames x (3 *
+#'   markers) marker matrix with columns named `<marker>.x` etc., or the
+#'   `"ranking"` of an earlier result, to take another prefix without
+#'   recomputing it; `NULL` for `"handpicked"`).
 #' @param n Number of markers, 1 to 13.
 #' @param method `"ranked"`, `"handpicked"` or `"search"`.
-#' @param ... For `"ranked"`, passed to [rank_markers()] (`weighting`, ...);
+#' @param ... For `"ranked"`: `weighting` (`"eigenvalue"`, the paper's
+#'   choice, or `"equal"`), `n_components` (for `"equal"`), `skeleton` and
+#'   the [forward_kinematics()] arguments;
 #'   for `"search"`: `holdout` (metadata column split between fitting and
 #'   validation, default `"grasp"`), `exhaustive` (default `FALSE`),
 #'   `max_frames` (validation frames per evaluation, whole recordings, a
@@ -360,15 +347,22 @@ print.marker_ranking <- function(x, ...) {
 #'   untouched), `k` and `ridge` (passed to [fit_handover()]) and `skeleton`
 #'   and the [forward_kinematics()] arguments.
 #' @return A character vector of `n` marker names, most influential (or, for
-#'   the search, first added) first. The search adds attribute `"search"`: a
-#'   data frame of the evaluated sets and their validation errors (degrees).
-#' @seealso [fit_handover()], [compare_marker_sets()]
+#'   the search, first added) first. The ranking adds attribute `"ranking"`:
+#'   a data frame of class `marker_ranking` of all hand markers, most
+#'   influential first (`rank`, `marker`, `influence`, `share` = influence /
+#'   total; attributes `eigenvalues` and `weighting`). The search adds
+#'   attribute `"search"`: a data frame of the evaluated sets and their
+#'   validation errors (degrees).
+#' @seealso [fit_handover()]; `handover_error(by = "markers")` compares
+#'   marker sets.
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:4, objects = 1, trials = 1)
-#' r <- rank_markers(g)
-#' select_markers(r, 3)
-#' select_markers(r, 6)
+#' six <- select_markers(g, 6)
+#' six
+#' attr(six, "ranking")
+#' select_markers(attr(six, "ranking"), 3)
+#' select_markers(g, 6, weighting = "equal")
 #' select_markers(method = "handpicked")
 #' select_markers(g, n = 2, method = "search", max_frames = 200)
 select_markers <- function(x = NULL, n = 6, method = c("ranked", "handpicked", "search"), ...) {
@@ -392,11 +386,11 @@ select_markers <- function(x = NULL, n = 6, method = c("ranked", "handpicked", "
       if (is.null(x)) {
         hm_abort("Ranking markers needs a reference {.arg x}.", "bad_input", argument = "x", call = call)
       }
-      rk <- if (inherits(x, "marker_ranking")) x else rank_markers(x, ...)
+      rk <- if (inherits(x, "marker_ranking")) x else rank_markers(x, ..., arg = "x", call = call)
       if (n > nrow(rk)) {
         hm_abort("{.arg n} must be a whole number from 1 to {nrow(rk)}, not {.val {format(n)}}.",
                  "bad_markers", argument = "n", call = call)
       }
-      rk$marker[seq_len(n)]
+      structure(rk$marker[seq_len(n)], ranking = rk)
     })
 }

@@ -2,31 +2,12 @@
 # projected onto the screen for a chosen view and drawn as bones (segments
 # from each joint to its parent) and joints (points), one colour per finger.
 
-#' Hand poses for drawing
-#'
-#' Collects the 3D joint positions of one or more frames into a long data
-#' frame that [autoplot()][autoplot.hand_pose] draws.
-#'
-#' @param x An array from [forward_kinematics()] (`[frames, joints, 3]`), a
-#'   list of such arrays, a recording (numeric frames x DoF matrix), a
-#'   [grasps()] object or a [hand_skeleton()] (its rest pose).
-#' @param frame Which frame(s): `"last"` (default), `"first"`, or frame
-#'   indices (several give one panel per frame, e.g. for a time strip).
-#' @param skeleton The [hand_skeleton()] that posed `x` (gives the bones).
-#' @param ... Passed to [forward_kinematics()] when `x` holds angles
-#'   (`mapping`, `mode`, `deactivate`, `unit`).
-#' @return A `hand_pose` data frame: `id`, `frame`, `joint`, `parent`,
-#'   `finger`, `x`, `y`, `z` (mm), plus the recording's metadata (`grasp`,
-#'   `subject`, ...) for a `grasps` input.
-#' @export
-#' @examples
-#' flat <- matrix(0, 2, 16, dimnames = list(NULL, hust_dofs$name))
-#' flat[2, c("MCP2", "PIP2", "DIP2")] <- 60
-#' pose <- hand_pose(flat, frame = 1:2)
-#' head(pose)
-#' ggplot2::autoplot(pose, view = "radial")
-hand_pose <- function(x, frame = "last", skeleton = hand_skeleton(), ...) {
-  call <- rlang::caller_env()
+# The 3D joint positions of one or more frames as a long data frame
+# (class hand_pose: id, frame, joint, parent, finger, x, y, z in mm, plus a
+# grasps input's metadata) that autoplot.hand_pose() draws. `x`: an array from
+# forward_kinematics(), a list of them, a recording matrix, a grasps object or
+# a hand_skeleton (its rest pose); `...` goes to forward_kinematics().
+hand_pose <- function(x, frame = "last", skeleton = hand_skeleton(), ..., call = rlang::caller_env()) {
   check_skeleton(skeleton, call = call)
   meta <- NULL
   if (inherits(x, "hand_skeleton")) return(skeleton_rest_pose(x))
@@ -245,7 +226,8 @@ view_label <- function(view) {
 #' bottom); several recordings or frames give one panel each, labelled by
 #' grasp type when the pose carries one.
 #'
-#' @param object A [hand_pose()].
+#' @param object A hand pose: what `autoplot(<grasps>, type = "hand")`
+#'   ([autoplot.grasps()]) and `autoplot(<hand_skeleton>)` draw with this method.
 #' @param view `"back"`, `"palm"`, `"radial"` (thumb side), `"ulnar"`,
 #'   `"tip"` (from the fingertips), `"oblique"` (the default: from the palm,
 #'   turned towards the thumb side, like a photograph of a grasp; the same as
@@ -257,7 +239,8 @@ view_label <- function(view) {
 #' @export
 #' @method autoplot hand_pose
 #' @examples
-#' ggplot2::autoplot(hand_pose(hand_skeleton()), view = "palm")
+#' g <- simulate_grasps(subjects = 1, grasps = 1, objects = 1, trials = 1, seed = 1)
+#' ggplot2::autoplot(g, type = "hand", view = "palm")
 autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, ...) {
   p <- project_pose(as.data.frame(unclass(object), stringsAsFactors = FALSE), view, rlang::caller_env())
   p$panel <- pose_panels(p)

@@ -71,15 +71,15 @@ autoplot.handover_pca_error <- function(object, ...) {
 #' and +- one standard deviation over test recordings (the paper's Figures 2
 #' and 4).
 #'
-#' @param object A `handover_comparison` from [compare_marker_sets()].
+#' @param object A `handover_comparison` from `handover_error(by = "markers")`.
 #' @param ... Unused.
 #' @return A ggplot object.
 #' @export
 #' @method autoplot handover_comparison
 #' @examples
 #' g <- simulate_grasps(subjects = 3, grasps = 1:4, objects = 1, trials = 1)
-#' cmp <- compare_marker_sets(g[g$meta$subject != "S03"], g[g$meta$subject == "S03"],
-#'                            search = FALSE)
+#' cmp <- handover_error(g[g$meta$subject == "S03"], by = "markers",
+#'                       reference = g[g$meta$subject != "S03"], search = FALSE)
 #' ggplot2::autoplot(cmp)
 autoplot.handover_comparison <- function(object, ...) {
   df <- as.data.frame(unclass(object)[names(object)])
@@ -115,7 +115,7 @@ autoplot.handover_comparison <- function(object, ...) {
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:3, objects = 1, trials = 1)
 #' fit <- fit_handover(g[-1], markers = 3)
-#' ggplot2::autoplot(fit, g[1], list(`3 markers` = reconstruct(fit, g[1])))
+#' ggplot2::autoplot(fit, g[1], list(`3 markers` = predict(fit, g[1])))
 autoplot.handover_model <- function(object, truth, reconstructions, recording = 1, components = 1:4, ...) {
   model <- object
   call <- rlang::caller_env()
@@ -148,16 +148,17 @@ autoplot.handover_model <- function(object, truth, reconstructions, recording = 
 
 #' Plot a marker ranking
 #'
-#' Bars of each marker's share of the total influence ([rank_markers()]).
+#' Bars of each marker's share of the total influence (the `"ranking"` of a
+#' [select_markers()] result).
 #'
-#' @param object A `marker_ranking`.
+#' @param object A `marker_ranking`: `attr(select_markers(x), "ranking")`.
 #' @param ... Unused.
 #' @return A ggplot object.
 #' @export
 #' @method autoplot marker_ranking
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:3, objects = 1, trials = 1)
-#' ggplot2::autoplot(rank_markers(g))
+#' ggplot2::autoplot(attr(select_markers(g), "ranking"))
 autoplot.marker_ranking <- function(object, ...) {
   df <- as.data.frame(unclass(object)[names(object)])
   df$marker <- factor(df$marker, levels = rev(df$marker))

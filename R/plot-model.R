@@ -118,13 +118,15 @@ plot_model_fpca <- function(object, dofs, max_recordings) {
       curves_long(M, dofs, frame, paste0("rec", i), "sample")
     })
   }
-  parts[[length(parts) + 1L]] <- curves_long(object$basis$mean, dofs, frame, "mean", "mean")
+  B <- model_basis(object)
+  scores <- model_scores(object)
+  parts[[length(parts) + 1L]] <- curves_long(B$mean, dofs, frame, "mean", "mean")
   for (c in seq_len(object$settings$ncomp)) {
-    sdv <- apply(matrix(object$scores[, , c], object$n_used), 2, stats::sd)
+    sdv <- apply(matrix(scores[, , c], object$n_used), 2, stats::sd)
     names(sdv) <- object$dofs
-    P <- matrix(object$basis$components[, , c], L, dimnames = list(NULL, object$dofs))
+    P <- matrix(B$components[, , c], L, dimnames = list(NULL, object$dofs))
     for (sgn in c(1, -1)) {
-      M <- object$basis$mean + sgn * 2 * sweep(P, 2, sdv, "*")
+      M <- B$mean + sgn * 2 * sweep(P, 2, sdv, "*")
       parts[[length(parts) + 1L]] <- curves_long(M, dofs, frame, sprintf("FPC%d%s", c, if (sgn > 0) "+" else "-"),
                                                  sprintf("mean \u00b1 2 sd x FPC%d", c))
     }
@@ -160,7 +162,7 @@ plot_model_projection <- function(object, dofs, recording, newdata) {
                "bad_input", argument = "recording")
     }
     warped <- matrix(object$alignment$warped[i, , ], object$target_length, dimnames = list(NULL, object$dofs))
-    S <- matrix(object$scores[i, , ], length(object$dofs))
+    S <- matrix(model_scores(object)[i, , ], length(object$dofs))
     id <- ids[i]
   } else {
     check_grasps(newdata, arg = "newdata")
@@ -170,9 +172,10 @@ plot_model_projection <- function(object, dofs, recording, newdata) {
     id <- pr$ids[1]
   }
   L <- object$target_length
-  fitted <- object$basis$mean
+  B <- model_basis(object)
+  fitted <- B$mean
   for (j in seq_along(object$dofs)) {
-    fitted[, j] <- fitted[, j] + matrix(object$basis$components[, j, ], L) %*% S[j, ]
+    fitted[, j] <- fitted[, j] + matrix(B$components[, j, ], L) %*% S[j, ]
   }
   frame <- seq_len(L)
   df <- rbind(curves_long(warped, dofs, frame, "sample", "sample (warped)"),
@@ -195,7 +198,7 @@ plot_model_mixture <- function(object, dofs, grid = 50L) {
   pts <- list()
   dens <- list()
   for (d in dofs) {
-    S <- matrix(object$scores[, d, 1:2], object$n_used)
+    S <- matrix(object$fpca[[d]]$scores[, 1:2], object$n_used)
     pts[[d]] <- data.frame(dof = d, a1 = S[, 1], a2 = S[, 2])
     g <- object$gmm[[d]]
     if (isTRUE(g$point_mass)) next

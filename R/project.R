@@ -52,14 +52,33 @@ predict.grasp_models <- function(object, newdata, details = FALSE, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), predict.grasp_models, "predict.grasp_models", call = call)
   check_grasps(newdata, "newdata", call = call)
-  models <- fitted_models(object)
+  project_models(object, newdata, "object", details = details, call = call)
+}
+
+# Every fitted model of a set projects `newdata`: each model is validated
+# and the recordings are stacked once per DoF set (all models share one in
+# practice). `keep` reduces each projection as it is made (the FPCA
+# classifier keeps only the distances: all scores of every model would be
+# n x 33 x p x ncomp numbers); with `keep_going` a model that cannot project
+# gives its error in its place instead of stopping the rest. `time_weights`,
+# a function of the model, gives each its weights on the template time (the
+# weighted FPCA distance); NULL is eq. 4.4.
+project_models <- function(models, newdata, arg, details, call, keep = identity, keep_going = FALSE,
+                           time_weights = NULL) {
+  models <- fitted_models(models)
   if (length(models) == 0L) {
-    hm_abort("{.arg object} holds no fitted grasp models.", "bad_input", argument = "object", call = call)
+    hm_abort("{.arg {arg}} holds no fitted grasp models.", "bad_input", argument = arg, call = call)
   }
-  for (m in models) validate_projection_model(m, call)
-  check_projection_dofs(models[[1]], newdata, call)
-  st <- stack_recordings(newdata, models[[1]]$dofs)
-  lapply(models, function(m) project_stacked(m, st, details = details))
+  stacks <- list()
+  one <- function(m) {
+    validate_projection_model(m, call)  # before the native kernel
+    check_projection_dofs(m, newdata, call)
+    key <- paste(m$dofs, collapse = "\r")
+    if (is.null(stacks[[key]])) stacks[[key]] <<- stack_recordings(newdata, m$dofs)
+    keep(project_stacked(m, stacks[[key]], details = details,
+                         time_weights = if (!is.null(time_weights)) time_weights(m)))
+  }
+  lapply(models, function(m) if (keep_going) tryCatch(one(m), error = function(e) e) else one(m))
 }
 
 # A model whose basis was changed after fitting would reach the native kernel
@@ -74,12 +93,8 @@ validate_projection_model <- function(model, call) {
   if (!is.character(model$dofs) || p == 0L) bad("it names no DoFs")
   if (!is.numeric(L) || length(L) != 1L || !is.finite(L) || L < 2) bad("its target length is not a frame count")
   if (!is.numeric(k) || length(k) != 1L || !is.finite(k) || k < 1) bad("its number of FPCs is not a count")
-  if (!is.double(model$basis$mean) || !identical(dim(model$basis$mean), as.integer(c(L, p)))) {
-    bad("its basis mean is not {L} x {p}")
-  }
-  if (!is.double(model$basis$components) || length(model$basis$components) != L * p * k) {
-    bad("its basis components are not {L} x {p} x {k}")
-  }
+  fault <- fpca_shape_fault(model, k)
+  if (!is.null(fault)) bad(fault)
   if (length(model$fpca) != p ||
       !all(vapply(model$fpca, function(f) length(f$weights) == L, logical(1)))) {
     bad("its quadrature weights do not match {L} frames for {p} DoF{?s}")
@@ -156,16 +171,17 @@ project_stacked <- function(model, st, details = TRUE, time_weights = NULL) {
   # quadrature weights per DoF; a constant DoF's basis has zero components,
   # so the kernel gives it zero scores and its distance to the mean
   w <- vapply(model$fpca, function(f) as.double(f$weights), numeric(L))
-  res <- .Call(hm_project_batch, st$values, ix$rows, ix$nxt, ix$f, model$basis$mean,
-               model$basis$components, w, w * (time_weights %||% 1))
+  B <- model_basis(model)
+  res <- .Call(hm_project_batch, st$values, ix$rows, ix$nxt, ix$f, B$mean,
+               B$components, w, w * (time_weights %||% 1))
   scores <- array(res$scores, c(n, p, k), dimnames = list(st$ids, model$dofs, paste0("FPC", seq_len(k))))
   resid <- matrix(res$residual, n, p, dimnames = list(st$ids, model$dofs))
   if (details) {
     warped <- fitted <- matrix(0, n * L, p)
     for (j in seq_len(p)) {
       warped[, j] <- warp_dof(ix, st$values[, j])
-      fitted[, j] <- as.vector(matrix(model$basis$mean[, j], L, n) +
-                                 matrix(model$basis$components[, j, ], L) %*% t(matrix(scores[, j, ], n, k)))
+      fitted[, j] <- as.vector(matrix(B$mean[, j], L, n) +
+                                 matrix(B$components[, j, ], L) %*% t(matrix(scores[, j, ], n, k)))
     }
   }
   out <- list(scores = scores, residual = resid, distance = sqrt(rowSums(resid^2)),

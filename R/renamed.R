@@ -30,6 +30,13 @@
 #' | `overlong_rule()`, `find_overlong()` | the `overlong` argument of [fit_grasp_model()] |
 #' | `simulator_params(...)` | `simulate_grasps(params = list(...))` |
 #' | `calibration_report()`, `fit_frame_pca_model()` | internal (the calibration script and the thesis report) |
+#' | `fit_last_frame_pca(x, k = 5)` | [fit_grasp_classifier()]`(x, method = "last_frame", k = 5)` |
+#' | `fit_weighted_fpca(x, models = , time = )` | `fit_grasp_classifier(x, method = "weighted_fpca", models = , time = )` |
+#' | `fit_grasp_classifier(x, at = , prior = )` | unchanged: `method = "discriminant"` is the default |
+#' | `rank_markers(x, weighting = )` | `attr(`[select_markers()]`(x, n, weighting = ), "ranking")`; `select_markers(x, n)` takes the top `n` |
+#' | `compare_marker_sets(reference, test, sets = )` | [handover_error()]`(test, by = "markers", reference = reference, sets = )` |
+#' | `reconstruct(model, query)` | `predict(model, query)` ([predict.handover_model()]) |
+#' | `hand_pose(x, frame = )` + `autoplot()` | `autoplot(x, type = "hand", frame = )` ([autoplot.grasps()]); a skeleton's rest pose: `autoplot(hand_skeleton())` |
 #'
 #' @name handmotion-renamed
 #' @aliases table_5_1 table_5_2 table_5_3 table_5_3_claims table_5_6 table_5_7 table_5_8
@@ -37,6 +44,7 @@
 #'   animate_hand project as_grasp_confusion distance_table default_joint_map graspdb14_joint_map
 #'   hust_joint_map clamp_to_limits markers_from_angles hand_marker_set handpicked_markers
 #'   search_markers handover_pca_error align_recordings overlong_rule find_overlong simulator_params
-#'   calibration_report fit_frame_pca_model
+#'   calibration_report fit_frame_pca_model fit_last_frame_pca fit_weighted_fpca rank_markers
+#'   compare_marker_sets hand_pose reconstruct
 #' @keywords internal
 NULL

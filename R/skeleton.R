@@ -403,7 +403,7 @@ print.hand_skeleton <- function(x, ...) {
 #' and each set's markers filled, one panel per set.
 #'
 #' @param object A [hand_skeleton()].
-#' @param view Viewing direction, see [hand_pose()].
+#' @param view Viewing direction, see [autoplot.hand_pose()].
 #' @param labels Label the joints with their names? (Not with `markers`.)
 #' @param markers `NULL`, or marker sets to draw: a named list of marker-name
 #'   vectors (one panel each), e.g. `list("ranked (3)" = select_markers(ref,

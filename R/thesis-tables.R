@@ -33,7 +33,7 @@
 #'   the FPCA classifier) and `x`, `confusion` (a [grasp_confusion()] or
 #'   [classify()] result) and `held_out` (a [grasp_confusion()] of a held-out
 #'   evaluation, [evaluate_loso()]; its recall is added as `recall_held_out`),
-#'   `fit` (a [fit_last_frame_pca()] result) and `pcs` (which cumulative
+#'   `fit` (a `fit_grasp_classifier(method = "last_frame")` result) and `pcs` (which cumulative
 #'   proportions to show; default the first five, as the thesis classifies
 #'   with five PCs).
 #' @return A data frame.
@@ -46,7 +46,7 @@
 #' cl <- classify(ms, g)
 #' thesis_table("5.3", classification = cl)
 #' thesis_table("5.6", confusion = grasp_confusion(cl))
-#' lf <- fit_last_frame_pca(g, k = 2)
+#' lf <- fit_grasp_classifier(g, method = "last_frame", k = 2)
 #' thesis_table("5.7", fit = lf, pcs = 1:3)
 thesis_table <- function(id = c("5.1", "5.2", "5.3", "5.3 claims", "5.6", "5.7", "5.8"), ...) {
   call <- rlang::caller_env()

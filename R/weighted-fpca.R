@@ -10,55 +10,12 @@
 # both parts: the residual (its typical size) and the scores (the type's
 # mixture), i.e. minus twice the recording's log-likelihood under the model.
 
-#' FPCA distance with per-type DoF weights and time weights
-#'
-#' The thesis' FPCA classifier ([classify()] with [fit_grasp_models()]) with
-#' the two changes the thesis proposed (its chapter 6), learned from the
-#' training recordings by a documented rule:
-#'
-#' * **time weights**: the residual norm of each DoF is taken with weights
-#'   on the template time: `"uniform"` (default) is the thesis' norm,
-#'   `time = "end"` rises linearly from 0 at the start to 2 at the end (mean
-#'   1: the final posture counts most, the start not at all). On the default
-#'   data "end" does not help (see `vignette("recognition")`);
-#' * **per-type DoF weights**: for model *c*, each DoF's (time-weighted)
-#'   residual norm `r_j` is scaled by its typical size on the type's own
-#'   training recordings, `s2[c, j]` = mean of `r_j^2` over them, and the
-#'   DoF's FPC scores `a_j` are scored by the type's own mixture `f_cj`
-#'   (the one generation draws from). The distance is
-#'   `sum_j (r_j^2 / s2[c, j] + log s2[c, j] - 2 log f_cj(a_j))`: minus twice
-#'   the log-likelihood of the recording under the model (residual norms
-#'   half-normal with the type's scales). A DoF that a type reproduces
-#'   tightly weighs heavily for that type, one that varies a lot weighs
-#'   little, and a recording whose projection needs scores the type never
-#'   shows (a finger flexed further than that type ever does) is far even
-#'   when its residual is small. Each DoF's log density is floored at -50
-#'   (about ten standard deviations), so one degenerate mixture cannot veto
-#'   a type alone.
-#'
-#' @param x A labelled [grasps()] object (the training recordings).
-#' @param models A [fit_grasp_models()] fit on `x`, or `NULL` to fit one with
-#'   the arguments in `...`, by default with one Gaussian per DoF for the
-#'   scores (`k = 1`): on the default data (subjects 1-20 fitted, 21-30
-#'   classified) it recognises 64.2% against 62.5% with the thesis' two
-#'   components, at half the fitting cost (no EM).
-#' @param time `"uniform"` (default) or `"end"` time weights.
-#' @param ... Passed to [fit_grasp_models()] when `models` is `NULL`.
-#' @return An object of class `weighted_fpca`: `models`, `time`, `scale`
-#'   (types x DoFs matrix of `s2`) and `n` (training recordings per type).
-#'   [classify()] ranks its distances; `evaluate_loso(x, method =
-#'   "weighted_fpca")` evaluates it held out.
-#' @seealso [classify()], [fit_grasp_classifier()]
-#' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 4, grasps = 1:3, objects = 2, trials = 2, seed = 1)
-#' w <- fit_weighted_fpca(g, seed = 1)
-#' w
-#' classify(w, g)
-fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ...) {
-  call <- rlang::caller_env()
+# fit_grasp_classifier(method = "weighted_fpca") (documented there): the
+# per-type scales s2 of every DoF's residual norm on the type's own training
+# recordings, with `...` passed to fit_grasp_models() when `models` is NULL.
+fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ..., call = rlang::caller_env()) {
   check_grasps(x, call = call)
-  time <- check_choice(time, arg = "time", call = call)
+  time <- check_choice(time, c("uniform", "end"), arg = "time", call = call)
   check_training_labels(x, call = call)
   if (is.null(models)) {
     args <- list(...)
@@ -101,18 +58,16 @@ distance_time_weights <- function(L, time) {
 
 # The weighted distances, recordings x models.
 weighted_fpca_distances <- function(object, x, call = rlang::caller_env()) {
-  models <- object$models
-  check_projection_dofs(models[[1]], x, call)
-  st <- stack_recordings(x, models[[1]]$dofs)
   types <- rownames(object$scale)
-  d <- vapply(types, function(ty) {
-    m <- models[[ty]]
-    r <- project_stacked(m, st, details = FALSE,
-                         time_weights = distance_time_weights(m$target_length, object$time))
-    s2 <- object$scale[ty, ]
-    drop(r$residual^2 %*% (1 / s2)) + sum(log(s2)) - 2 * score_log_density(m, r$scores)
-  }, numeric(length(x$recordings)))
-  matrix(d, length(x$recordings), length(types), dimnames = list(x$meta$id, types))
+  d <- project_models(object$models, x, "models", details = FALSE, call = call,
+                      time_weights = function(m) distance_time_weights(m$target_length, object$time),
+                      keep = function(r) {
+                        s2 <- object$scale[r$grasp, ]
+                        drop(r$residual^2 %*% (1 / s2)) + sum(log(s2)) -
+                          2 * score_log_density(object$models[[r$grasp]], r$scores)
+                      })
+  matrix(unlist(d[types], use.names = FALSE), length(x$recordings), length(types),
+         dimnames = list(x$meta$id, types))
 }
 
 # Sum over DoFs of the log density of each recording's FPC scores under the

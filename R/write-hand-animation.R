@@ -103,7 +103,7 @@ write_hand_animation <- function(x, file, recording = 1L, view = "oblique", widt
   }
   n_max <- max(vapply(hands, function(h) nrow(h$angles), integer(1)))
   if (n_max < 2L) {
-    hm_abort("A video needs recordings of two or more frames; draw a single frame with {.code autoplot(hand_pose(x))}.",
+    hm_abort("A video needs recordings of two or more frames; draw a single frame with {.code autoplot(x, type = \"hand\")}.",
              "bad_recording", argument = "x", call = call)
   }
   timing <- video_timing(n_max, rates, max_frames, format)

@@ -36,15 +36,15 @@ row <- function(label, t) {
               t[["cpu"]], n_q / t[["cpu"]]))
 }
 cat("load average:", readLines("/proc/loadavg", warn = FALSE), "\n")
-t6 <- time_it(function() reconstruct(fit6, mk6))
+t6 <- time_it(function() predict(fit6, mk6))
 row("reconstruct, 6 markers, k = 256 (default)", t6)
 bench_record("reconstruct, 6 markers, frames per CPU second", n_q / t6[["cpu"]], "1/s")
-row("reconstruct, 3 markers, k = 256", time_it(function() reconstruct(fit3, mk3)))
+row("reconstruct, 3 markers, k = 256", time_it(function() predict(fit3, mk3)))
 fit6_128 <- fit_handover(ref, markers = fit6$markers, k = 128)
-row("reconstruct, 6 markers, k = 128", time_it(function() reconstruct(fit6_128, mk6)))
+row("reconstruct, 6 markers, k = 128", time_it(function() predict(fit6_128, mk6)))
 fit6_1024 <- fit_handover(ref, markers = fit6$markers, k = 1024)
-row("reconstruct, 6 markers, k = 1024", time_it(function() reconstruct(fit6_1024, mk6), reps = 1))
-row("reconstruct from a grasps (incl. FK)", time_it(function() reconstruct(fit6, test), reps = 1))
+row("reconstruct, 6 markers, k = 1024", time_it(function() predict(fit6_1024, mk6), reps = 1))
+row("reconstruct from a grasps (incl. FK)", time_it(function() predict(fit6, test), reps = 1))
 
 # the R transcription of the same regression (tests/testthat/helper-handover-reference.R), for the ratio
 ref_env <- new.env(parent = asNamespace("handmotion"))
@@ -58,4 +58,4 @@ cat(sprintf("LWR core, C engine vs R reference engine: %.2f s vs %.2f s CPU (spe
 bench_record("LWR core, R reference / C (CPU)", t_r[["cpu"]] / t_c[["cpu"]], "x")
 cat("load average:", readLines("/proc/loadavg", warn = FALSE), "\n")
 cat(sprintf("accuracy on the unseen subjects: 6 markers %.2f deg, 3 markers %.2f deg\n",
-            handover_error(test, reconstruct(fit6, test)), handover_error(test, reconstruct(fit3, test))))
+            handover_error(test, predict(fit6, test)), handover_error(test, predict(fit3, test))))

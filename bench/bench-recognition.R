@@ -60,7 +60,7 @@ bench_record("recognition update per frame", per_frame, "ms")
 # the weighted FPCA distance against the thesis' distance (same models)
 ms <- fit_grasp_models(g, seed = 1)
 plain <- timed(classify(ms, g))
-w <- timed(fit_weighted_fpca(g, models = ms))
+w <- timed(fit_grasp_classifier(g, method = "weighted_fpca", models = ms))
 weighted <- timed(classify(w$value, g))
 cat(sprintf("classify: thesis FPCA %.2f s, weighted FPCA %.2f s (+ %.2f s to learn the weights); ratio %.2fx\n",
             plain$seconds, weighted$seconds, w$seconds, weighted$seconds / plain$seconds))

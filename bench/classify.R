@@ -20,7 +20,7 @@ timed <- function(expr) {
 
 fit <- timed(fit_grasp_models(g, seed = 1))
 cl_fpca <- timed(classify(fit$value, g))
-lf_fit <- timed(fit_last_frame_pca(g, k = 5))
+lf_fit <- timed(fit_grasp_classifier(g, method = "last_frame", k = 5))
 cl_lf <- timed(classify(lf_fit$value, g))
 acc <- function(cl) {
   p <- cl$predictions
@@ -29,7 +29,7 @@ acc <- function(cl) {
 cat(sprintf("fit_grasp_models (33 types):        %7.2f s\n", fit$seconds))
 cat(sprintf("classify, FPCA (%d x 33 projections): %7.2f s  (%.2f ms per recording x model)\n",
             length(g), cl_fpca$seconds, 1000 * cl_fpca$seconds / (length(g) * 33)))
-cat(sprintf("fit_last_frame_pca:                 %7.3f s\n", lf_fit$seconds))
+cat(sprintf("fit_grasp_classifier(last_frame): %7.3f s\n", lf_fit$seconds))
 cat(sprintf("classify, last frame:               %7.3f s\n", cl_lf$seconds))
 cat(sprintf("ratio FPCA / last-frame (fit + classify): %.0f\n",
             (fit$seconds + cl_fpca$seconds) / (lf_fit$seconds + cl_lf$seconds)))

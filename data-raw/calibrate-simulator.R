@@ -107,7 +107,7 @@ last_frame_stage <- function(p, s, rounds, tune_factors = TRUE) {
   for (it in seq_len(rounds)) {
     p$posture_spread[] <- s
     g <- simulate_grasps(params = p)
-    lf <- fit_last_frame_pca(g, k = 5)
+    lf <- fit_grasp_classifier(g, method = "last_frame", k = 5)
     pc5 <- cumulative_variance(lf)$pc5
     acc <- ACC(classify(lf, g))
     hx <- c(hx, s); hy <- c(hy, acc)

@@ -48,7 +48,7 @@ build_curves <- function(model, alpha) {
   n <- dim(alpha)[1]
   p <- dim(alpha)[2]
   L <- model$target_length
-  B <- model$basis
+  B <- model_basis(model)
   out <- matrix(0, L * n, p, dimnames = list(NULL, model$dofs))
   for (j in seq_len(p)) {
     P <- matrix(B$components[, j, ], L)              # L x k

@@ -19,8 +19,8 @@ bad_input_fixtures <- function(dir) {
     ms <- suppressWarnings(fit_grasp_models(g, seed = 1))
     clf <- fit_grasp_classifier(g)
     ho <- fit_handover(g, markers = 3, k = 40)
-    q <- markers_from_angles(g[1], markers = ho$markers)[[1]]
-    mk <- do.call(rbind, markers_from_angles(g[1:2]))
+    q <- forward_kinematics(g[1], markers = ho$markers)[[1]]
+    mk <- do.call(rbind, forward_kinematics(g[1:2], markers = TRUE))
     ang <- matrix(10, 3, 16, dimnames = list(NULL, hust_dofs$name))
     gnan <- g
     gnan$recordings[[2]][3, 4] <- NaN
@@ -33,7 +33,7 @@ bad_input_fixtures <- function(dir) {
     unlabelled <- g
     unlabelled$meta$grasp[] <- NA
     gd <- graspdb14_fixture_grasps()
-    lf <- fit_last_frame_pca(g, k = 2)
+    lf <- fit_grasp_classifier(g, method = "last_frame", k = 2)
   })
   files <- file.path(dir, c("gdb", "hust", "empty", "allbad", "binman", "folders"))
   for (f in files) dir.create(f)
@@ -131,10 +131,10 @@ bad_input_cases <- function() {
     list("fit_grasp_classifier: misspelt prior", quote(fit_grasp_classifier(g, prior = "uniform")), "bad_input"),
     list("fit_grasp_classifier: not grasps", quote(fit_grasp_classifier("x")), "bad_input"),
     list("fit_grasp_recognizer: no fractions", quote(fit_grasp_recognizer(g, at = numeric(0))), "bad_input"),
-    list("fit_weighted_fpca: misspelt time", quote(fit_weighted_fpca(g, time = "middle")), "bad_input"),
-    list("fit_weighted_fpca: not grasps", quote(fit_weighted_fpca("x")), "bad_input"),
-    list("fit_last_frame_pca: k = 0", quote(fit_last_frame_pca(g, k = 0)), "bad_input"),
-    list("fit_last_frame_pca: unknown type", quote(fit_last_frame_pca(g, grasps = "No Such Grasp")), "unknown_grasp"),
+    list("fit_grasp_classifier, weighted_fpca: misspelt time", quote(fit_grasp_classifier(g, method = "weighted_fpca", time = "middle")), "bad_input"),
+    list("fit_grasp_classifier, weighted_fpca: not grasps", quote(fit_grasp_classifier("x", method = "weighted_fpca")), "bad_input"),
+    list("fit_grasp_classifier, last_frame: k = 0", quote(fit_grasp_classifier(g, method = "last_frame", k = 0)), "bad_input"),
+    list("fit_grasp_classifier, last_frame: unknown type", quote(fit_grasp_classifier(g, method = "last_frame", grasps = "No Such Grasp")), "unknown_grasp"),
     list("fit_frame_pca_model: d = 0", quote(fit_frame_pca_model(g, d = 0)), "bad_input"),
     list("evaluate_loso: seed as text", quote(evaluate_loso(g, seed = "a")), "bad_input"),
     list("evaluate_loso: NA in_sample", quote(evaluate_loso(g, in_sample = NA)), "bad_input"),
@@ -142,8 +142,8 @@ bad_input_cases <- function() {
     list("evaluate_loso: unknown subject", quote(evaluate_loso(g, subjects = "S99")), "bad_input"),
     list("evaluate_generation: zero reps", quote(evaluate_generation(ms, g, g, reps = 0)), "bad_input"),
     list("calibration_report: one fold", quote(calibration_report(g, models = ms, folds = 1)), "bad_input"),
-    list("search_markers: negative max_frames", quote(search_markers(g, n = 2, max_frames = -5)), "bad_input"),
-    list("search_markers: unknown holdout column", quote(search_markers(g, n = 2, holdout = "colour")), "bad_input"),
+    list("select_markers, search: negative max_frames", quote(select_markers(g, n = 2, method = "search", max_frames = -5)), "bad_input"),
+    list("select_markers, search: unknown holdout column", quote(select_markers(g, n = 2, method = "search", holdout = "colour")), "bad_input"),
     list("fit_handover: zero ridge", quote(fit_handover(g, markers = 3, ridge = 0)), "bad_input"),
     list("fit_handover: unknown marker", quote(fit_handover(g, markers = c("index_tip", "foo"))), "bad_markers"),
     list("fit_handover: more markers than there are", quote(fit_handover(g, markers = 14)), "bad_markers"),
@@ -173,10 +173,10 @@ bad_input_cases <- function() {
     list("predict: a number for newdata", quote(predict(clf, 42)), "bad_input"),
     list("predict: an unnamed matrix for a last-frame model", quote(predict(lf, matrix(1, 2, 16))), "bad_input"),
     list("predict: unknown argument", quote(predict(ms, g, foo = 1)), "bad_input"),
-    list("predict: a model changed after fitting", quote(predict({x <- m; x$basis$mean <- x$basis$mean[1:3, ]; x}, g)), "bad_model"),
-    list("predict: a model set with a changed model", quote(predict({x <- ms; x[[2]]$basis$components <- x[[2]]$basis$components[, , 1]; x}, g)), "bad_model"),
+    list("predict: a model changed after fitting", quote(predict({x <- m; x$fpca[[1]]$mean <- x$fpca[[1]]$mean[1:3]; x}, g)), "bad_model"),
+    list("predict: a model set with a changed model", quote(predict({x <- ms; x[[2]]$fpca[[1]]$components <- x[[2]]$fpca[[1]]$components[, 1]; x}, g)), "bad_model"),
     list("as_grasp_confusion: text", quote(as_grasp_confusion("x")), "bad_input"),
-    list("distance_table: text", quote(distance_table("x")), "bad_input"),
+    list("thesis_table 5.3: text", quote(thesis_table("5.3", classification = "x")), "bad_input"),
     list("predict: text for recordings", quote(predict(m, "x")), "bad_input"),
     # --- kinematics
     list("forward_kinematics: NaN angles", quote(forward_kinematics(ang * NaN)), "bad_recording"),
@@ -187,27 +187,27 @@ bad_input_cases <- function() {
     list("forward_kinematics: repeated DoF", quote(forward_kinematics(ang[, c(1, 1:15)])), "bad_input"),
     list("forward_kinematics: two units", quote(forward_kinematics(ang, unit = c("deg", "rad"))), "bad_input"),
     list("forward_kinematics: misspelt mode", quote(forward_kinematics(ang, mode = "ful")), "bad_input"),
-    list("hand_pose: frame out of range", quote(hand_pose(g, frame = 1e6)), "bad_input"),
-    list("markers_from_angles: three unnamed columns", quote(markers_from_angles(matrix(1, 2, 3))), "bad_input"),
+    list("autoplot hand: frame out of range", quote(ggplot2::autoplot(g, type = "hand", frame = 1e6)), "bad_input"),
+    list("forward_kinematics markers: three unnamed columns", quote(forward_kinematics(matrix(1, 2, 3), markers = TRUE)), "bad_input"),
     list("markers_from_angles: NA forearm", quote(markers_from_angles(g, forearm = NA)), "bad_input"),
     list("forward_kinematics: unknown joint to deactivate", quote(forward_kinematics(g, deactivate = "NoSuchJoint")), "bad_input"),
     list("clamp_to_limits: text", quote(clamp_to_limits(matrix("a", 2, 16, dimnames = list(NULL, hust_dofs$name)))), "bad_input"),
     # --- hand-over
-    list("rank_markers: text", quote(rank_markers("a")), "bad_input"),
-    list("rank_markers: matrices with other columns", quote(rank_markers(list(mk, mk[, 1:6]))), "bad_markers"),
-    list("rank_markers: NaN coordinate", quote(rank_markers({x <- mk; x[3, 4] <- NaN; x})), "bad_markers"),
-    list("rank_markers: fractional n_components", quote(rank_markers(mk, weighting = "equal", n_components = 2.5)), "bad_input"),
-    list("rank_markers: unknown marker column", quote(rank_markers({x <- mk; colnames(x)[1:3] <- c("foo.x", "foo.y", "foo.z"); x})), "bad_markers"),
-    list("rank_markers: broken triple", quote(rank_markers({x <- mk; colnames(x)[2] <- "foo"; x})), "bad_markers"),
-    list("rank_markers: one frame", quote(rank_markers(mk[1, , drop = FALSE])), "reference_too_small"),
-    list("select_markers: n = 0", quote(select_markers(rank_markers(mk), 0)), "bad_markers"),
-    list("select_markers: fractional n", quote(select_markers(rank_markers(mk), 2.5)), "bad_markers"),
-    list("reconstruct: not a model", quote(reconstruct("x", q)), "bad_input"),
-    list("reconstruct: unnamed columns", quote(reconstruct(ho, unname(q))), "bad_markers"),
-    list("reconstruct: missing marker", quote(reconstruct(ho, q[, 1:6])), "bad_markers"),
-    list("reconstruct: infinite coordinate", quote(reconstruct(ho, {x <- q; x[2, 2] <- Inf; x})), "bad_markers"),
-    list("reconstruct: frame without markers", quote(reconstruct(ho, {x <- q; x[2, ] <- NA; x})), "occluded"),
-    list("reconstruct: empty list", quote(reconstruct(ho, list())), "bad_input"),
+    list("select_markers, ranked: text", quote(select_markers("a", 3)), "bad_input"),
+    list("select_markers, ranked: matrices with other columns", quote(select_markers(list(mk, mk[, 1:6]), 3)), "bad_markers"),
+    list("select_markers, ranked: NaN coordinate", quote(select_markers({x <- mk; x[3, 4] <- NaN; x}, 3)), "bad_markers"),
+    list("select_markers, ranked: fractional n_components", quote(select_markers(mk, 3, weighting = "equal", n_components = 2.5)), "bad_input"),
+    list("select_markers, ranked: unknown marker column", quote(select_markers({x <- mk; colnames(x)[1:3] <- c("foo.x", "foo.y", "foo.z"); x}, 3)), "bad_markers"),
+    list("select_markers, ranked: broken triple", quote(select_markers({x <- mk; colnames(x)[2] <- "foo"; x}, 3)), "bad_markers"),
+    list("select_markers, ranked: one frame", quote(select_markers(mk[1, , drop = FALSE], 3)), "reference_too_small"),
+    list("select_markers: n = 0", quote(select_markers(mk, 0)), "bad_markers"),
+    list("select_markers: fractional n", quote(select_markers(mk, 2.5)), "bad_markers"),
+    list("predict handover: extra argument", quote(predict(ho, q, k = 3)), "bad_input"),
+    list("predict handover: unnamed columns", quote(predict(ho, unname(q))), "bad_markers"),
+    list("predict handover: missing marker", quote(predict(ho, q[, 1:6])), "bad_markers"),
+    list("predict handover: infinite coordinate", quote(predict(ho, {x <- q; x[2, 2] <- Inf; x})), "bad_markers"),
+    list("predict handover: frame without markers", quote(predict(ho, {x <- q; x[2, ] <- NA; x})), "occluded"),
+    list("predict handover: empty list", quote(predict(ho, list())), "bad_input"),
     list("handover_error: text", quote(handover_error("a", g)), "bad_input"),
     list("handover_error: other recordings", quote(handover_error(g, g[1])), "bad_input"),
     list("handover_error: misspelt by", quote(handover_error(g, g, by = "dof2")), "bad_input"),
@@ -231,10 +231,15 @@ bad_input_cases <- function() {
     list("align_recordings: text recording", quote(align_recordings(list(a = matrix(1:6, 3), b = "x"))), "bad_input"),
     list("find_overlong: infinite count", quote(find_overlong(c(10, Inf, 12))), "bad_input"),
     list("find_overlong: text", quote(find_overlong(c("10", "12"))), "bad_input"),
-    list("overlong_rule: negative multiple", quote(overlong_rule(iqr_mult = -1)), "bad_input"),
+    list("fit_grasp_model: negative over-long multiple", quote(fit_grasp_model(g, grasp = 1, overlong = c(iqr_mult = -1, median_mult = 1.5))), "bad_input"),
     list("segment_by_switch: negative min_frames", quote(segment_by_switch(g, min_frames = -1)), "bad_input"),
     list("grasp_confusion: lengths differ", quote(grasp_confusion(c("Tripod", "Ring"), "Tripod")), "bad_input"),
-    list("graspdb14_to_hust: a number", quote(graspdb14_to_hust(42)), "bad_input")
+    list("graspdb14_to_hust: a number", quote(graspdb14_to_hust(42)), "bad_input"),
+    list("fit_grasp_classifier: misspelt method", quote(fit_grasp_classifier(g, method = "lda")), "bad_input"),
+    list("fit_grasp_classifier: argument of another method", quote(fit_grasp_classifier(g, k = 2)), "bad_input"),
+    list("handover_error, markers: no reference", quote(handover_error(g, by = "markers")), "bad_input"),
+    list("handover_error, markers: unknown argument", quote(handover_error(g, by = "markers", reference = g, kk = 1)), "bad_input"),
+    list("handover_error: fitting argument without markers", quote(handover_error(g, g, k = 8)), "bad_input")
   )
   data.frame(label = vapply(rows, `[[`, "", 1), expr = I(lapply(rows, `[[`, 2)),
              class = vapply(rows, `[[`, "", 3), stringsAsFactors = FALSE)

@@ -124,9 +124,9 @@ test_that("pictures, pages and videos refuse NaN frames, a skeleton without a Do
   pos[3, 2, 1] <- NA
   expect_error(write_hand_animation(pos, page), "first frame 3", class = "handmotion_error_bad_recording")
   expect_false(file.exists(page))
-  expect_error(autoplot(hand_pose(nan, frame = 6)), id, class = "handmotion_error_bad_recording")
-  expect_error(hand_pose(g, skeleton = short), class = "handmotion_error_bad_skeleton")
-  expect_error(hand_pose(empty), class = "handmotion_error_bad_recording")
+  expect_error(autoplot(nan, type = "hand", frame = 6), id, class = "handmotion_error_bad_recording")
+  expect_error(autoplot(g, type = "hand", skeleton = short), class = "handmotion_error_bad_skeleton")
+  expect_error(autoplot(empty, type = "hand"), class = "handmotion_error_bad_recording")
   expect_error(autoplot(g, type = "poses", compare = list(generated = empty)), "x[[2]]", fixed = TRUE)
   expect_error(autoplot(nan, type = "poses"), class = "handmotion_error_bad_recording")
   skip_if_not_installed("gganimate")

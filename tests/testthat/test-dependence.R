@@ -83,7 +83,7 @@ test_that("the copula model's defaults are the measured ones, each overridable",
   expect_equal(list(st$ncomp, st$warp_ncomp, st$k, st$warping, st$fpc_scores, st$mixture_guard),
                list(2L, 1L, 2L, "dtw", "trapezoid", "none"))
   m2 <- fit_grasp_model(g, seed = 1, dependence = "copula", ncomp = 2, fpc_scores = "trapezoid")
-  expect_equal(c(m2$settings$ncomp, dim(m2$scores)[3]), c(2L, 2L))
+  expect_equal(c(m2$settings$ncomp, dim(model_scores(m2))[3]), c(2L, 2L))
   expect_identical(m2$fpca[[1]]$score_rule, "trapezoid")
   expect_error(fit_grasp_model(g, dependence = "copula", fpc_scores = "trapez"),
                class = "handmotion_error_bad_input")
@@ -95,7 +95,7 @@ test_that("least-squares scores reconstruct the final posture the trapezoidal on
   end_sd_ratio <- function(m) {
     L <- m$target_length
     rec <- vapply(seq_along(m$dofs), function(j) {
-      m$scores[, j, ] %*% m$basis$components[L, j, ] + m$basis$mean[L, j]
+      model_scores(m)[, j, ] %*% model_basis(m)$components[L, j, ] + model_basis(m)$mean[L, j]
     }, numeric(m$n_used))
     stats::median(apply(rec, 2, stats::sd) / apply(m$alignment$warped[, L, ], 2, stats::sd))
   }

@@ -5,8 +5,8 @@ planted_model <- function(n = 80, p = 3, seed = 31, ...) {
 # Scores that rebuild curves exactly: least squares on the model's components
 # (independent of fpca_project's quadrature).
 recover_alpha <- function(model, rec, j) {
-  P <- matrix(model$basis$components[, j, ], model$target_length)
-  drop(qr.solve(P, rec[, j] - model$basis$mean[, j]))
+  P <- matrix(model_basis(model)$components[, j, ], model$target_length)
+  drop(qr.solve(P, rec[, j] - model_basis(model)$mean[, j]))
 }
 
 # CDF of the marginal of a Gaussian mixture along direction `a`.
@@ -199,28 +199,28 @@ test_that("a model whose sampler was altered gets a classed error, not a crash",
   bad$sampler$warp$mu <- "a"
   expect_error(generate(bad, n = 3, seed = 1), class = "handmotion_error_bad_model")
   bad <- m
-  bad$basis$components <- bad$basis$components[, , 1]
+  bad$fpca[[1]]$components <- bad$fpca[[1]]$components[, 1]
   expect_error(generate(bad, n = 3, seed = 1), class = "handmotion_error_bad_input")
   # the kernel checks on its own too (a sampler that bypasses the R check)
   smp <- m$sampler
   smp$dofs$k <- smp$dofs$k + 1L
-  expect_error(.Call(hm_generate_batch, 3L, smp$dofs, smp$warp, m$basis$mean, m$basis$components,
+  expect_error(.Call(hm_generate_batch, 3L, smp$dofs, smp$warp, model_basis(m)$mean, model_basis(m)$components,
                      as.numeric(m$warp$mean), matrix(as.numeric(m$warp$components), m$target_length),
                      TRUE, m$dofs, NULL, NULL, rep(NA_real_, length(m$dofs)), rep(NA_real_, length(m$dofs)), 0.05),
                "sampler cumw")
   # drawn scores and limits of the wrong size, or empty limits, are refused
   p <- length(m$dofs)
   nolim <- rep(NA_real_, p)
-  expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, m$basis$mean,
-                     m$basis$components, as.numeric(m$warp$mean),
+  expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, model_basis(m)$mean,
+                     model_basis(m)$components, as.numeric(m$warp$mean),
                      matrix(as.numeric(m$warp$components), m$target_length), TRUE, m$dofs,
                      array(0, c(2, p, 2)), matrix(0, 3, 1), nolim, nolim, 0.05), "drawn FPC scores")
-  expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, m$basis$mean,
-                     m$basis$components, as.numeric(m$warp$mean),
+  expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, model_basis(m)$mean,
+                     model_basis(m)$components, as.numeric(m$warp$mean),
                      matrix(as.numeric(m$warp$components), m$target_length), TRUE, m$dofs,
                      NULL, NULL, rep(1, p), rep(1, p), 0.05), "limits of DoF 1 are empty")
-  expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, m$basis$mean,
-                     m$basis$components, as.numeric(m$warp$mean),
+  expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, model_basis(m)$mean,
+                     model_basis(m)$components, as.numeric(m$warp$mean),
                      matrix(as.numeric(m$warp$components), m$target_length), TRUE, m$dofs,
                      NULL, NULL, seq_len(p + 1), nolim, 0.05), "lower limits")
   # a warp far outside the data asks for more frames than one draw may have

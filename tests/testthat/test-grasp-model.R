@@ -15,15 +15,15 @@ test_that("FPCs, mean, scores and variance explained recover the planted truth",
   s <- m$argvals
   phi <- planted_phi(s)
   for (j in 1:3) {
-    P <- m$basis$components[, j, ]
+    P <- model_basis(m)$components[, j, ]
     # phi1 has a positive integral: the sign convention keeps it positive
     expect_gt(cor(P[, 1], phi[, 1]), 0.99)
     expect_gt(abs(cor(P[, 2], phi[, 2])), 0.99)
     truth_mean <- planted_mean(s, j) + mean(tr$a1[, j]) * phi[, 1] + mean(tr$a2[, j]) * phi[, 2]
-    expect_lt(max(abs(m$basis$mean[, j] - truth_mean)), 0.3)
-    expect_gt(sum(m$var_explained[j, ]), 0.99)
-    expect_gt(cor(m$scores[, j, 1], tr$a1[, j]), 0.995)
-    expect_gt(abs(cor(m$scores[, j, 2], tr$a2[, j])), 0.95)
+    expect_lt(max(abs(model_basis(m)$mean[, j] - truth_mean)), 0.3)
+    expect_gt(sum(model_var_explained(m)[j, ]), 0.99)
+    expect_gt(cor(model_scores(m)[, j, 1], tr$a1[, j]), 0.995)
+    expect_gt(abs(cor(model_scores(m)[, j, 2], tr$a2[, j])), 0.95)
   }
 })
 
@@ -77,7 +77,7 @@ test_that("the DTW path keeps the books: used + removed = input", {
   m <- fit_grasp_model(g, seed = 1)
   expect_true(m$warping$method %in% c("dtw", "linear"))
   expect_equal(m$n_used + nrow(m$removed), m$n_input)
-  expect_equal(dim(m$scores), c(m$n_used, 3L, 2L))
+  expect_equal(dim(model_scores(m)), c(m$n_used, 3L, 2L))
   expect_equal(dim(m$alignment$warped), c(m$n_used, m$target_length, 3L))
   expect_identical(rownames(m$alignment$warps), m$ids)
   if (m$warping$method == "linear") expect_true("warping" %in% m$fallbacks$step)
@@ -89,9 +89,9 @@ test_that("a constant DoF is a recorded fallback, not a crash", {
   g2 <- grasps(recs, meta = g$meta, dofs = g$dofs)
   expect_warning(m <- fit_grasp_model(g2, warping = "linear", seed = 1), "d2", class = "handmotion_warning_constant_dofs")
   expect_true(any(m$fallbacks$step == "fpca" & m$fallbacks$dof == "d2"))
-  expect_true(all(is.na(m$var_explained["d2", ])))
+  expect_true(all(is.na(model_var_explained(m)["d2", ])))
   expect_true(isTRUE(m$gmm$d2$point_mass))
-  expect_equal(unname(m$basis$mean[, "d2"]), rep(10, m$target_length))
+  expect_equal(unname(model_basis(m)$mean[, "d2"]), rep(10, m$target_length))
   s <- summary(m)
   expect_identical(s$mixture[s$dof == "d2"], "point mass")
   new <- generate(m, n = 3, seed = 1)
@@ -136,7 +136,7 @@ test_that("engines can be chosen per step", {
   g <- planted_grasps(n = 20, p = 2, seed = 19)
   m1 <- fit_grasp_model(g, warping = "linear", engine = list(fpca = "reference"), seed = 1)
   m2 <- fit_grasp_model(g, warping = "linear", seed = 1)
-  expect_equal(m1$basis, m2$basis, tolerance = 1e-6)
+  expect_equal(model_basis(m1), model_basis(m2), tolerance = 1e-6)
 })
 
 test_that("the sign convention makes refits on subsets comparable", {
@@ -146,8 +146,8 @@ test_that("the sign convention makes refits on subsets comparable", {
   # the two fits may have different target lengths: compare on normalised time
   w <- full$fpca[[1]]$weights
   for (j in 1:3) for (c in 1:2) {
-    on_full <- stats::approx(sub$argvals, sub$basis$components[, j, c], xout = full$argvals)$y
-    inner <- sum(full$basis$components[, j, c] * on_full * w)
+    on_full <- stats::approx(sub$argvals, model_basis(sub)$components[, j, c], xout = full$argvals)$y
+    inner <- sum(model_basis(full)$components[, j, c] * on_full * w)
     expect_gt(inner, 0.9)
   }
 })
@@ -183,7 +183,7 @@ test_that("simulated grasps fit with DTW and explain most of the variance", {
   m <- fit_grasp_model(g, seed = 1)
   expect_identical(m$grasp, "Medium Wrap")
   expect_equal(m$n_used + nrow(m$removed), length(g))
-  expect_gt(stats::median(rowSums(m$var_explained)), 0.7)
+  expect_gt(stats::median(rowSums(model_var_explained(m))), 0.7)
 })
 
 test_that("a failed EM is replaced by a single Gaussian and recorded (Table 5.1)", {
@@ -195,7 +195,7 @@ test_that("a failed EM is replaced by a single Gaussian and recorded (Table 5.1)
   expect_true(all(grepl("single Gaussian", em$reason)))
   expect_true(all(vapply(m$gmm, function(x) isTRUE(x$fallback), logical(1))))
   # the single Gaussian has the sample mean of the scores
-  expect_equal(unname(drop(m$gmm$d1$means)), unname(colMeans(m$scores[, "d1", ])), tolerance = 1e-8)
+  expect_equal(unname(drop(m$gmm$d1$means)), unname(colMeans(model_scores(m)[, "d1", ])), tolerance = 1e-8)
   expect_identical(summary(m)$mixture, c("single Gaussian", "single Gaussian"))
 })
 
@@ -250,13 +250,16 @@ test_that("the constructor derives the views from the FPCA and the validator ref
   g <- planted_grasps(n = 12, p = 2, seed = 3)
   m <- fit_grasp_model(g, warping = "linear", seed = 1)
   for (j in seq_along(m$dofs)) {
-    expect_equal(unname(m$scores[, j, ]), unname(m$fpca[[j]]$scores))
-    expect_equal(unname(m$basis$mean[, j]), m$fpca[[j]]$mean)
-    expect_equal(unname(m$var_explained[j, ]), unname(m$fpca[[j]]$var_explained))
+    expect_equal(unname(model_scores(m)[, j, ]), unname(m$fpca[[j]]$scores))
+    expect_equal(unname(model_basis(m)$mean[, j]), m$fpca[[j]]$mean)
+    expect_equal(unname(model_var_explained(m)[j, ]), unname(m$fpca[[j]]$var_explained))
   }
   broken <- unclass(m)
-  broken$scores <- broken$scores[-1, , , drop = FALSE]
-  expect_error(validate_grasp_model(structure(broken, class = "grasp_model")), "has_dim")
+  broken$fpca[[1]]$mean <- broken$fpca[[1]]$mean[-1]
+  expect_error(validate_grasp_model(structure(broken, class = "grasp_model")), "fpca_shape_fault")
+  broken <- unclass(m)
+  broken$n_used <- broken$n_used - 1L
+  expect_error(validate_grasp_model(structure(broken, class = "grasp_model")))
   broken <- unclass(m)
   broken$gmm <- broken$gmm[1]
   expect_error(validate_grasp_model(structure(broken, class = "grasp_model")))

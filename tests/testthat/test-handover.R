@@ -12,7 +12,7 @@ split <- handover_split()
 
 test_that("a frame seen in the reference is reconstructed almost exactly", {
   fit <- fit_handover(split$ref, markers = 3, smooth = FALSE)
-  rec <- reconstruct(fit, split$ref[1:2])
+  rec <- predict(fit, split$ref[1:2])
   expect_s3_class(rec, "grasps")
   expect_identical(rec$meta$id, split$ref$meta$id[1:2])
   expect_lt(handover_error(split$ref[1:2], rec), 1e-3)
@@ -21,13 +21,13 @@ test_that("a frame seen in the reference is reconstructed almost exactly", {
 test_that("ranked 6 markers beat 3, the no-PCA regression and the hand-picked set on unseen data", {
   ref <- split$ref
   test <- split$test
-  rk <- rank_markers(ref)
-  m6 <- select_markers(rk, 6)
+  m6 <- select_markers(ref, 6)
+  rk <- attr(m6, "ranking")
   m3 <- select_markers(rk, 3)
-  e6 <- handover_error(test, reconstruct(fit_handover(ref, m6), test))
-  e3 <- handover_error(test, reconstruct(fit_handover(ref, m3), test))
-  e_direct <- handover_error(test, reconstruct(fit_handover(ref, m6, method = "direct"), test))
-  e_hand <- handover_error(test, reconstruct(fit_handover(ref, select_markers(method = "handpicked")), test))
+  e6 <- handover_error(test, predict(fit_handover(ref, m6), test))
+  e3 <- handover_error(test, predict(fit_handover(ref, m3), test))
+  e_direct <- handover_error(test, predict(fit_handover(ref, m6, method = "direct"), test))
+  e_hand <- handover_error(test, predict(fit_handover(ref, select_markers(method = "handpicked")), test))
   # a useful reconstruction: well under the spread of the test angles themselves
   spread <- mean(abs(sweep(do.call(rbind, test$recordings), 2, colMeans(do.call(rbind, ref$recordings)))))
   expect_lt(e6, spread / 3)
@@ -42,10 +42,10 @@ test_that("LWR on all components equals LWR straight to the angles (why 'direct'
   q <- forward_kinematics(split$test[1], markers = fit$markers)[[1]]
   y <- do.call(rbind, ref$recordings)
   direct_local <- lwr_predict(fit$ref_x, y, q, fit$k_used, fit$ridge, fit$eps)
-  via_pca <- reconstruct(fit, split$test[1])$recordings[[1]]
+  via_pca <- predict(fit, split$test[1])$recordings[[1]]
   expect_equal(unname(via_pca), unname(direct_local), tolerance = 1e-8)
   # with fewer components the two differ
-  few <- reconstruct(fit_handover(ref, fit$markers, ncomp = 3, smooth = FALSE), split$test[1])
+  few <- predict(fit_handover(ref, fit$markers, ncomp = 3, smooth = FALSE), split$test[1])
   expect_gt(max(abs(few$recordings[[1]] - via_pca)), 0.1)
 })
 
@@ -53,30 +53,30 @@ test_that("a marker matrix query gives the same result as the grasps query; colu
   fit <- fit_handover(split$ref, markers = 4)
   g1 <- split$test[1]
   mk <- forward_kinematics(g1, markers = fit$markers)[[1]]
-  a <- reconstruct(fit, g1)$recordings[[1]]
-  b <- reconstruct(fit, mk)
+  a <- predict(fit, g1)$recordings[[1]]
+  b <- predict(fit, mk)
   expect_equal(unname(b$recordings[[1]]), unname(a))
   rev_cols <- mk[, rev(colnames(mk))]
-  expect_equal(reconstruct(fit, rev_cols)$recordings[[1]], b$recordings[[1]])
+  expect_equal(predict(fit, rev_cols)$recordings[[1]], b$recordings[[1]])
   expect_equal(predict(fit, mk)$recordings[[1]], b$recordings[[1]])
   # extra named markers (e.g. the full set) are ignored
   all13 <- forward_kinematics(g1, markers = TRUE)[[1]]
-  expect_equal(reconstruct(fit, all13)$recordings[[1]], b$recordings[[1]])
+  expect_equal(predict(fit, all13)$recordings[[1]], b$recordings[[1]])
   # unnamed columns are refused: in another order they would give a wrong hand
-  expect_error(reconstruct(fit, unname(mk)), class = "handmotion_error_bad_markers")
-  expect_error(reconstruct(fit, unname(mk[, rev(seq_len(ncol(mk)))])), class = "handmotion_error_bad_markers")
+  expect_error(predict(fit, unname(mk)), class = "handmotion_error_bad_markers")
+  expect_error(predict(fit, unname(mk[, rev(seq_len(ncol(mk)))])), class = "handmotion_error_bad_markers")
 })
 
 test_that("wrong marker sets are refused with classed errors", {
   ref <- split$ref
   fit <- fit_handover(ref, markers = c("thumb_tip", "index_tip", "ring_tip"))
   mk <- forward_kinematics(split$test[1], markers = fit$markers)[[1]]
-  expect_error(reconstruct(fit, unname(mk[, 1:6])), class = "handmotion_error_bad_markers")
-  expect_error(reconstruct(fit, mk[, 1:6]), class = "handmotion_error_bad_markers")
-  expect_error(reconstruct(fit, mk[0, ]), class = "handmotion_error_bad_markers")
+  expect_error(predict(fit, unname(mk[, 1:6])), class = "handmotion_error_bad_markers")
+  expect_error(predict(fit, mk[, 1:6]), class = "handmotion_error_bad_markers")
+  expect_error(predict(fit, mk[0, ]), class = "handmotion_error_bad_markers")
   inf <- mk
   inf[1, 1] <- Inf
-  expect_error(reconstruct(fit, inf), class = "handmotion_error_bad_markers")
+  expect_error(predict(fit, inf), class = "handmotion_error_bad_markers")
   expect_error(fit_handover(ref, markers = c("thumb_tip", "wrist")), class = "handmotion_error_bad_markers")
   expect_error(fit_handover(ref, markers = c("thumb_tip", "thumb_tip")), class = "handmotion_error_bad_markers")
   expect_error(fit_handover(ref, markers = c("thumb_tip", "forearm_radial")),
@@ -102,11 +102,11 @@ test_that("a reference too small for the regression is a classed error", {
 test_that("occluded (NaN) markers are dropped per frame, and fully occluded frames are an error", {
   fit <- fit_handover(split$ref, markers = 6)
   mk <- forward_kinematics(split$test[1], markers = fit$markers)[[1]]
-  full <- reconstruct(fit, mk)
+  full <- predict(fit, mk)
   occ <- mk
   occ[5:9, 1:3] <- NaN           # first marker hidden for five frames
   occ[7, 4:6] <- NA              # and the second in one of them
-  rec <- reconstruct(fit, occ)
+  rec <- predict(fit, occ)
   used <- attr(rec, "handover")$markers_used[[1]]
   expect_equal(used[c(4, 5, 7, 10)], c(6, 5, 4, 6))
   expect_equal(rec$meta$occluded_frames, 5L)
@@ -117,9 +117,9 @@ test_that("occluded (NaN) markers are dropped per frame, and fully occluded fram
   expect_lt(e_occ, e_full + 5)
   blind <- mk
   blind[3, ] <- NaN
-  expect_error(reconstruct(fit, blind), class = "handmotion_error_occluded")
+  expect_error(predict(fit, blind), class = "handmotion_error_occluded")
   direct <- fit_handover(split$ref, markers = fit$markers, method = "direct")
-  expect_error(reconstruct(direct, occ), class = "handmotion_error_occluded")
+  expect_error(predict(direct, occ), class = "handmotion_error_occluded")
 })
 
 test_that("the cone filter scales with the rate and smooths without bias", {
@@ -140,7 +140,7 @@ test_that("k = Inf is the paper's all-frame weighting and matches k = all frames
   small <- split$ref[1:6]
   a <- fit_handover(small, markers = c("thumb_tip", "middle_tip"), k = Inf)
   b <- fit_handover(small, markers = c("thumb_tip", "middle_tip"), k = sum(small$meta$n_frames))
-  expect_equal(reconstruct(a, split$test[1])$recordings, reconstruct(b, split$test[1])$recordings)
+  expect_equal(predict(a, split$test[1])$recordings, predict(b, split$test[1])$recordings)
 })
 
 test_that("handover_error is the mean absolute angle error per frame in degrees", {
@@ -190,11 +190,11 @@ test_that("search-based selection returns a logged greedy set", {
                class = "handmotion_error_reference_too_small")
 })
 
-test_that("compare_marker_sets tabulates and plots the comparison", {
-  cmp <- compare_marker_sets(split$ref, split$test[1:2],
-                             sets = list(a = c("thumb_tip", "index_tip"),
-                                         b = list(markers = c("thumb_tip", "index_tip"), method = "direct")),
-                             k = 64)
+test_that("handover_error(by = \"markers\") tabulates and plots the comparison", {
+  cmp <- handover_error(split$test[1:2], by = "markers", reference = split$ref,
+                        sets = list(a = c("thumb_tip", "index_tip"),
+                                    b = list(markers = c("thumb_tip", "index_tip"), method = "direct")),
+                        k = 64)
   expect_s3_class(cmp, "handover_comparison")
   expect_equal(as.character(cmp$set), c("a", "b"))
   expect_equal(cmp$method, c("pca", "direct"))
@@ -202,7 +202,11 @@ test_that("compare_marker_sets tabulates and plots the comparison", {
   expect_output(print(cmp), "handover_comparison")
   b <- ggplot2::ggplot_build(ggplot2::autoplot(cmp))
   expect_equal(b$data[[1]]$y, cmp$error)
-  expect_error(compare_marker_sets(split$ref, split$test, sets = list(1)), class = "handmotion_error_bad_input")
+  # each row is the plain error of that set's reconstruction
+  fit_a <- fit_handover(split$ref, c("thumb_tip", "index_tip"), k = 64)
+  expect_equal(cmp$error[1], handover_error(split$test[1:2], predict(fit_a, split$test[1:2])))
+  expect_error(handover_error(split$test, by = "markers", reference = split$ref, sets = list(1)),
+               class = "handmotion_error_bad_input")
 })
 
 test_that("the figures build: markers on the hand, component trajectories, ranking", {
@@ -214,14 +218,14 @@ test_that("the figures build: markers on the hand, component trajectories, ranki
   expect_equal(sum(marks$selected), 8)
   expect_equal(nrow(marks), 2 * 16)
   fit <- fit_handover(split$ref, markers = 3)
-  rec <- reconstruct(fit, split$test[1])
+  rec <- predict(fit, split$test[1])
   p5 <- ggplot2::autoplot(fit, split$test[1], list(`3 markers` = rec), components = 1:2)
   d5 <- ggplot2::ggplot_build(p5)$plot$data
   expect_setequal(levels(d5$source), c("ground truth", "3 markers"))
   # with all components and smoothing the plotted scores are the model's smoothed scores
   s <- attr(rec, "handover")$scores[[1]]
   expect_equal(d5$score[d5$source == "3 markers" & d5$component == "PC1"], unname(s[, 1]))
-  b_rank <- ggplot2::ggplot_build(ggplot2::autoplot(rank_markers(split$ref)))
+  b_rank <- ggplot2::ggplot_build(ggplot2::autoplot(attr(select_markers(split$ref), "ranking")))
   expect_equal(nrow(b_rank$data[[1]]), 13)
   expect_output(print(fit), "handover_model")
 })
@@ -234,14 +238,14 @@ test_that("hand-over runs on the real GraspDB14 samples (radians, CyberGlove map
   expect_s3_class(g, "grasps")
   expect_length(g, 2L)
   fit <- fit_handover(g[2], markers = 6, k = 64)
-  rec <- reconstruct(fit, g[1])
+  rec <- predict(fit, g[1])
   expect_equal(rec$unit, "rad")
   e <- handover_error(g[1], rec)
   expect_true(is.finite(e))
   # reconstructing the reference's own frames is near exact; not exact, because
   # the sensors the CyberGlove mapping does not apply (I-AA, P-Arch) change
   # angles without moving any marker
-  expect_lt(handover_error(g[2], reconstruct(fit_handover(g[2], 6, k = 64, smooth = FALSE), g[2])), 0.2)
+  expect_lt(handover_error(g[2], predict(fit_handover(g[2], 6, k = 64, smooth = FALSE), g[2])), 0.2)
 })
 
 test_that("the C regression engine agrees with the R reference engine", {

@@ -67,26 +67,29 @@ test_that("Algorithm 1 ranks the markers that drive the variance first", {
   sd <- rep(1, 13)
   sd[c(4, 2, 8)] <- c(40, 20, 10)       # ring tip >> index tip >> middle pip
   m <- planted_markers(sd)
-  rk <- rank_markers(m)
+  top <- select_markers(m, 3)
+  rk <- attr(top, "ranking")
+  expect_equal(as.vector(top), rk$marker[1:3])
   expect_s3_class(rk, "marker_ranking")
   expect_equal(rk$marker[1:3], c("ring_tip", "index_tip", "middle_pip"))
   expect_equal(sum(rk$share), 1)
   expect_equal(attr(rk, "weighting"), "eigenvalue")
   # the top-N variant: with N = 3 only the three planted directions count
-  eq <- rank_markers(m, weighting = "equal", n_components = 3)
-  expect_setequal(eq$marker[1:3], c("ring_tip", "index_tip", "middle_pip"))
-  expect_error(rank_markers(m, weighting = "equal", n_components = 40),
+  eq <- select_markers(m, 3, weighting = "equal", n_components = 3)
+  expect_setequal(as.vector(eq), c("ring_tip", "index_tip", "middle_pip"))
+  expect_equal(attr(attr(eq, "ranking"), "weighting"), "equal")
+  expect_error(select_markers(m, 3, weighting = "equal", n_components = 40),
                class = "handmotion_error_bad_input")
   expect_output(print(rk), "marker_ranking")
 })
 
 test_that("selected sets are nested prefixes of the ranking", {
   g <- simulate_grasps(subjects = 2, grasps = 1:5, objects = 1, trials = 1, seed = 4)
-  rk <- rank_markers(g)
+  rk <- attr(select_markers(g, 1), "ranking")
   s3 <- select_markers(rk, 3)
   s6 <- select_markers(rk, 6)
   expect_length(s6, 6)
-  expect_identical(s6[1:3], s3)
+  expect_identical(s6[1:3], as.vector(s3))
   expect_identical(select_markers(g, 6), s6)
   expect_error(select_markers(rk, 0), class = "handmotion_error_bad_markers")
   expect_error(select_markers(rk, 14), class = "handmotion_error_bad_markers")
@@ -111,12 +114,12 @@ test_that("forward_kinematics(markers = ) gives the marker positions", {
 test_that("forearm markers are not ranked and bad marker matrices are refused", {
   m <- planted_markers(seq(1, 13))
   fa <- matrix(1, nrow(m), 9, dimnames = list(NULL, marker_columns(c("forearm_radial", "forearm_ulnar", "forearm_dorsal"))))
-  rk <- rank_markers(cbind(m, fa))
+  rk <- attr(select_markers(cbind(m, fa), 13), "ranking")
   expect_equal(nrow(rk), 13)
   expect_false(any(grepl("forearm", rk$marker)))
   bad <- m
   colnames(bad) <- NULL
-  expect_error(rank_markers(bad), class = "handmotion_error_bad_markers")
-  expect_error(rank_markers(m[, 1:5]), class = "handmotion_error_bad_markers")
-  expect_error(rank_markers(m[1, , drop = FALSE]), class = "handmotion_error_reference_too_small")
+  expect_error(select_markers(bad), class = "handmotion_error_bad_markers")
+  expect_error(select_markers(m[, 1:5]), class = "handmotion_error_bad_markers")
+  expect_error(select_markers(m[1, , drop = FALSE]), class = "handmotion_error_reference_too_small")
 })

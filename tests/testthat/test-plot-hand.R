@@ -24,6 +24,15 @@ test_that("hand_pose() collects joints from matrices, arrays, grasps and skeleto
   expect_error(hand_pose("a"), class = "handmotion_error_bad_input")
 })
 
+test_that("autoplot(type = \"hand\") of a grasps set draws its hand_pose", {
+  x <- hust(3)
+  x[, "PIP3"] <- c(0, 45, 90)
+  g <- grasps(list(x), meta = data.frame(grasp = "Tripod"))
+  p <- ggplot2::autoplot(g, type = "hand", frame = 1:3, view = "radial")
+  q <- ggplot2::autoplot(hand_pose(g, frame = 1:3), view = "radial")
+  expect_equal(ggplot2::ggplot_build(p)$data, ggplot2::ggplot_build(q)$data)
+})
+
 test_that("autoplot draws one bone per non-root joint and one panel per frame", {
   x <- hust(3)
   x[, "PIP3"] <- c(0, 45, 90)

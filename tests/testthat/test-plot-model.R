@@ -18,7 +18,7 @@ test_that("fpca plot: grey samples, red mean and mean +- 2 sd x FPC (Figure 5.4)
   expect_equal(length(unique(b$data[[1]]$PANEL)), 2L)
   # the mean line of d1 is the model's mean curve
   on_mean <- vapply(seq_len(L), function(t) {
-    any(abs(model$y[model$PANEL == 1 & model$x == t] - m$basis$mean[t, "d1"]) < 1e-10)
+    any(abs(model$y[model$PANEL == 1 & model$x == t] - model_basis(m)$mean[t, "d1"]) < 1e-10)
   }, logical(1))
   expect_true(all(on_mean))
   lay <- b$layout$layout
@@ -50,7 +50,7 @@ test_that("mixture plot draws contours for every DoF and the scores (Figure 5.6)
   points <- b$data[[2]]
   expect_setequal(unique(as.integer(contours$PANEL)), 1:3)
   expect_equal(nrow(points), 12L * 3L)
-  expect_equal(points$x[points$PANEL == 2], unname(m$scores[, "d2", 1]))
+  expect_equal(points$x[points$PANEL == 2], unname(model_scores(m)[, "d2", 1]))
 })
 
 test_that("warps plot: one grey line per recording and the red mean", {

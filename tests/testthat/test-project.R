@@ -6,7 +6,7 @@ test_that("projecting the training data of a linear-warp model returns its score
   pr <- predict(m, g)
   expect_s3_class(pr, "grasp_projection")
   expect_identical(pr$ids, g$meta$id)
-  expect_equal(unname(pr$scores), unname(m$scores), tolerance = 1e-6)
+  expect_equal(unname(pr$scores), unname(model_scores(m)), tolerance = 1e-6)
   expect_equal(unname(pr$warped[[5]]), unname(m$alignment$warped[5, , ]), tolerance = 1e-8)
   expect_equal(unname(pr$distance), sqrt(rowSums(pr$residual^2)), ignore_attr = TRUE)
   expect_identical(predict(m, g), pr)
@@ -29,7 +29,7 @@ test_that("distance is eq. 4.4 over the hand, computed independently with apply_
     expect_equal(unname(pr$residual[i, ]), res, tolerance = 1e-8)
     expect_equal(unname(pr$distance[i]), sqrt(sum(res^2)), tolerance = 1e-8)
     # fitted = mean + FPCs x scores
-    fit1 <- m$basis$mean[, 1] + matrix(m$basis$components[, 1, ], L) %*% pr$scores[i, 1, ]
+    fit1 <- model_basis(m)$mean[, 1] + matrix(model_basis(m)$components[, 1, ], L) %*% pr$scores[i, 1, ]
     expect_equal(unname(pr$fitted[[i]][, 1]), drop(fit1), tolerance = 1e-8)
   }
 })

@@ -32,29 +32,36 @@ test_that("overrides replace elements by name", {
 
 test_that("postures follow the roles the taxonomy gives each finger", {
   tax <- feix_taxonomy
-  role <- function(name, f) sim_finger_role(tax[tax$name == name, ], f)
-  expect_equal(role("Index Finger Extension", 2), "extended")
-  expect_equal(role("Index Finger Extension", 3), "wrap")
-  expect_equal(role("Prismatic 2 Finger", 2), "pad")
-  expect_equal(role("Prismatic 2 Finger", 4), "unused_precision")
-  expect_equal(role("Writing Tripod", 2), "support")
-  expect_equal(role("Lateral", 2), "side")
-  expect_equal(sim_thumb_role(tax[tax$name == "Adducted Thumb", ]), "along")
-  expect_equal(sim_thumb_role(tax[tax$name == "Tripod", ]), "pad_opposed")
-  expect_equal(sim_thumb_role(tax[tax$name == "Medium Wrap", ]), "wrap")
-  # the corrections checked against Feix et al. (2016), Fig. 4
-  expect_equal(role("Extension Type", 4), "pad")
-  expect_equal(role("Extension Type", 5), "unused_power")
-  expect_equal(role("Sphere 4 Finger", 4), "pad")
-  expect_equal(role("Sphere 4 Finger", 5), "unused_power")
-  expect_equal(role("Sphere 3 Finger", 3), "pad")
-  expect_equal(role("Sphere 3 Finger", 4), "unused_power")
-  expect_equal(sim_thumb_role(tax[tax$name == "Sphere 4 Finger", ]), "pad_opposed")
-  expect_equal(sim_thumb_role(tax[tax$name == "Sphere 3 Finger", ]), "pad_opposed")
-  expect_equal(role("Ventral", 2), "side")
-  expect_equal(role("Ventral", 3), "unused_precision")
-  expect_equal(role("Adduction Grip", 2), "side")
-  expect_equal(role("Adduction Grip", 3), "side")
+  # finger = NA: the thumb's role; the last block are the corrections
+  # checked against Feix et al. (2016), Fig. 4
+  expected <- read.csv(text = "
+grasp,finger,role
+Index Finger Extension,2,extended
+Index Finger Extension,3,wrap
+Prismatic 2 Finger,2,pad
+Prismatic 2 Finger,4,unused_precision
+Writing Tripod,2,support
+Lateral,2,side
+Adducted Thumb,NA,along
+Tripod,NA,pad_opposed
+Medium Wrap,NA,wrap
+Extension Type,4,pad
+Extension Type,5,unused_power
+Sphere 4 Finger,4,pad
+Sphere 4 Finger,5,unused_power
+Sphere 3 Finger,3,pad
+Sphere 3 Finger,4,unused_power
+Sphere 4 Finger,NA,pad_opposed
+Sphere 3 Finger,NA,pad_opposed
+Ventral,2,side
+Ventral,3,unused_precision
+Adduction Grip,2,side
+Adduction Grip,3,side", stringsAsFactors = FALSE)
+  for (i in seq_len(nrow(expected))) {
+    row <- tax[tax$name == expected$grasp[i], ]
+    got <- if (is.na(expected$finger[i])) sim_thumb_role(row) else sim_finger_role(row, expected$finger[i])
+    expect_equal(got, expected$role[i], label = sprintf("%s, finger %s", expected$grasp[i], expected$finger[i]))
+  }
   expect_equal(simulator_params()$aperture_scale[["Tripod Variation"]], 0.8)
   # a type without an adjustment is exactly its roles' angles
   built <- sim_build_postures()

@@ -10,7 +10,7 @@ small_design <- local({
       g <- simulate_grasps(subjects = 4, grasps = c(3, 9, 17), objects = 2, trials = 2, seed = 1)
       ms <- fit_grasp_models(g, seed = 1)
       cl <- classify(ms, g)
-      lf <- fit_last_frame_pca(g, k = 3)
+      lf <- fit_grasp_classifier(g, method = "last_frame", k = 3)
       cl_lf <- classify(lf, g)
       ev <- evaluate_loso(g, method = "last_frame", fit_args = list(k = 3), folds = 2, in_sample = FALSE)
       cache <<- list(g = g, ms = ms, cl = cl, lf = lf, cl_lf = cl_lf, ev = ev)
@@ -47,7 +47,7 @@ test_that("table_5_2 summarises variance explained over DoFs, ours beside the th
                       "thesis_mean", "diff_mean", "max", "thesis_max"))
   expect_equal(nrow(t52), 3L)
   # recomputed from the models themselves: percent of variance of two FPCs per DoF
-  ve <- lapply(unclass(d$ms), function(m) 100 * rowSums(m$var_explained))
+  ve <- lapply(unclass(d$ms), function(m) 100 * rowSums(model_var_explained(m)))
   expect_equal(t52$min, unname(vapply(ve, min, numeric(1))))
   expect_equal(t52$median, unname(vapply(ve, stats::median, numeric(1))))
   expect_equal(t52$mean, unname(vapply(ve, mean, numeric(1))))

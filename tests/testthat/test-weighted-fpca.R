@@ -26,7 +26,7 @@ test_that("the weighted distance tells apart types the thesis' distance cannot",
   m <- fit_grasp_models(train, seed = 1)
   acc <- function(cl) mean(as.character(cl$predictions$predicted) == as.character(cl$predictions$truth))
   plain <- acc(classify(m, test))
-  w <- fit_weighted_fpca(train, models = m)
+  w <- fit_grasp_classifier(train, method = "weighted_fpca", models = m)
   weighted <- acc(classify(w, test))
   # over training seeds 1-3 (fresh test sets): plain 0.57-0.65, weighted 0.88-1
   expect_lt(plain, 0.75)
@@ -59,8 +59,8 @@ test_that("evaluate_loso() refits the weighted distance per fold, and bad input 
   ev <- evaluate_loso(g, method = "weighted_fpca", fit_args = list(seed = 1), folds = 2)
   expect_gt(ev$accuracy[["held_out"]], 0.75) # half the subjects to train on
   expect_output(print(ev), "weighted FPCA-distance")
-  expect_error(fit_weighted_fpca(g, time = "start"), class = "handmotion_error_bad_input")
-  expect_error(fit_weighted_fpca(g, models = list()), class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_classifier(g, method = "weighted_fpca", time = "start"), class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_classifier(g, method = "weighted_fpca", models = list()), class = "handmotion_error_bad_input")
   m <- fit_grasp_models(g, seed = 1)
-  expect_error(fit_weighted_fpca(g[g$meta$grasp == "Ring"], models = m), class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_classifier(g[g$meta$grasp == "Ring"], method = "weighted_fpca", models = m), class = "handmotion_error_bad_input")
 })

@@ -33,9 +33,9 @@ __all__ = [
     "BadSkeletonError", "FitFailedError", "RError", "HandmotionWarning", "DegenerateDataWarning",
     "simulate_grasps", "read_hust", "write_hust", "read_graspdb14", "write_graspdb14",
     "read_skeleton", "hand_skeleton", "forward_kinematics", "joint_names", "write_bvh",
-    "fit_grasp_models", "generate", "evaluate_generation", "classify", "fit_last_frame_pca", "evaluate_loso",
-    "fit_grasp_classifier", "fit_weighted_fpca", "fit_grasp_recognizer", "evaluate_early_recognition",
+    "fit_grasp_models", "generate", "evaluate_generation", "classify", "evaluate_loso",
+    "fit_grasp_classifier", "fit_grasp_recognizer", "evaluate_early_recognition",
     "thesis_table", "table_5_1", "table_5_2", "table_5_3", "table_5_6", "table_5_7", "table_5_8",
-    "rank_markers", "select_markers", "fit_handover", "reconstruct",
+    "select_markers", "fit_handover", "reconstruct",
     "hand_3d", "HandView",
 ]

@@ -216,9 +216,9 @@ def classify(models, x, method=None, **kwargs):
     """Classify recordings with fitted models; the method follows from ``models``.
 
     ``models`` are fitted models: a :class:`GraspModels` from :func:`fit_grasp_models`
-    (``"fpca"``, the thesis' distance), a handle from :func:`fit_last_frame_pca`
-    (``"last_frame"``), a :class:`GraspClassifier` from :func:`fit_grasp_classifier`
-    (``"discriminant"``) or a handle from :func:`fit_weighted_fpca` (``"weighted_fpca"``).
+    (``"fpca"``, the thesis' distance) or what :func:`fit_grasp_classifier` returns
+    (a :class:`GraspClassifier` for ``"discriminant"``, a handle for ``"last_frame"`` and
+    ``"weighted_fpca"``).
     Nothing is fitted here: a :class:`Grasps` is refused (fit first; for a held-out
     estimate use :func:`evaluate_loso`).
 
@@ -230,7 +230,7 @@ def classify(models, x, method=None, **kwargs):
     if method is not None and method not in _CLASSIFY_METHODS:
         raise BadInputError(f"method must be one of {_CLASSIFY_METHODS}, not {method!r}")
     if isinstance(models, Grasps):
-        raise BadInputError("models must be fitted: fit_grasp_models(train) or fit_last_frame_pca(train); "
+        raise BadInputError("models must be fitted: fit_grasp_models(train) or fit_grasp_classifier(train); "
                             "evaluate_loso() fits on training subjects and classifies the held-out ones")
     g = _as_grasps(x)
     ro = r()
@@ -246,12 +246,6 @@ def classify(models, x, method=None, **kwargs):
             "confusion": r_to_py(table).set_axis(list(ro.r["rownames"](table)), axis=0),
             "accuracy": float(acc.iloc[0]) if len(acc) else float("nan"),
             "metrics": summ}
-
-
-def fit_last_frame_pca(x, k=5, **kwargs):
-    """Per-type PCA of the recordings' last frames (the thesis' baseline); a handle for
-    :func:`classify` and :func:`thesis_table`."""
-    return RHandle(call("fit_last_frame_pca", _as_grasps(x), k=_check_count(k, "k"), **kwargs))
 
 
 def evaluate_loso(x, method="fpca", folds=None, seed=1, **kwargs):
@@ -276,23 +270,38 @@ def evaluate_loso(x, method="fpca", folds=None, seed=1, **kwargs):
 # ----------------------------------------------------------- recognition
 
 
-def fit_grasp_classifier(x, prior="equal", **kwargs):
-    """Shrinkage LDA on postures at fractions of the motion, duration and travel per DoF
-    (R's ``fit_grasp_classifier()``); a :class:`GraspClassifier`."""
-    if prior not in ("equal", "data"):
-        raise BadInputError(f"prior must be 'equal' or 'data', not {prior!r}")
-    return GraspClassifier(call("fit_grasp_classifier", _as_grasps(x), prior=prior, **kwargs))
+def fit_grasp_classifier(x, method="discriminant", **kwargs):
+    """A fitted grasp classifier for :func:`classify` (R's ``fit_grasp_classifier()``; the
+    method's arguments by name, validated in R):
+
+    * ``"discriminant"``: shrinkage LDA on postures at fractions of the motion, duration and
+      travel per DoF (``at``, ``prior``); a :class:`GraspClassifier`;
+    * ``"last_frame"``: per-type PCA of the recordings' last frames, the thesis' baseline
+      (``k``, ``grasps``); a handle, also for :func:`thesis_table`;
+    * ``"weighted_fpca"``: the thesis' FPCA distance with per-type DoF weights (``models``, a
+      :class:`GraspModels` or None; ``time``, ``"uniform"`` or ``"end"``); a handle.
+    """
+    if "models" in kwargs and kwargs["models"] is not None:
+        if not isinstance(kwargs["models"], GraspModels):
+            raise BadInputError("models must be a GraspModels from fit_grasp_models(), or None")
+        kwargs["models"] = kwargs["models"].robj
+    fit = call("fit_grasp_classifier", _as_grasps(x), method=method, **kwargs)
+    return GraspClassifier(fit) if method == "discriminant" else RHandle(fit)
 
 
-def fit_weighted_fpca(x, models=None, time="uniform", **kwargs):
-    """The thesis' FPCA distance with per-type DoF weights and optional end-of-motion time
-    weights (R's ``fit_weighted_fpca()``); a handle for :func:`classify`."""
-    if time not in ("uniform", "end"):
-        raise BadInputError(f"time must be 'uniform' or 'end', not {time!r}")
-    if models is not None and not isinstance(models, GraspModels):
-        raise BadInputError("models must be a GraspModels from fit_grasp_models(), or None")
-    return RHandle(call("fit_weighted_fpca", _as_grasps(x), models=None if models is None else models.robj,
-                        time=time, **kwargs))
+def _deprecated_classifier(name, method):
+    def fn(x, **kwargs):
+        warnings.warn(f"{name}() is deprecated; use fit_grasp_classifier(x, method={method!r}, ...)",
+                      DeprecationWarning, stacklevel=2)
+        return fit_grasp_classifier(x, method=method, **kwargs)
+
+    fn.__name__ = name
+    fn.__doc__ = f"Deprecated: use ``fit_grasp_classifier(x, method={method!r}, ...)``."
+    return fn
+
+
+fit_last_frame_pca = _deprecated_classifier("fit_last_frame_pca", "last_frame")
+fit_weighted_fpca = _deprecated_classifier("fit_weighted_fpca", "weighted_fpca")
 
 
 def fit_grasp_recognizer(x, horizon=None, **kwargs):
@@ -323,7 +332,7 @@ def thesis_table(id, **kwargs):
     ``id`` is ``"5.1"``, ``"5.2"``, ``"5.3"``, ``"5.3 claims"``, ``"5.6"``, ``"5.7"`` or ``"5.8"``;
     the table's inputs are named as in R's ``thesis_table()``: ``models`` (from
     :func:`fit_grasp_models`), ``classification`` (``classify(...)["classification"]``),
-    ``confusion`` and ``held_out``, ``fit`` (from :func:`fit_last_frame_pca`) and ``pcs``.
+    ``confusion`` and ``held_out``, ``fit`` (from ``fit_grasp_classifier(x, method="last_frame")``) and ``pcs``.
     """
     return r_to_py(call("thesis_table", str(id), **kwargs))
 
@@ -352,8 +361,12 @@ table_5_8 = _deprecated_table("table_5_8", "5.8", "confusion")
 
 
 def rank_markers(reference, **kwargs):
-    """Rank the 13 hand markers by their influence on the reference data's principal components."""
-    return r_to_py(call("rank_markers", _as_grasps(reference, "reference"), **kwargs))
+    """Deprecated: the ranking of the 13 hand markers is the ``"ranking"`` of R's
+    ``select_markers()``; this returns it as a DataFrame."""
+    warnings.warn("rank_markers() is deprecated; select_markers(x, n) takes the top n of the ranking",
+                  DeprecationWarning, stacklevel=2)
+    ranking = r().r("function(x, ...) attr(handmotion::select_markers(x, 1, ...), 'ranking')")
+    return r_to_py(call(ranking, _as_grasps(reference, "reference"), **kwargs))
 
 
 def select_markers(x=None, n=6, method="ranked", **kwargs):
@@ -378,7 +391,8 @@ def fit_handover(reference, markers=6, **kwargs):
 
 
 def reconstruct(model, query, **kwargs):
-    """Rebuild all joint angles from sparse markers; returns a :class:`Grasps`.
+    """Rebuild all joint angles from sparse markers (R's ``predict()`` on the model); returns a
+    :class:`Grasps`.
 
     ``query`` is a :class:`Grasps` (its markers are computed by forward kinematics)
     or a numpy array frames x (3 x markers) of marker positions (NaN = occluded).
@@ -386,4 +400,4 @@ def reconstruct(model, query, **kwargs):
     if not isinstance(model, HandoverModel):
         raise BadInputError("model must come from fit_handover()")
     q = query if isinstance(query, np.ndarray) and query.ndim == 2 else _as_grasps(query, "query")
-    return r_to_py(call("reconstruct", model, q, **kwargs))
+    return r_to_py(call(r().r["predict"], model, q, **kwargs))

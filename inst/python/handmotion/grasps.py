@@ -231,11 +231,11 @@ class Grasps:
 
 
 def _default_dofs(p):
-    """The DoF names R gives p unnamed columns (R's resolve_dofs(): the 16 HUST DoFs, else dof1..dofp),
+    """The DoF names R's grasps() gives p unnamed columns (the 16 HUST DoFs, else dof1..dofp),
     asked from R so the list is written down once."""
     from ._bridge import r
     ro = r()
-    return [str(d) for d in ro.r("function(p) handmotion:::resolve_dofs(NULL, list(matrix(0, 1, p)))")(int(p))]
+    return [str(d) for d in ro.r("function(p) handmotion::grasps(list(matrix(0, 1, p)))$dofs")(int(p))]
 
 
 def as_grasps(x, arg="x"):

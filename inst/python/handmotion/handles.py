@@ -58,7 +58,7 @@ class GraspModels(RHandle):
         if str(grasp) not in self.grasp_types():
             from .errors import BadInputError
             raise BadInputError(f"no model for grasp type {grasp!r}; have {self.grasp_types()}")
-        return _labelled_matrix(r().r("handmotion:::dependence_matrix")(self.robj.rx2(str(grasp))))
+        return _labelled_matrix(r().r("function(m) attr(summary(m), 'dependence_matrix')")(self.robj.rx2(str(grasp))))
 
 
 class Skeleton(RHandle):

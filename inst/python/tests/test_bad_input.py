@@ -69,7 +69,8 @@ CASES = [
      lambda hm, s, m, h, d: _bridge.call("fit_grasp_model", s[0:2], warping="linear"), FitFailedError),
     ("fit_grasp_classifier: fraction above 1", lambda hm, s, m, h, d: hm.fit_grasp_classifier(s, at=[2]),
      BadInputError),
-    ("fit_weighted_fpca: misspelt time", lambda hm, s, m, h, d: hm.fit_weighted_fpca(s, time="middle"), BadInputError),
+    ("fit_grasp_classifier: misspelt time", lambda hm, s, m, h, d: hm.fit_grasp_classifier(s, method="weighted_fpca", time="middle"), BadInputError),
+    ("fit_grasp_classifier: misspelt method", lambda hm, s, m, h, d: hm.fit_grasp_classifier(s, method="lda"), BadInputError),
     # generate and classify
     ("generate: unknown argument", lambda hm, s, m, h, d: hm.generate(m, n=2, sead=1), BadInputError),
     ("generate: unknown type", lambda hm, s, m, h, d: hm.generate(m, grasp="No Such Grasp"), BadInputError),
@@ -79,7 +80,7 @@ CASES = [
     ("forward_kinematics: NaN angles", lambda hm, s, m, h, d: hm.forward_kinematics(ANG * np.nan), BadInputError),
     ("forward_kinematics: misspelt mode", lambda hm, s, m, h, d: hm.forward_kinematics(ANG, mode="ful"), BadInputError),
     # hand-over
-    ("rank_markers: misspelt weighting", lambda hm, s, m, h, d: hm.rank_markers(s, weighting="eigen"), BadInputError),
+    ("select_markers: misspelt weighting", lambda hm, s, m, h, d: hm.select_markers(s, weighting="eigen"), BadInputError),
     ("fit_handover: unknown marker", lambda hm, s, m, h, d: hm.fit_handover(s, markers=["index_tip", "foo"]),
      BadInputError),
     ("fit_handover: zero ridge", lambda hm, s, m, h, d: hm.fit_handover(s, markers=3, ridge=0), BadInputError),

@@ -33,11 +33,14 @@ def test_discriminant_classifier_matches_r(hm, ro, split):
 def test_weighted_fpca_from_python(hm, split):
     train, test = split
     m = hm.fit_grasp_models(train, seed=1)
-    w = hm.fit_weighted_fpca(train, models=m)
+    w = hm.fit_grasp_classifier(train, method="weighted_fpca", models=m)
     res = hm.classify(w, test)
     assert "weighted" in repr(res["classification"])
     with pytest.raises(hm.BadInputError):
-        hm.fit_weighted_fpca(train, time="start")
+        hm.fit_grasp_classifier(train, method="weighted_fpca", time="start")
+    with pytest.warns(DeprecationWarning):
+        lf = hm.fit_last_frame_pca(train, k=2)
+    assert "last_frame_pca" in repr(lf)
 
 
 def test_stream_gives_the_batch_probabilities(hm, split):

@@ -1,0 +1,29 @@
+# The user API: every export is a verb a user meets in the README, a
+# vignette or the reference index, and every name of ?handmotion-renamed is
+# gone from the exports (it is an alias of that help page only).
+
+source_root <- function() test_path("..", "..")
+
+test_that("every export appears in the README, a vignette or the reference index", {
+  root <- source_root()
+  skip_if_not(file.exists(file.path(root, "_pkgdown.yml")), "needs the source tree")
+  exports <- setdiff(getNamespaceExports("handmotion"), "autoplot")  # autoplot: ggplot2's generic
+  rmd <- list.files(file.path(root, "vignettes"), pattern = "\\.Rmd$", recursive = TRUE, full.names = TRUE)
+  prose <- paste(unlist(lapply(c(file.path(root, "README.md"), rmd), readLines, warn = FALSE)), collapse = "\n")
+  index <- trimws(sub("^\\s*-\\s*", "", grep("^\\s*-\\s*[A-Za-z_.`]", readLines(file.path(root, "_pkgdown.yml")),
+                                             value = TRUE)))
+  seen <- vapply(exports, function(f) grepl(paste0(f, "("), prose, fixed = TRUE) || f %in% index, logical(1))
+  expect_equal(exports[!seen], character(0))
+})
+
+test_that("the renamed names are not exported and the surface stays small", {
+  rd <- tools::Rd_db(dir = source_root())
+  skip_if(length(rd) == 0L, "needs the source tree")
+  renamed <- rd[["handmotion-renamed.Rd"]]
+  aliases <- unlist(lapply(renamed[vapply(renamed, attr, "", "Rd_tag") == "\\alias"], as.character))
+  exports <- getNamespaceExports("handmotion")
+  expect_equal(intersect(aliases, exports), character(0))
+  expect_true(all(c("fit_last_frame_pca", "fit_weighted_fpca", "rank_markers", "compare_marker_sets",
+                    "hand_pose") %in% aliases))
+  expect_lte(length(exports), 40L)
+})
