@@ -14,7 +14,13 @@
 #   monomials 1, x_a, x_a x_b. Several starts (principal-axis splits, k-means
 #   from spread-out and from random centres) run side by side as columns of
 #   one matrix, each to convergence, and the best is kept, so the fast engine
-#   reaches at least the log-likelihood of a single random-start run.
+#   reaches at least the log-likelihood of a single random-start run. EM is
+#   accelerated by SQUAREM (Varadhan & Roland 2008): on the overlapping score
+#   clouds of the grasp models plain EM crawls (hundreds to thousands of
+#   iterations, more the more points), SQUAREM needs about a quarter of the
+#   evaluations. Above 1000 points the starts run on an evenly spread
+#   subsample of 1000 and only the best is refined on all points, so the
+#   starts' cost stops growing with n.
 #
 # The fast engine stops when an iteration raises the log-likelihood per
 # observation (the mean over the n points) by less than `tol`: the total
@@ -44,9 +50,14 @@ gmm_det_floor <- 1e-8
 #' and from four random centres drawn under `seed`) and keeps the converged
 #' run with the highest log-likelihood (the first of the runs within `n * tol`
 #' of it, so that rounding does not decide between runs that met the same
-#' optimum); `iterations` are that run's. Each run stops when an iteration
-#' raises the mean log-likelihood per observation by less than `tol`, so the
-#' number of iterations does not grow with `n`. For `d` = 1 and 2 the EM runs in
+#' optimum); `iterations` are that run's. Each run stops when an EM step
+#' raises the mean log-likelihood per observation by less than `tol`. EM is
+#' accelerated by SQUAREM (Varadhan & Roland 2008, scheme S3, on the
+#' sufficient statistics; an extrapolation is kept only when it does not
+#' lower the log-likelihood); `iterations` count EM evaluations,
+#' extrapolations included. With more than 1000 points the starts run on an
+#' evenly spread subsample of 1000 points and the best of them is refined on
+#' all points (`iterations` are the refinement's). For `d` = 1 and 2 the EM runs in
 #' compiled code (src/gmm-em.c), which reproduces the R implementation still
 #' used for `d` > 2. It is deterministic and leaves the global random number
 #' generator as it was.
@@ -256,22 +267,58 @@ gmm_em_fast <- function(X, k, max_iter, tol, seed) {
   Y <- (X - rep(centre, each = n)) / rep(scale, each = n)
   design <- gmm_design(Y)
   logdet0 <- determinant(crossprod(Y) / n)$modulus[1]
+  best <- NULL
+  if (n > gmm_start_points) {
+    # Many points: the starts race on an evenly spread subsample (their cost
+    # no longer grows with n) and the best of them is refined on all points
+    # from its responsibilities; should that fail, the starts run on all.
+    sub <- unique(round(seq(1, n, length.out = gmm_start_points)))
+    pick <- gmm_best_start(Y[sub, , drop = FALSE], k, max_iter, tol, seed, logdet0)
+    if (!is.null(pick$best)) {
+      z <- gmm_log_components(pick$best$weights, t(pick$best$mu), pick$best$sigma, Y)
+      z <- exp(z - (z[, 1] + log(rowSums(exp(z - z[, 1])))))
+      refined <- gmm_em_batch(design, list(z), k, max_iter, n * tol, logdet0)[[1]]
+      if (is.null(refined$failed) && refined$converged) best <- refined
+    }
+  }
+  if (is.null(best)) {
+    pick <- gmm_best_start(Y, k, max_iter, tol, seed, logdet0, design)
+    if (is.null(pick$best)) return(pick$outcome)
+    best <- pick$best
+  }
+  means <- t(best$mu) * rep(scale, each = k) + rep(centre, each = k)
+  covs <- array(0, c(d, d, k))
+  for (j in seq_len(k)) covs[, , j] <- best$sigma[, , j] * outer(scale, scale)
+  list(weights = best$weights, means = means, covs = covs, iterations = best$iterations,
+       converged = TRUE, diverged = FALSE)
+}
+
+# Above this many points the starts run on a subsample of this many
+# (gmm_em_fast()); one grasp type of the default data (about 270 recordings)
+# stays below it, so its mixtures see every start on every point.
+gmm_start_points <- 1000L
+
+# EM from every starting partition of the standardised points Y (gmm_starts())
+# and the best converged run: `best`, or NULL with the fit's `outcome` (an
+# error or no convergence) when none converged.
+gmm_best_start <- function(Y, k, max_iter, tol, seed, logdet0, design = gmm_design(Y)) {
+  d <- ncol(Y)
   starts <- gmm_starts(Y, k, seed)
   if (length(starts) == 0L) {
-    return(list(error = sprintf("no starting partition has %d points in every component", d + 1L),
-                iterations = 0L))
+    return(list(outcome = list(error = sprintf("no starting partition has %d points in every component",
+                                               d + 1L), iterations = 0L)))
   }
-  tol_total <- n * tol
+  tol_total <- nrow(Y) * tol
   runs <- gmm_em_batch(design, starts, k, max_iter, tol_total, logdet0)
   done <- vapply(runs, function(r) is.null(r$failed) && r$converged, logical(1))
   if (!any(done)) {
     alive <- vapply(runs, function(r) is.null(r$failed), logical(1))
     if (!any(alive)) {
       first <- runs[[which(vapply(runs, function(r) r$failed != "merged", logical(1)))[1]]]
-      return(list(error = paste("every start failed; the first with", first$failed),
-                  iterations = first$iterations))
+      return(list(outcome = list(error = paste("every start failed; the first with", first$failed),
+                                 iterations = first$iterations)))
     }
-    return(list(converged = FALSE, iterations = runs[[which(alive)[1]]]$iterations))
+    return(list(outcome = list(converged = FALSE, iterations = runs[[which(alive)[1]]]$iterations)))
   }
   runs <- runs[done]
   # Starts whose log-likelihoods differ by less than the convergence
@@ -279,12 +326,7 @@ gmm_em_fast <- function(X, k, max_iter, tol, seed) {
   # them wins, so rounding (compiled against R EM, one BLAS against another)
   # does not pick a different start.
   lls <- vapply(runs, function(r) r$loglik, numeric(1))
-  best <- runs[[which(lls >= max(lls) - tol_total)[1]]]
-  means <- t(best$mu) * rep(scale, each = k) + rep(centre, each = k)
-  covs <- array(0, c(d, d, k))
-  for (j in seq_len(k)) covs[, , j] <- best$sigma[, , j] * outer(scale, scale)
-  list(weights = best$weights, means = means, covs = covs, iterations = best$iterations,
-       converged = TRUE, diverged = FALSE)
+  list(best = runs[[which(lls >= max(lls) - tol_total)[1]]])
 }
 
 # The monomials a Gaussian log-density is linear in: 1, y_a, y_a * y_b (a <= b).
@@ -318,8 +360,8 @@ gmm_em_batch <- function(design, starts, k, max_iter, tol, logdet0) {
 
 gmm_em_batch_c <- function(design, starts, k, max_iter, tol, logdet0) {
   d <- design$d
-  labels <- matrix(as.integer(unlist(starts, use.names = FALSE)), design$n)
-  r <- .Call(hm_gmm_em, design$P, labels, as.integer(k), as.integer(max_iter), as.double(tol),
+  state <- gmm_start_state(design, starts, k)
+  r <- .Call(hm_gmm_em, design$P, state, as.integer(k), as.integer(max_iter), as.double(tol),
              as.double(logdet0))
   mu <- array(r$mu, c(d, k, length(starts)))
   sigma <- array(r$sigma, c(d, d, k, length(starts)))
@@ -334,109 +376,196 @@ gmm_em_batch_c <- function(design, starts, k, max_iter, tol, logdet0) {
   })
 }
 
-# The R version of the batch EM. The starts are columns of
-# one responsibility matrix, so every iteration costs one matrix product for
-# all starts' M-steps and one for their E-steps. Column layout: for k = 2
-# component-major (component j of start a is column (j - 1) * A + a, and only
-# the first component's responsibilities are stored, the second being 1 - z);
-# otherwise start-major (column (a - 1) * k + j). A start leaves the batch
-# when it converges (an iteration raised its log-likelihood by less than
-# `tol`), fails (degenerate component, non-finite log-likelihood) or merges
-# with another.
+# The EM state of each start: the sufficient statistics (crossprod of the
+# monomials with the responsibilities), nm x k per start; for k = 2 only the
+# first component's (the second's are the column sums of P minus them). A
+# start is a partition (labels 1..k) or an n x k matrix of responsibilities.
+gmm_start_state <- function(design, starts, k) {
+  Z <- do.call(cbind, lapply(starts, function(s) if (is.matrix(s)) s else gmm_unmap(s, k)))
+  if (k == 2L) Z <- Z[, seq(1L, 2L * length(starts), by = 2L), drop = FALSE]
+  crossprod(design$P, Z)
+}
+
+# The R version of the batch EM (the compiled one step for step). The starts
+# are columns of one matrix, so every EM evaluation costs one matrix product
+# for all starts' M-steps and one for their E-steps. Columns of the state:
+# start-major blocks of k (for k = 2 one column per start: the first
+# component's statistics). EM is accelerated by SQUAREM (Varadhan & Roland
+# 2008, scheme S3, in the space of the sufficient statistics): each cycle
+# makes two EM steps s0 -> s1 -> s2, each tested as plain EM (a start stops
+# when an EM step raises its log-likelihood by less than `tol`, fails on a
+# degenerate component or a non-finite log-likelihood, or reaches
+# `max_iter` evaluations); then evaluates the parameters of the extrapolated
+# state s0 + 2a r + a^2 v (r = s1 - s0, v = s2 - 2 s1 + s0, a = |r| / |v| in
+# [1, step_max]) and moves one EM step past them if they raise the
+# log-likelihood to at least that of the second step (step_max then grows
+# fourfold when a reached it), to s2 otherwise (step_max shrinks fourfold,
+# not below 1). The log-likelihood never decreases, and a start leaves at an
+# EM step, as plain EM. Every third cycle, starts whose parameters came
+# together merge into the first of them.
 gmm_em_batch_r <- function(design, starts, k, max_iter, tol, logdet0) {
   P <- design$P
-  n <- design$n
+  d <- design$d
   psum <- colSums(P)
-  plogis <- stats::plogis
+  two <- k == 2L
+  kk <- if (two) 1L else k
   n_starts <- length(starts)
+  cols <- function(idx) as.vector(outer(seq_len(kk), (idx - 1L) * kk, "+"))
+  s0 <- gmm_start_state(design, starts, k)
+  s1 <- s2 <- sn <- s0
+  W <- matrix(0, k, n_starts)
+  MU <- array(0, c(d, k, n_starts))
+  SG <- array(0, c(d, d, k, n_starts))
   results <- vector("list", n_starts)
-  active <- seq_len(n_starts)
-  ll <- rep(-Inf, n_starts)
-  Z <- do.call(cbind, lapply(starts, function(lab) gmm_unmap(lab, k)))
-  if (k == 2L) Z <- Z[, seq(1L, 2L * n_starts, by = 2L), drop = FALSE]
-  cols_of <- if (k == 2L) function(a, A) c(a, A + a) else function(a, A) (a - 1L) * k + seq_len(k)
-  it <- 0L
-  while (length(active) > 0L && it < max_iter) {
-    it <- it + 1L
-    A <- length(active)
-    if (k == 2L) {
-      s1 <- crossprod(P, Z)
-      m <- gmm_mstep(cbind(s1, psum - s1, deparse.level = 0), design, logdet0)
-      failed <- m$bad[seq_len(A)] | m$bad[A + seq_len(A)]
+  iters <- integer(n_starts)
+  llv <- rep(-Inf, n_starts)
+  step_max <- rep(1, n_starts)
+  # One EM evaluation of the starts `idx` from their states in `src`: the
+  # log-likelihood of the M-step's parameters, those parameters, the first
+  # degenerate component (0 if none) and the E-step's statistics.
+  em_eval <- function(idx, src) {
+    A <- length(idx)
+    st <- src[, cols(idx), drop = FALSE]
+    # (an extrapolated state may give a component a negative weight: log()
+    # of it is NaN, the component degenerate and the extrapolation rejected)
+    if (two) {
+      m <- suppressWarnings(gmm_mstep(cbind(st, psum - st, deparse.level = 0), design, logdet0))
+      comp <- function(q) c(q, A + q)
+    } else {
+      m <- suppressWarnings(gmm_mstep(st, design, logdet0))
+      comp <- function(q) (q - 1L) * k + seq_len(k)
+    }
+    bad <- vapply(seq_len(A), function(q) {
+      b <- which(m$bad[comp(q)])
+      if (length(b)) b[1] else 0L
+    }, integer(1))
+    ok <- bad == 0L
+    ll <- rep(NA_real_, A)
+    new <- matrix(NA_real_, ncol(P), A * kk)
+    if (two) {
       # With the constants folded into the intercept row, P %*% C1 is the log
-      # of w1 f1 at every point. The first component's responsibility is a
-      # logistic of the difference of the two, and sum(log w1 f1) is a dot
-      # product with the column sums of P: one matrix product per iteration.
+      # of w1 f1 at every point; the first component's responsibility is a
+      # logistic of the difference of the two, and sum(log w1 f1) a dot
+      # product with the column sums of P.
       C <- m$C
       C[1L, ] <- C[1L, ] + m$const
       C1 <- C[, seq_len(A), drop = FALSE]
       C2 <- C[, A + seq_len(A), drop = FALSE]
-      neg <- P %*% (C2 - C1)
-      E <- exp(neg)
-      # (a failed start's coefficients may be NaN: it leaves the batch anyway)
-      if (all(E[, !failed] < Inf)) {
-        # log(w1 f1 + w2 f2) = log(w1 f1) + log1p(w2 f2 / (w1 f1))
-        ll_new <- drop(crossprod(psum, C1)) + .colSums(log1p(E), n, A)
-        Z <- 1 / (1 + E)
-      } else {
-        # the same, safe from overflow (plogis is slower)
-        ll_new <- drop(crossprod(psum, C2)) - .colSums(plogis(neg, log.p = TRUE), n, A)
-        Z <- plogis(neg, lower.tail = FALSE)
+      if (any(ok)) {
+        neg <- P %*% (C2[, ok, drop = FALSE] - C1[, ok, drop = FALSE])
+        E <- exp(neg)
+        if (all(E < Inf)) {
+          # log(w1 f1 + w2 f2) = log(w1 f1) + log1p(w2 f2 / (w1 f1))
+          ll[ok] <- drop(crossprod(psum, C1[, ok, drop = FALSE])) + .colSums(log1p(E), nrow(E), ncol(E))
+          Z <- 1 / (1 + E)
+        } else {
+          # the same, safe from overflow (plogis is slower)
+          ll[ok] <- drop(crossprod(psum, C2[, ok, drop = FALSE])) -
+            .colSums(stats::plogis(neg, log.p = TRUE), nrow(E), ncol(E))
+          Z <- stats::plogis(neg, lower.tail = FALSE)
+        }
+        new[, ok] <- crossprod(P, Z)
       }
     } else {
-      m <- gmm_mstep(crossprod(P, Z), design, logdet0)
-      failed <- .colSums(matrix(m$bad, k), k, A) > 0
-      L <- P %*% m$C + rep(m$const, each = n)
-      ll_new <- numeric(A)
-      for (a in seq_len(A)) {
-        cols <- cols_of(a, A)
-        La <- L[, cols, drop = FALSE]
-        top <- La[cbind(seq_len(n), max.col(La, "first"))]
+      L <- P %*% m$C + rep(m$const, each = design$n)
+      for (q in which(ok)) {
+        La <- L[, comp(q), drop = FALSE]
+        top <- La[cbind(seq_len(design$n), max.col(La, "first"))]
         lse <- top + log(rowSums(exp(La - top)))
-        ll_new[a] <- sum(lse)
-        Z[, cols] <- exp(La - lse)
+        ll[q] <- sum(lse)
+        new[, cols(q)] <- crossprod(P, exp(La - lse))
       }
     }
-    failed <- failed | !is.finite(ll_new)
-    converged <- !failed & (ll_new - ll[active] < tol)
-    ll[active] <- ll_new
-    stop_now <- failed | converged | it == max_iter
-    # Starts whose parameters have come together follow the same path to the
-    # same optimum: keep the first of them only.
-    if (A > 1L && it %% 10L == 0L) {
-      merged <- gmm_merged_starts(m$params, k, A, cols_of) & !stop_now
-      for (a in which(merged)) results[[active[a]]] <- list(failed = "merged", iterations = it)
-      stop_now <- stop_now | merged
+    params <- lapply(seq_len(A), function(q) {
+      j <- comp(q)
+      list(w = m$params$weights[j], mu = m$params$mu[, j, drop = FALSE],
+           sigma = m$params$sigma[, , j, drop = FALSE])
+    })
+    list(ll = ll, bad = bad, new = new, params = params)
+  }
+  keep_params <- function(idx, params) {
+    for (q in seq_along(idx)) {
+      W[, idx[q]] <<- params[[q]]$w
+      MU[, , idx[q]] <<- params[[q]]$mu
+      SG[, , , idx[q]] <<- params[[q]]$sigma
     }
-    for (a in which(stop_now)) {
-      if (!is.null(results[[active[a]]])) next
-      cols <- cols_of(a, A)
-      results[[active[a]]] <- if (failed[a]) {
-        list(failed = gmm_batch_reason(m$bad[cols], ll_new[a]), iterations = it)
+  }
+  active <- seq_len(n_starts)
+  cycle <- 0L
+  while (length(active) > 0L) {
+    cycle <- cycle + 1L
+    for (ph in 1:2) {
+      if (!length(active)) break
+      ev <- em_eval(active, if (ph == 1L) s0 else s1)
+      keep_params(active, ev$params)
+      if (ph == 1L) s1[, cols(active)] <- ev$new else s2[, cols(active)] <- ev$new
+      iters[active] <- iters[active] + 1L
+      failed <- ev$bad > 0L | !is.finite(ev$ll)
+      conv <- !failed & (ev$ll - llv[active] < tol)
+      llv[active] <- ev$ll
+      stop_now <- failed | conv | iters[active] >= max_iter
+      for (q in which(stop_now)) {
+        a <- active[q]
+        results[[a]] <- if (failed[q]) {
+          list(failed = gmm_batch_reason(seq_len(k) == ev$bad[q], ev$ll[q]), iterations = iters[a])
+        } else {
+          list(loglik = ev$ll[q], iterations = iters[a], converged = conv[q], weights = W[, a],
+               mu = matrix(MU[, , a], d, k), sigma = array(SG[, , , a], c(d, d, k)))
+        }
+      }
+      active <- active[!stop_now]
+    }
+    if (length(active) > 1L && cycle %% 3L == 0L) {
+      merged <- gmm_merged_starts(W, MU, SG, active)
+      for (a in active[merged]) results[[a]] <- list(failed = "merged", iterations = iters[a])
+      active <- active[!merged]
+    }
+    near_cap <- iters[active] + 1L >= max_iter
+    for (a in active[near_cap]) s0[, cols(a)] <- s2[, cols(a)]
+    ext <- active[!near_cap]
+    if (!length(ext)) next
+    alpha <- numeric(length(ext))
+    for (q in seq_along(ext)) {
+      j <- cols(ext[q])
+      r <- s1[, j] - s0[, j]
+      v <- s2[, j] - 2 * s1[, j] + s0[, j]
+      sv2 <- sum(v^2)
+      a <- if (sv2 > 0) sqrt(sum(r^2) / sv2) else 1
+      if (!(a >= 1)) a <- 1
+      alpha[q] <- min(a, step_max[ext[q]])
+      sn[, j] <- s0[, j] + 2 * alpha[q] * r + alpha[q]^2 * v
+    }
+    ev <- em_eval(ext, sn)
+    iters[ext] <- iters[ext] + 1L
+    at_max <- alpha == step_max[ext]
+    accept <- ev$bad == 0L & is.finite(ev$ll) & ev$ll >= llv[ext]
+    for (q in seq_along(ext)) {
+      a <- ext[q]
+      j <- cols(a)
+      if (isTRUE(accept[q])) {
+        s0[, j] <- ev$new[, (q - 1L) * kk + seq_len(kk)]
+        llv[a] <- ev$ll[q]
+        if (at_max[q]) step_max[a] <- 4 * step_max[a]
       } else {
-        list(loglik = ll_new[a], iterations = it, converged = converged[a],
-             weights = m$params$weights[cols], mu = m$params$mu[, cols, drop = FALSE],
-             sigma = m$params$sigma[, , cols, drop = FALSE])
+        s0[, j] <- s2[, j]
+        if (at_max[q] && step_max[a] > 1) step_max[a] <- max(1, step_max[a] / 4)
       }
-    }
-    if (any(stop_now)) {
-      keep <- !stop_now
-      active <- active[keep]
-      Z <- Z[, if (k == 2L) keep else rep(keep, each = k), drop = FALSE]
     }
   }
   results
 }
 
-# Which starts sit within 1e-2 (standardised units) of an earlier start's
-# weights, means and covariances, components matched by their order along the
-# first coordinate.
-gmm_merged_starts <- function(params, k, A, cols_of) {
-  sig <- do.call(rbind, lapply(seq_len(A), function(a) {
-    cols <- cols_of(a, A)
-    o <- cols[order(params$mu[1, cols])]
-    c(params$weights[o], params$mu[, o], params$sigma[, , o])
+# Which of the starts `idx` sit within 1e-2 (standardised units) of an
+# earlier one's weights, means and covariances, components matched by their
+# order along the first mean coordinate.
+gmm_merged_starts <- function(W, MU, SG, idx) {
+  d <- dim(MU)[1]
+  k <- dim(MU)[2]
+  sig <- do.call(rbind, lapply(idx, function(a) {
+    o <- order(MU[1, , a])
+    c(W[o, a], matrix(MU[, , a], d, k)[, o], array(SG[, , , a], c(d, d, k))[, , o])
   }))
+  A <- length(idx)
   merged <- logical(A)
   for (b in seq_len(A)[-1]) {
     for (a in seq_len(b - 1L)) {

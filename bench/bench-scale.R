@@ -3,8 +3,9 @@
 # and classified in-sample (FPCA distance), beside the default data
 # (30 subjects) so that every figure comes with its 10x / 1x ratio (linear
 # cost: 10). Targets on the 2-core machine: fit 30 s or less, main-process
-# peak memory 4 GB or less. Also the EM iterations per mixture (the fast
-# engine's stopping rule is per observation, so they should not grow).
+# peak memory 4 GB or less. Also the EM iterations per mixture (SQUAREM-
+# accelerated, the stopping rule per observation, and above 1000 points the
+# starts race on a subsample: they grow far slower than the data).
 # Peak memory is the kernel's high-water mark of resident memory (VmHWM),
 # reset before each step (/proc/<pid>/clear_refs), for the main process and
 # for each worker.

@@ -1,34 +1,42 @@
 /* Compiled EM for the fast Gaussian-mixture engine (R/gmm.R), for d = 1 and
  * d = 2 (the thesis' warp scores and FPC score pairs).
  *
- * It reproduces the R implementation gmm_em_batch_r() step for step, so the
- * two give the same fits (log-likelihoods equal to rounding): the same
- * monomial design (1, y_a, y_a y_b), the same M-step formulas from the
+ * It reproduces the R implementation gmm_em_batch_r() step for step: the
+ * same monomial design (1, y_a, y_a y_b), the same M-step formulas from the
  * sufficient statistics, the same E-step (for k = 2 the log-likelihood as
  * psum . C1 + sum log1p(exp(neg)), with R's plogis formulation when exp
- * overflows in any running start; otherwise a log-sum-exp), the same
- * stopping rule (an iteration raising the log-likelihood by less than tol;
- * gmm_em_fast() passes n times its per-observation tolerance),
- * the same failure tests (weight below 1/n, covariance determinant below the
- * floor, non-finite log-likelihood) and the same merging of starts that have
- * come together (checked every 10 iterations). The starts run in lock step,
- * as the columns of the R version's matrices do, because the overflow switch
- * and the merge test look at all running starts at once.
+ * overflows in any start of the evaluation; otherwise a log-sum-exp), the
+ * same SQUAREM acceleration (Varadhan & Roland 2008, scheme S3, on the
+ * sufficient statistics: two EM steps, an extrapolated state kept only when
+ * its log-likelihood reaches the second step's, so the log-likelihood never
+ * decreases), the same stopping rule (an EM step raising the log-likelihood
+ * by less than tol; gmm_em_fast() passes n times its per-observation
+ * tolerance), the same failure tests (weight below 1/n, covariance
+ * determinant below the floor, non-finite log-likelihood) and the same
+ * merging of starts that have come together (checked every third cycle).
+ * The starts run in lock step, cycle by cycle, as the columns of the R
+ * version's matrices do, because the overflow switch and the merge test
+ * look at all running starts at once.
  *
- * What differs is rounding only, for speed: the k = 2 E-step is one pass
- * over the points fused with the next M-step's sums; sum log1p(exp(neg)) is
- * the log of a running product. Plain C with libm's exp(): log-likelihoods
- * agree with the R version to about 1e-11 (tests/testthat/test-gmm.R).
- * Sums over points are plain double sums in point order.
+ * What differs is rounding only, for speed: the E-step is one pass over the
+ * points fused with the next M-step's sums; for k = 2 sum log1p(exp(neg)) is
+ * the log of a running product. Plain C with libm's exp(). An EM step agrees
+ * with the R version to about 1e-11; SQUAREM's step length divides by a
+ * second difference that near the optimum is mostly rounding, so on a
+ * crawling cloud the two may stop some iterations apart
+ * (tests/testthat/test-gmm.R). Sums over points are plain double sums in
+ * point order.
  *
  * Entry points:
- *   hm_gmm_em(P, labels, k, max_iter, tol, logdet0)
+ *   hm_gmm_em(P, state, k, max_iter, tol, logdet0)
  *     P: n x nm monomials of the standardised data (nm = 3 for d = 1, 6 for
- *     d = 2); labels: n x S integer starting partitions (1..k).
+ *     d = 2); state: the starting sufficient statistics, nm rows and, per
+ *     start, one column (k = 2: the first component's) or k columns.
  *     Returns list(status, iterations, converged, loglik, bad, weights, mu,
  *     sigma): status 0 = stopped with parameters (converged or at max_iter),
  *     1 = failed (bad = first degenerate component, 0 = non-finite
- *     log-likelihood), 2 = merged into an earlier start.
+ *     log-likelihood), 2 = merged into an earlier start; iterations count
+ *     EM evaluations (E-steps), extrapolations included.
  *   hm_gmm_kmeans(Y, centres, iters)
  *     Lloyd iterations as gmm_kmeans() in R, for a list of starting centre
  *     matrices; returns an n x S integer matrix of labels.
@@ -192,55 +200,211 @@ static double estep2_plogis(const double *Pt, int n, int nm, const double *D) {
   return (double) acc;
 }
 
-SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP logdet0_) {
+/* What one EM evaluation needs: the data (point-major monomials and their
+ * column sums), the sizes, the determinant floor and scratch space. */
+typedef struct {
+  int n, nm, d, k, two, ns;
+  const double *Pt, *psum;
+  double floor_logdet;
+  double *stats, *C, *cn, *Dc, *zk; /* scratch: nm*k, nm*k*S, k*S, nm*S, k */
+  int *inf_hit;                     /* S */
+} em_ctx;
+
+/* The M-step of one start from its state `st` (ns values: for k = 2 the
+ * first component's sufficient statistics, the second's being psum minus
+ * them; otherwise every component's, component after component): the
+ * log-density coefficients into C/cn at the start's slots, the parameters
+ * into w/mu/sig. Returns the first degenerate component (1-based), 0 if
+ * none. */
+static int mstep_start(const em_ctx *c, int a, const double *st, double *w, double *mu,
+                       double *sig) {
+  const int nm = c->nm, k = c->k, d = c->d;
+  if (c->two) {
+    for (int m = 0; m < nm; m++) {
+      c->stats[m] = st[m];
+      c->stats[nm + m] = c->psum[m] - st[m];
+    }
+  } else {
+    for (int q = 0; q < nm * k; q++) c->stats[q] = st[q];
+  }
+  int bad = 0;
+  for (int j = 0; j < k; j++) {
+    int b = mstep_one(d, c->stats + (size_t) j * nm, c->n, c->floor_logdet,
+                      c->C + ((size_t) a * k + j) * nm, c->cn + (size_t) a * k + j,
+                      w + (size_t) a * k + j, mu + ((size_t) a * k + j) * d,
+                      sig + ((size_t) a * k + j) * d * d);
+    if (b && !bad) bad = j + 1;
+  }
+  return bad;
+}
+
+/* E-step of one start for k != 2: per point the k log-densities, their
+ * log-sum-exp (the point's log-likelihood) and the responsibilities,
+ * accumulated at once into the next statistics `out` (nm * k). */
+static double estep_k(const em_ctx *c, int a, double *out) {
+  const int n = c->n, nm = c->nm, k = c->k;
+  const double *Ca = c->C + (size_t) a * k * nm, *cna = c->cn + (size_t) a * k;
+  double *v = c->zk;
+  for (int q = 0; q < nm * k; q++) out[q] = 0.0;
+  double tot = 0.0;
+  for (int i = 0; i < n; i++) {
+    const double *pi = c->Pt + (size_t) i * nm;
+    double top = R_NegInf;
+    for (int j = 0; j < k; j++) {
+      double s = 0.0;
+      for (int m = 0; m < nm; m++) s += pi[m] * Ca[(size_t) j * nm + m];
+      v[j] = s + cna[j];
+      if (j == 0 || v[j] > top) top = v[j];
+    }
+    double se = 0.0;
+    for (int j = 0; j < k; j++) se += exp(v[j] - top);
+    double lse = top + log(se);
+    tot += lse;
+    for (int j = 0; j < k; j++) {
+      double z = exp(v[j] - lse);
+      for (int m = 0; m < nm; m++) out[(size_t) j * nm + m] += pi[m] * z;
+    }
+  }
+  return tot;
+}
+
+/* One EM evaluation of the starts idx[0..cnt-1]: the M-step from their
+ * states in `src`, the log-likelihood of its parameters into ll[a], the
+ * E-step's statistics (the next state) into `dst`, the first degenerate
+ * component into bad[a] (a degenerate start gets no E-step, ll NA). For
+ * k = 2, as the R version, every start of the evaluation takes the
+ * overflow-safe form of the log-likelihood when exp() overflowed in any. */
+static void em_eval(const em_ctx *c, const int *idx, int cnt, const double *src, double *dst,
+                    double *ll, int *bad, double *w, double *mu, double *sig) {
+  const int nm = c->nm, k = c->k, ns = c->ns;
+  int overflow = 0;
+  for (int q = 0; q < cnt; q++) {
+    int a = idx[q];
+    bad[a] = mstep_start(c, a, src + (size_t) a * ns, w, mu, sig);
+    if (bad[a]) {
+      ll[a] = NA_REAL;
+      continue;
+    }
+    if (c->two) {
+      double *Ca = c->C + (size_t) a * k * nm;
+      Ca[0] += c->cn[(size_t) a * k]; /* constants folded into the intercept */
+      Ca[nm] += c->cn[(size_t) a * k + 1];
+      double *D = c->Dc + (size_t) nm * a;
+      for (int m = 0; m < nm; m++) D[m] = Ca[nm + m] - Ca[m];
+      double lin = 0.0;
+      for (int m = 0; m < nm; m++) lin += c->psum[m] * Ca[m];
+      ll[a] = lin + estep2_any(c->Pt, c->n, nm, D, dst + (size_t) a * ns, c->inf_hit + a);
+      if (c->inf_hit[a]) overflow = 1;
+    } else {
+      ll[a] = estep_k(c, a, dst + (size_t) a * ns);
+    }
+  }
+  if (overflow) {
+    for (int q = 0; q < cnt; q++) {
+      int a = idx[q];
+      if (bad[a]) continue;
+      const double *Ca = c->C + (size_t) a * k * nm;
+      double lin = 0.0;
+      for (int m = 0; m < nm; m++) lin += c->psum[m] * Ca[nm + m];
+      ll[a] = lin + estep2_plogis(c->Pt, c->n, nm, c->Dc + (size_t) nm * a);
+    }
+  }
+}
+
+/* The SQUAREM step length (Varadhan & Roland 2008, scheme S3) of one start
+ * from its state s0 and two EM steps s1 = F(s0), s2 = F(s1):
+ * alpha = |r| / |v| with r = s1 - s0, v = s2 - 2 s1 + s0, clamped to
+ * [1, step_max]; the extrapolated state s0 + 2 alpha r + alpha^2 v goes into
+ * `out` (alpha = 1 gives s2). */
+static double squarem_extrapolate(int ns, const double *s0, const double *s1, const double *s2,
+                                  double step_max, double *out) {
+  double sr2 = 0.0, sv2 = 0.0;
+  for (int q = 0; q < ns; q++) {
+    double r = s1[q] - s0[q], v = s2[q] - 2.0 * s1[q] + s0[q];
+    sr2 += r * r;
+    sv2 += v * v;
+  }
+  double alpha = sv2 > 0.0 ? sqrt(sr2 / sv2) : 1.0;
+  if (!(alpha >= 1.0)) alpha = 1.0;
+  if (alpha > step_max) alpha = step_max;
+  for (int q = 0; q < ns; q++) {
+    double r = s1[q] - s0[q], v = s2[q] - 2.0 * s1[q] + s0[q];
+    out[q] = s0[q] + 2.0 * alpha * r + alpha * alpha * v;
+  }
+  return alpha;
+}
+
+SEXP hm_gmm_em(SEXP P_, SEXP state_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP logdet0_) {
   if (!isReal(P_) || !isMatrix(P_)) error("'P' must be a double matrix");
-  if (!isInteger(labels_) || !isMatrix(labels_)) error("'labels' must be an integer matrix");
-  const int n = nrows(P_), nm = ncols(P_), S = ncols(labels_);
+  if (!isReal(state_) || !isMatrix(state_)) error("'state' must be a double matrix");
+  const int n = nrows(P_), nm = ncols(P_);
   const int k = asInteger(k_), max_iter = asInteger(max_iter_);
   const double tol = asReal(tol_), logdet0 = asReal(logdet0_);
   int d;
   if (nm == 3) d = 1;
   else if (nm == 6) d = 2;
   else error("the compiled EM handles d = 1 and d = 2 only (got %d monomials)", nm);
-  if (nrows(labels_) != n) error("'labels' must have one row per point");
-  if (k < 1 || S < 1 || max_iter < 1) error("'k', the number of starts and 'max_iter' must be positive");
+  if (n < 1 || k < 1 || k == NA_INTEGER || max_iter < 1 || max_iter == NA_INTEGER)
+    error("'P', 'k' and 'max_iter' must be positive");
+  if (ISNAN(tol) || ISNAN(logdet0)) error("'tol' and 'logdet0' must be numbers");
   const double *P = REAL(P_);
-  const int *lab = INTEGER(labels_);
-  const double floor_logdet = logdet0 + log(1e-8); /* gmm_det_floor */
   const int two = (k == 2);
+  const int ns = nm * (two ? 1 : k); /* state values per start */
+  if (nrows(state_) != nm || ncols(state_) < 1 || ncols(state_) % (two ? 1 : k) != 0)
+    error("'state' must have %d rows and %d column%s per start", nm, two ? 1 : k,
+          two ? "" : "s");
+  const int S = ncols(state_) / (two ? 1 : k);
+  const double *st0 = REAL(state_);
+  for (R_xlen_t q = 0; q < XLENGTH(state_); q++)
+    if (!R_FINITE(st0[q])) error("'state' must be finite");
 
-  /* column sums of the monomials */
+  em_ctx c;
+  c.n = n;
+  c.nm = nm;
+  c.d = d;
+  c.k = k;
+  c.two = two;
+  c.ns = ns;
+  c.floor_logdet = logdet0 + log(1e-8); /* gmm_det_floor */
   double *psum = (double *) R_alloc(nm, sizeof(double));
   for (int m = 0; m < nm; m++) {
     double acc = 0;
     for (int i = 0; i < n; i++) acc += P[(size_t) m * n + i];
-    psum[m] = (double) acc;
+    psum[m] = acc;
   }
-
-  /* k = 2 keeps per start only the first component's statistics (the
-   * second's are psum minus them) and the E-step's log-ratio coefficients;
-   * other k keep the responsibilities */
+  c.psum = psum;
   double *Pt = (double *) R_alloc((size_t) n * nm, sizeof(double)); /* point-major P */
   for (int i = 0; i < n; i++)
     for (int m = 0; m < nm; m++) Pt[(size_t) i * nm + m] = P[(size_t) m * n + i];
-  double *Z = two ? NULL : (double *) R_alloc((size_t) n * k * S, sizeof(double));
-  double *S1 = (double *) R_alloc((size_t) nm * S, sizeof(double));
-  double *Dc = (double *) R_alloc((size_t) nm * S, sizeof(double));
-  int *inf_hit = (int *) R_alloc(S, sizeof(int));
-  double *Lw = (double *) R_alloc((size_t) n * k, sizeof(double)); /* general k */
-  double *stats = (double *) R_alloc((size_t) nm * k, sizeof(double));
-  double *C = (double *) R_alloc((size_t) nm * k * S, sizeof(double));
-  double *cn = (double *) R_alloc((size_t) k * S, sizeof(double));
-  int *bad = (int *) R_alloc((size_t) k * S, sizeof(int));
-  double *llv = (double *) R_alloc(S, sizeof(double));
-  double *ll_new = (double *) R_alloc(S, sizeof(double));
-  int *failed = (int *) R_alloc(S, sizeof(int));
-  int *stop_now = (int *) R_alloc(S, sizeof(int));
-  int *conv_now = (int *) R_alloc(S, sizeof(int));
+  c.Pt = Pt;
+  c.stats = (double *) R_alloc((size_t) nm * k, sizeof(double));
+  c.C = (double *) R_alloc((size_t) nm * k * S, sizeof(double));
+  c.cn = (double *) R_alloc((size_t) k * S, sizeof(double));
+  c.Dc = (double *) R_alloc((size_t) nm * S, sizeof(double));
+  c.zk = (double *) R_alloc(k, sizeof(double));
+  c.inf_hit = (int *) R_alloc(S, sizeof(int));
+
+  /* states: s0 (the cycle's start), s1, s2 (after one and two EM steps), sx
+   * (extrapolated), sn (one EM step from sx) */
+  double *s0 = (double *) R_alloc((size_t) ns * S, sizeof(double));
+  double *s1 = (double *) R_alloc((size_t) ns * S, sizeof(double));
+  double *s2 = (double *) R_alloc((size_t) ns * S, sizeof(double));
+  double *sx = (double *) R_alloc((size_t) ns * S, sizeof(double));
+  double *sn = (double *) R_alloc((size_t) ns * S, sizeof(double));
+  /* the extrapolated parameters stay out of the output slots */
+  double *wx = (double *) R_alloc((size_t) k * S, sizeof(double));
+  double *mux = (double *) R_alloc((size_t) d * k * S, sizeof(double));
+  double *sgx = (double *) R_alloc((size_t) d * d * k * S, sizeof(double));
+  double *llv = (double *) R_alloc(S, sizeof(double));  /* log-lik of the last EM step */
+  double *lle = (double *) R_alloc(S, sizeof(double));  /* of an evaluation */
+  double *step_max = (double *) R_alloc(S, sizeof(double));
+  double *alpha = (double *) R_alloc(S, sizeof(double));
+  int *bad = (int *) R_alloc(S, sizeof(int));
+  int *act = (int *) R_alloc(S, sizeof(int));
+  int *ext = (int *) R_alloc(S, sizeof(int));
+  int *merged = (int *) R_alloc(S, sizeof(int));
   int *oa = (int *) R_alloc(k, sizeof(int));
   int *ob = (int *) R_alloc(k, sizeof(int));
-  int *merged = (int *) R_alloc(S, sizeof(int));
-  int *act = (int *) R_alloc(S, sizeof(int));
 
   SEXP status = PROTECT(allocVector(INTSXP, S));
   SEXP iters = PROTECT(allocVector(INTSXP, S));
@@ -253,6 +417,7 @@ SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP l
   int *pst = INTEGER(status), *pit = INTEGER(iters), *pcv = LOGICAL(conv), *pbad = INTEGER(badc);
   double *pll = REAL(loglik), *pw = REAL(W), *pmu = REAL(MU), *psg = REAL(SG);
 
+  /* the starting states, as given */
   for (int a = 0; a < S; a++) {
     pst[a] = ST_RUNNING;
     pit[a] = 0;
@@ -260,137 +425,47 @@ SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP l
     pll[a] = NA_REAL;
     pbad[a] = NA_INTEGER;
     llv[a] = R_NegInf;
+    step_max[a] = 1.0;
     act[a] = a;
-    for (int i = 0; i < n; i++) {
-      int l = lab[(size_t) a * n + i];
-      if (l < 1 || l > k) error("start %d has label %d outside 1..%d", a + 1, l, k);
-    }
-    if (two) {
-      double *s1 = S1 + (size_t) nm * a;
-      for (int m = 0; m < nm; m++) {
-        double acc = 0.0;
-        for (int i = 0; i < n; i++)
-          acc += P[(size_t) m * n + i] * (lab[(size_t) a * n + i] == 1 ? 1.0 : 0.0);
-        s1[m] = acc;
-      }
-    } else {
-      double *za = Z + (size_t) n * k * a;
-      for (int i = 0; i < n; i++)
-        for (int j = 0; j < k; j++)
-          za[(size_t) j * n + i] = (lab[(size_t) a * n + i] == j + 1) ? 1.0 : 0.0;
-    }
+    for (int q = 0; q < ns; q++) s0[(size_t) a * ns + q] = st0[(size_t) a * ns + q];
   }
 
-  int A = S, it = 0;
-  while (A > 0 && it < max_iter) {
-    it++;
-    if (it % 64 == 0) R_CheckUserInterrupt();
-    /* M-step of every running start; its parameters go straight into the
-     * output slots (a start's slots are final once it stops) */
-    for (int q = 0; q < A; q++) {
-      int a = act[q];
-      if (two) {
-        const double *s1 = S1 + (size_t) nm * a;
-        for (int m = 0; m < nm; m++) {
-          stats[m] = s1[m];
-          stats[nm + m] = psum[m] - s1[m];
-        }
-      } else {
-        const double *za = Z + (size_t) n * k * a;
-        for (int j = 0; j < k; j++)
-          for (int m = 0; m < nm; m++) {
-            const double *pm = P + (size_t) m * n;
-            const double *zj = za + (size_t) j * n;
-            double acc = 0.0;
-            for (int i = 0; i < n; i++) acc += pm[i] * zj[i];
-            stats[(size_t) j * nm + m] = acc;
-          }
-      }
-      failed[q] = 0;
-      for (int j = 0; j < k; j++) {
-        int b = mstep_one(d, stats + (size_t) j * nm, n, floor_logdet,
-                          C + ((size_t) a * k + j) * nm, cn + (size_t) a * k + j,
-                          pw + (size_t) a * k + j, pmu + ((size_t) a * k + j) * d,
-                          psg + ((size_t) a * k + j) * d * d);
-        bad[(size_t) a * k + j] = b;
-        if (b) failed[q] = 1;
-      }
-    }
-
-    /* E-step */
-    if (two) {
-      int overflow = 0;
-      for (int q = 0; q < A; q++) {
-        if (failed[q]) { /* leaves the batch: no E-step */
-          ll_new[q] = NA_REAL;
-          continue;
-        }
-        int a = act[q];
-        double *Ca = C + (size_t) a * k * nm;
-        Ca[0] += cn[(size_t) a * k];         /* constants folded into the intercept */
-        Ca[nm] += cn[(size_t) a * k + 1];
-        double *D = Dc + (size_t) nm * a;
-        for (int m = 0; m < nm; m++) D[m] = Ca[nm + m] - Ca[m];
-        double lin = 0.0;
-        for (int m = 0; m < nm; m++) lin += psum[m] * Ca[m];
-        double *s1 = S1 + (size_t) nm * a;
-        double lse = estep2_any(Pt, n, nm, D, s1, inf_hit + q);
-        ll_new[q] = lin + lse;
-        if (inf_hit[q]) overflow = 1;
-      }
-      /* the R version switches every start to the overflow-safe form when
-       * exp() overflowed in any of them (the responsibilities agree) */
-      if (overflow) {
-        for (int q = 0; q < A; q++) {
-          if (failed[q]) continue;
-          int a = act[q];
-          const double *Ca = C + (size_t) a * k * nm;
-          double lin = 0.0;
-          for (int m = 0; m < nm; m++) lin += psum[m] * Ca[nm + m];
-          ll_new[q] = lin + estep2_plogis(Pt, n, nm, Dc + (size_t) nm * a);
-        }
-      }
-    } else {
+  /* SQUAREM cycles: two EM steps s0 -> s1 -> s2, each tested for
+   * convergence, failure and the cap as plain EM; then the extrapolated
+   * state's parameters are evaluated and the state moves one EM step past
+   * them if they raise the log-likelihood to at least the second step's,
+   * and to s2 otherwise (so the log-likelihood never decreases). Every
+   * evaluation counts as an iteration. */
+  int A = S, cycle = 0;
+  while (A > 0) {
+    cycle++;
+    R_CheckUserInterrupt();
+    for (int ph = 0; ph < 2 && A > 0; ph++) {
+      em_eval(&c, act, A, ph == 0 ? s0 : s1, ph == 0 ? s1 : s2, lle, bad, pw, pmu, psg);
+      int B = 0;
       for (int q = 0; q < A; q++) {
         int a = act[q];
-        const double *Ca = C + (size_t) a * k * nm;
-        double *za = Z + (size_t) n * k * a;
-        for (int j = 0; j < k; j++) {
-          const double *Cj = Ca + (size_t) j * nm;
-          double cj = cn[(size_t) a * k + j];
-          double *lj = Lw + (size_t) j * n;
-          for (int i = 0; i < n; i++) {
-            double v = 0.0;
-            for (int m = 0; m < nm; m++) v += P[(size_t) m * n + i] * Cj[m];
-            lj[i] = v + cj;
-          }
+        pit[a]++;
+        int failed = bad[a] || !R_FINITE(lle[a]);
+        int conv_now = !failed && (lle[a] - llv[a] < tol);
+        llv[a] = lle[a];
+        if (failed) {
+          pst[a] = ST_FAILED;
+          pbad[a] = bad[a];
+        } else if (conv_now || pit[a] >= max_iter) {
+          pst[a] = ST_DONE;
+          pll[a] = lle[a];
+          pcv[a] = conv_now;
+        } else {
+          act[B++] = a;
         }
-        double tot = 0;
-        for (int i = 0; i < n; i++) {
-          double top = Lw[i];
-          for (int j = 1; j < k; j++)
-            if (Lw[(size_t) j * n + i] > top) top = Lw[(size_t) j * n + i];
-          double se = 0;
-          for (int j = 0; j < k; j++) se += exp(Lw[(size_t) j * n + i] - top);
-          double lse = top + log((double) se);
-          tot += lse;
-          for (int j = 0; j < k; j++) za[(size_t) j * n + i] = exp(Lw[(size_t) j * n + i] - lse);
-        }
-        ll_new[q] = (double) tot;
       }
+      A = B;
     }
-
-    /* convergence, failure, merging, as gmm_em_batch_r() */
-    int any_stop = 0;
-    for (int q = 0; q < A; q++) {
-      int a = act[q];
-      failed[q] = failed[q] || !R_FINITE(ll_new[q]);
-      conv_now[q] = !failed[q] && (ll_new[q] - llv[a] < tol);
-      llv[a] = ll_new[q];
-      stop_now[q] = failed[q] || conv_now[q] || it == max_iter;
-      merged[q] = 0;
-    }
-    if (A > 1 && it % 10 == 0) {
+    /* starts whose parameters have come together follow the same path to
+     * the same optimum: keep the first of them only */
+    if (A > 1 && cycle % 3 == 0) {
+      for (int q = 0; q < A; q++) merged[q] = 0;
       for (int qb = 1; qb < A; qb++) {
         int b = act[qb];
         for (int qa = 0; qa < qb; qa++) {
@@ -404,37 +479,39 @@ SEXP hm_gmm_em(SEXP P_, SEXP labels_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP l
           }
         }
       }
-      for (int q = 0; q < A; q++) {
-        merged[q] = merged[q] && !stop_now[q];
-        if (merged[q]) {
-          pst[act[q]] = ST_MERGED;
-          pit[act[q]] = it;
-          stop_now[q] = 1;
-        }
-      }
-    }
-    for (int q = 0; q < A; q++) {
-      if (!stop_now[q]) continue;
-      any_stop = 1;
-      int a = act[q];
-      if (pst[a] != ST_RUNNING) continue;
-      pit[a] = it;
-      if (failed[q]) {
-        pst[a] = ST_FAILED;
-        pbad[a] = 0;
-        for (int j = 0; j < k; j++)
-          if (bad[(size_t) a * k + j]) { pbad[a] = j + 1; break; }
-      } else {
-        pst[a] = ST_DONE;
-        pll[a] = ll_new[q];
-        pcv[a] = conv_now[q];
-      }
-    }
-    if (any_stop) {
       int B = 0;
-      for (int q = 0; q < A; q++)
-        if (!stop_now[q]) act[B++] = act[q];
+      for (int q = 0; q < A; q++) {
+        if (merged[q]) pst[act[q]] = ST_MERGED;
+        else act[B++] = act[q];
+      }
       A = B;
+    }
+    /* the extrapolation; a start one evaluation from the cap takes s2 */
+    int E = 0;
+    for (int q = 0; q < A; q++) {
+      int a = act[q];
+      size_t o = (size_t) a * ns;
+      if (pit[a] + 1 >= max_iter) {
+        for (int v = 0; v < ns; v++) s0[o + v] = s2[o + v];
+        continue;
+      }
+      alpha[a] = squarem_extrapolate(ns, s0 + o, s1 + o, s2 + o, step_max[a], sx + o);
+      ext[E++] = a;
+    }
+    em_eval(&c, ext, E, sx, sn, lle, bad, wx, mux, sgx);
+    for (int q = 0; q < E; q++) {
+      int a = ext[q];
+      size_t o = (size_t) a * ns;
+      pit[a]++;
+      int at_max = alpha[a] == step_max[a];
+      if (!bad[a] && R_FINITE(lle[a]) && lle[a] >= llv[a]) {
+        for (int v = 0; v < ns; v++) s0[o + v] = sn[o + v];
+        llv[a] = lle[a];
+        if (at_max) step_max[a] *= 4.0;
+      } else {
+        for (int v = 0; v < ns; v++) s0[o + v] = s2[o + v];
+        if (at_max && step_max[a] > 1.0) step_max[a] = fmax(1.0, step_max[a] / 4.0);
+      }
     }
   }
 

@@ -11,7 +11,7 @@ SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k, SEXP ridge, SEXP
 SEXP hm_generate_batch(SEXP n, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP comps,
                        SEXP warp_mean, SEXP warp_comps, SEXP do_warp, SEXP dofs, SEXP alpha_in,
                        SEXP beta_in, SEXP lim_lo, SEXP lim_hi, SEXP margin); /* generate-kernel.c */
-SEXP hm_gmm_em(SEXP P, SEXP labels, SEXP k, SEXP max_iter, SEXP tol, SEXP logdet0); /* gmm-em.c */
+SEXP hm_gmm_em(SEXP P, SEXP state, SEXP k, SEXP max_iter, SEXP tol, SEXP logdet0); /* gmm-em.c */
 SEXP hm_gmm_kmeans(SEXP Y, SEXP centres, SEXP iters); /* gmm-em.c */
 SEXP hm_shape_features(SEXP recs, SEXP k); /* dba-prep.c */
 SEXP hm_linear_mean(SEXP recs, SEXP warps, SEXP which); /* dba-prep.c */

@@ -204,7 +204,7 @@ test_that("print reports the fit and any fallback", {
 # ---- the compiled EM (src/gmm-em.c) against the R implementation -----------
 
 # Every start's outcome from both batch implementations on the same design.
-em_both <- function(X, k, max_iter = 500L, tol = 1e-8) {
+em_both <- function(X, k, max_iter = 2000L, tol = 1e-8) {
   X <- as.matrix(X)
   n <- nrow(X)
   Y <- scale(X, scale = sqrt(colSums(scale(X, scale = FALSE)^2) / n))
@@ -222,14 +222,16 @@ expect_same_runs <- function(runs) {
     rc <- runs$c[[a]]
     rr <- runs$r[[a]]
     expect_identical(rc$failed, rr$failed)
-    # the stopping iteration may move by one when the last increase sits
-    # within rounding of tol
-    expect_lte(abs(rc$iterations - rr$iterations), 1)
+    # The EM steps agree to rounding, but SQUAREM's step length |r| / |v|
+    # divides by a second difference that near the optimum is mostly
+    # rounding: on a crawling cloud the two may stop (or merge) some
+    # iterations apart, both at the tolerance's distance from the optimum.
+    expect_lte(abs(rc$iterations - rr$iterations), max(1, 0.1 * rr$iterations))
     if (is.null(rr$failed)) {
       expect_equal(rc$loglik, rr$loglik, tolerance = 1e-8)
-      expect_equal(rc$weights, rr$weights, tolerance = 1e-6)
-      expect_equal(rc$mu, rr$mu, tolerance = 1e-6)
-      expect_equal(rc$sigma, rr$sigma, tolerance = 1e-6)
+      expect_equal(rc$weights, rr$weights, tolerance = 1e-4)
+      expect_equal(rc$mu, rr$mu, tolerance = 1e-4)
+      expect_equal(rc$sigma, rr$sigma, tolerance = 1e-4)
     }
   }
 }
@@ -293,17 +295,25 @@ test_that("compiled k-means gives the R version's labels", {
   expect_identical(gmm_kmeans_all(y, list(y[1:2, , drop = FALSE])), list(gmm_kmeans(y, y[1:2, , drop = FALSE])))
 })
 
-test_that("a slowly converging mixture needs more than 500 iterations, not a fallback", {
-  # two strongly overlapping components: EM crawls
+test_that("a slowly converging mixture: SQUAREM reaches the optimum plain EM crawls towards", {
+  # two strongly overlapping components: plain EM crawls (it had not met the
+  # rule after 500 iterations; mixtools' EM takes thousands), the
+  # accelerated EM converges in a few hundred evaluations, cut short it is a
+  # recorded fallback
   X <- withr::with_seed(6, rbind(matrix(rnorm(300), ncol = 2),
                                  matrix(rnorm(200, mean = 1), ncol = 2) %*% matrix(c(1, 0.5, 0, 1), 2)))
-  capped <- gmm_fit(X)
+  capped <- gmm_fit(X, max_iter = 20)
   expect_true(capped$fallback)
-  expect_match(capped$reason, "did not converge within 500")
-  fit <- gmm_fit(X, max_iter = 5000)
+  expect_match(capped$reason, "did not converge within 20")
+  fit <- gmm_fit(X)
   expect_false(fit$fallback)
-  expect_gt(fit$iterations, 500)
+  expect_gt(fit$iterations, 20)
+  expect_lt(fit$iterations, 500)
   expect_gt(fit$loglik, capped$loglik)
+  ref <- gmm_fit(X, engine = "reference", seed = 1, max_iter = 20000)
+  expect_false(ref$fallback)
+  expect_gt(ref$iterations, 1000)
+  expect_gte(fit$loglik, ref$loglik - 1e-3)
 })
 
 test_that("the fast engine's stopping rule is per observation: ten copies of the data, the same fit", {
@@ -311,6 +321,8 @@ test_that("the fast engine's stopping rule is per observation: ten copies of the
   # step unchanged and multiply the log-likelihood by ten; a rule on the mean
   # log-likelihood stops at the same iteration (an absolute one would not).
   X <- planted_mixture(31, 120, 0.6, c(1.2, 0.6), S2 = matrix(c(1, 0.3, 0.3, 1.5), 2))
+  # (every start on every point, as below 1000 points)
+  local_mocked_internal("gmm_start_points", Inf)
   one <- gmm_fit(X, max_iter = 5000L)
   ten <- gmm_fit(X[rep(seq_len(nrow(X)), 10), ], max_iter = 5000L)
   expect_false(one$fallback)
@@ -321,4 +333,25 @@ test_that("the fast engine's stopping rule is per observation: ten copies of the
   expect_equal(ten$weights, one$weights, tolerance = 1e-4)
   # the reference engine keeps mixtools' rule: tol on the total
   expect_identical(gmm_default_tol[["reference"]], 1e-8)
+})
+
+test_that("with many points the starts race on a subsample and the best is refined on all", {
+  # 3000 points from a planted, overlapping mixture: the subsample's best
+  # start refined on every point meets the optimum of all starts on every
+  # point, and the planted truth
+  X <- planted_mixture(41, 3000, 0.6, c(1.6, 1.2), S2 = matrix(c(1, 0.3, 0.3, 1.2), 2))
+  expect_gt(nrow(X), gmm_start_points)
+  fit <- gmm_fit(X, max_iter = 5000)
+  all_points <- local({
+    local_mocked_internal("gmm_start_points", Inf)
+    gmm_fit(X, max_iter = 5000)
+  })
+  expect_false(fit$fallback)
+  expect_equal(fit$loglik, all_points$loglik, tolerance = 1e-6)
+  # (along the flat ridge of two overlapping components the two runs stop
+  # at the tolerance's distance from the optimum, not at the same point)
+  expect_equal(fit$weights, all_points$weights, tolerance = 5e-3)
+  expect_equal(fit$means, all_points$means, tolerance = 5e-3)
+  expect_equal(fit$weights, c(0.6, 0.4), tolerance = 0.1)
+  expect_equal(unname(fit$means[2, ]), c(1.6, 1.2), tolerance = 0.2)
 })
