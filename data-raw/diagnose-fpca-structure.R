@@ -72,16 +72,6 @@ dg <- read_tab("diagonals.csv")
 t51 <- read_tab("table_5_1.csv")
 t56 <- read_tab("table_5_6_bestguess.csv")
 
-# the thesis' hard-to-discern groups (section 5.2; claims.md G6), Feix ids
-g6 <- list(c(4L, 5L, 15L), c(6L, 7L, 8L, 20L), c(12L, 13L, 14L))
-# how many groups have a cell (truth, predicted), both in the group, among
-# the ten largest off-diagonal cells of `conf` (rows truth, columns predicted)
-groups_found <- function(conf, top = 10L) {
-  off <- which(row(conf) != col(conf))
-  o <- off[order(conf[off], decreasing = TRUE)][seq_len(top)]
-  o <- o[conf[o] > 0]
-  sum(vapply(g6, function(ids) any(row(conf)[o] %in% ids & col(conf)[o] %in% ids), logical(1)))
-}
 per_type <- function(v) stats::setNames(rep(v, 33), feix_levels())
 variants <- list(shipped = list())
 if (identical(which_variants, "all")) {
@@ -107,7 +97,7 @@ structure_of <- function(D, truth, target_length, recall_lf) {
   data.frame(acc_fpca = mean(recall), r_fpca = stats::cor(recall, dg$fpca_correct / dg$fpca_total),
              acc_last_frame = mean(recall_lf),
              r_last_frame = stats::cor(recall_lf, dg$lastframe_pca_correct / dg$lastframe_pca_total),
-             g6_groups = groups_found(conf), G1 = mn$model_min_own_type, G2 = mn$type_min_own_model,
+             g6_groups = confusion_groups_found(conf), G1 = mn$model_min_own_type, G2 = mn$type_min_own_model,
              G3 = mn$both, G4 = mn$n_attracted, most_attracting = mn$most_attracting,
              never_min = mn$models_never_min,
              r_received_length = stats::cor(colSums(conf), target_length))
