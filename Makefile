@@ -9,7 +9,7 @@ export HANDMOTION_SHARED ?= $(abspath ../shared)
 # snapshot tests run outside CRAN
 export NOT_CRAN ?= true
 
-.PHONY: setup demo test test-r test-python check bench bench-quick docs site clean
+.PHONY: setup demo test test-r test-python test-calibration check bench bench-quick docs site clean
 
 setup:
 	bash tools/setup.sh
@@ -23,6 +23,10 @@ test: setup test-r test-python
 
 test-r:
 	HANDMOTION_SLOW_TESTS=$${HANDMOTION_SLOW_TESTS:-true} $(R) tools/run-tests.R
+
+## The calibration of the default data over seeds 1-5 (several minutes; not part of make test)
+test-calibration: setup
+	HANDMOTION_CALIBRATION_SEEDS=true $(R) -e 'testthat::test_local(".", filter = "calibration")'
 
 test-python:
 	cd inst/python && $(PY) -m pytest -q tests

@@ -90,8 +90,51 @@ test_that("calibration_report() recomputes every target and lays the thesis besi
   expect_true(all(rep$types$recall_last_frame >= 0 & rep$types$recall_last_frame <= 1))
   expect_equal(rep$targets$ours[5], mean(c(rep$types$recall_last_frame)), tolerance = 0.2)
   expect_output(print(rep), "targets within tolerance")
+  # the structure figures sit beside the thesis' Table 5.3 claims
+  st <- rep$structure
+  expect_equal(nrow(st), 7L)
+  expect_equal(st$thesis[4:7], th$table_5_3_claims$thesis[1:4])
+  expect_type(st$ok, "logical")
+  expect_output(print(rep), "Structure")
+  expect_error(calibration_report(g, seeds = 1:2), class = "handmotion_error_bad_input")
+  expect_error(calibration_report(seeds = c(1, 1)), class = "handmotion_error_bad_input")
   expect_error(calibration_report(g, models = "no"), class = "handmotion_error_bad_input")
   expect_error(calibration_report(g, last_frame = 1), class = "handmotion_error_bad_input")
+})
+
+test_that("confusion groups are found among the largest off-diagonal cells", {
+  types <- feix_levels()
+  conf <- matrix(0L, 33, 33, dimnames = list(types, types))
+  diag(conf) <- 100L
+  # plant: adducted thumb -> fixed hook (group 1) is the largest confusion,
+  # tripod -> precision sphere (group 3) the 11th largest
+  big <- cbind(c(4, 1, 2, 3, 9, 10, 11, 16, 17, 18, 14), c(15, 2, 3, 1, 10, 11, 9, 17, 18, 16, 13))
+  conf[big] <- c(50L, 40:32, 20L)
+  expect_equal(confusion_groups_found(conf), 1L)
+  conf[14, 13] <- 45L
+  expect_equal(confusion_groups_found(conf), 2L)
+  expect_equal(confusion_groups_found(conf, top = 1L), 1L)
+})
+
+test_that("reports over seeds give the mean, the spread and the worst seed", {
+  mk <- function(acc, worst_pc5) {
+    targets <- data.frame(target = c("a", "b"), ours = c(acc, 0.8), thesis = c(0.64, 0.8),
+                          tolerance = c(0.05, 0.05), worst = c(abs(acc - 0.64), worst_pc5))
+    targets$ok <- targets$worst <= targets$tolerance
+    st <- data.frame(figure = "r", ours = acc, thesis = 1, aim = "at least 0.7", ok = acc >= 0.7)
+    structure(list(types = data.frame(grasp_id = 1L, grasp = "Tripod", recall_fpca = acc),
+                   targets = targets, structure = st), class = "calibration_report")
+  }
+  rep <- calibration_combine(list(mk(0.62, 0.01), mk(0.70, 0.06)), c(3, 7))
+  expect_equal(rep$targets$ours[1], 0.66)
+  expect_equal(rep$targets$min[1], 0.62)
+  expect_equal(rep$targets$max[1], 0.70)
+  expect_equal(rep$targets$worst, c(0.06, 0.06))
+  expect_equal(rep$targets$ok, c(FALSE, FALSE))       # each fails on one seed
+  expect_equal(rep$types$recall_fpca, 0.66)
+  expect_equal(rep$structure$ok, FALSE)
+  expect_equal(unique(rep$by_seed$seed), c(3, 7))
+  expect_output(print(rep), "2 seeds")
 })
 
 test_that("the default data meet the per-type targets (subset of types, full design)", {
@@ -132,4 +175,31 @@ test_that("the whole default pipeline is the thesis' twin (slow)", {
   h <- rep$held_out
   expect_false(anyNA(h$held_out))
   expect_true(all(h$held_out < h$in_sample))
+})
+
+test_that("the default reaches tell the grasp early (slow)", {
+  # Any recalibration must keep this (issue 13 asks 75% at 300 ms on held-out
+  # subjects; the shipped parameters give 86% on the default data).
+  skip_if_not(identical(Sys.getenv("HANDMOTION_SLOW_TESTS"), "true"),
+              "set HANDMOTION_SLOW_TESTS=true to run the early-recognition check")
+  er <- evaluate_early_recognition(simulate_grasps(), ms = 300, fractions = NULL)
+  expect_gte(er$accuracy, 0.75)
+})
+
+test_that("the shipped calibration's tolerances over seeds 1-5 (slow)", {
+  # five full pipelines (several minutes): `make test-calibration`, not every
+  # `make test`. What holds on every seed of the shipped parameters: frames,
+  # the overall Table 5.2 mean and both accuracies (the package tolerances).
+  # Not on every seed (issue 14; seeds 1-10 measured 2026-11-25): Table 5.2
+  # per type (worst gap 1.68-3.30), pc5 (0.033-0.060), the recall
+  # correlations (0.08-0.32), the confusion groups (1 of 3) and Table 5.3's
+  # counts.
+  skip_if_not(identical(Sys.getenv("HANDMOTION_CALIBRATION_SEEDS"), "true"),
+              "set HANDMOTION_CALIBRATION_SEEDS=true (make test-calibration) to check seeds 1-5")
+  rep <- calibration_report(seeds = 1:5)
+  info <- paste(utils::capture.output(print(rep)), collapse = "\n")
+  ok <- stats::setNames(rep$targets$ok, rep$targets$target)
+  expect_true(all(ok[c("Table 5.1 target frames", "Table 5.2 overall mean", "Last-frame PCA accuracy",
+                       "FPCA accuracy")]), info = info)
+  expect_equal(sort(unique(rep$by_seed$seed)), 1:5)
 })
