@@ -17,8 +17,13 @@
 #' * `"fpca"` (Table 5.6): each recording is warped into each model's time by
 #'   the model's mean warping function, projected on the model's FPCs, and
 #'   scored by the L2 distance between the warped recording and its projection
-#'   (eq. 4.4, over all DoFs; see [predict.grasp_model()]). `models` is a `grasp_models`
-#'   object from [fit_grasp_models()].
+#'   (eq. 4.4, over all DoFs; see [predict.grasp_model()]), measured as the
+#'   thesis measured it: on a grid of frame numbers `1..T_i` (fda.usc's default
+#'   for a matrix of curves), so model *i*'s distance is `predict()`'s, which
+#'   integrates over \[0, 1\], times `sqrt(T_i - 1)`. A longer model thus has
+#'   larger distances, which is why the thesis' shortest model (Palmar Pinch)
+#'   draws many recordings; the weighted FPCA distance does not have this
+#'   bias. `models` is a `grasp_models` object from [fit_grasp_models()].
 #' * `"last_frame"` (Table 5.8): the Euclidean distance between the recording's
 #'   last frame and its projection on each type's first `k` PCs; `models` is a
 #'   `fit_grasp_classifier(method = "last_frame")` result.
@@ -179,6 +184,11 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
   }
   tl <- vapply(fitted_models(models), function(m) as.numeric(m$target_length %||% NA_real_), numeric(1))
   names(tl) <- types
+  # the thesis' norm: its curves were fda.usc objects on frames 1..T_i, where
+  # the L2 norm integrates with spacing 1; ours integrates over [0, 1]
+  # (spacing 1 / (T_i - 1)), so the two differ by sqrt(T_i - 1) per model.
+  # The rescaling changes which model is nearest whenever lengths differ.
+  d <- sweep(d, 2L, sqrt(pmax(tl - 1, 1)), `*`)
   list(distances = d, target_length = tl, failures = failures)
 }
 
