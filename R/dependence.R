@@ -62,7 +62,7 @@ score_matrix <- function(model, cols) {
   n <- model$n_used
   S <- matrix(0, n, nrow(cols), dimnames = list(NULL, cols$name))
   for (a in seq_len(nrow(cols))) {
-    S[, a] <- if (cols$warp[a]) model$warp$scores[, cols$comp[a]]
+    S[, a] <- if (cols$warp[a]) warp_basis(model)$scores[, cols$comp[a]]
               else model$fpca[[cols$dof[a]]]$scores[, cols$comp[a]]
   }
   S

@@ -208,10 +208,10 @@ draw_batch <- function(model, n, warp = TRUE, limits = NULL, call = rlang::calle
   scores <- if (identical(model$dependence$type, "copula")) draw_copula_scores(model, n)
   lim <- generation_limits(model, limits %||% identical(model$dependence$type, "copula"))
   B <- model_basis(model)
+  W <- warp_basis(model)
   tryCatch(
     .Call(hm_generate_batch, as.integer(n), smp$dofs, smp$warp, B$mean,
-          B$components, as.numeric(model$warp$mean),
-          matrix(as.numeric(model$warp$components), model$target_length), isTRUE(warp),
+          B$components, W$mean, W$components, isTRUE(warp),
           model$dofs, scores$alpha, scores$beta, lim$lo, lim$hi, generation_limit_margin),
     error = function(e) {
       msg <- conditionMessage(e)
@@ -284,7 +284,8 @@ validate_sampler <- function(model, call = rlang::caller_env()) {
   check_stack(smp$warp, 1L, "warp")
   fault <- fpca_shape_fault(model, smp$dofs$d)
   if (!is.null(fault)) bad(paste0(fault, ", as its sampler has"))
-  if (length(model$warp$mean) != L || length(model$warp$components) != L * smp$warp$d) {
+  wf <- model$warp$fpca
+  if (length(wf$mean) != L || length(wf$components) != L * smp$warp$d) {
     bad("its warp basis does not match its warp sampler")
   }
   if (identical(model$dependence$type, "copula")) {

@@ -288,9 +288,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
                    iterations = (aln$iterations %||% NA_integer_),
                    converged = (aln$converged %||% NA), engine = engines$align),
     fpca = fpca, gmm = gmm,
-    warp = list(fpca = warp_fit, mean = as.numeric(warp_fit$mean),
-                components = matrix(warp_fit$components, L), scores = matrix(warp_fit$scores, n),
-                gmm = warp_gmm, constant = isTRUE(warp_fit$constant)),
+    warp = list(fpca = warp_fit, gmm = warp_gmm, constant = isTRUE(warp_fit$constant)),
     fallbacks = fallbacks,
     settings = settings, engine = engines,
     timing = c(align = t_align - t0, fpca = t_fpca - t_align, gmm = t_gmm - t_fpca,
@@ -346,7 +344,8 @@ validate_grasp_model <- function(x) {
     all(vapply(x$fpca, inherits, logical(1), "fpca_fit")),
     all(vapply(x$gmm, inherits, logical(1), "gmm_fit")),
     is.null(fpca_shape_fault(x)), has_dim(model_scores(x), c(n, p, q)),
-    nrow(x$warp$components) == L, nrow(x$warp$scores) == n,
+    inherits(x$warp$fpca, "fpca_fit"), length(x$warp$fpca$mean) == L,
+    nrow(warp_basis(x)$components) == L, nrow(warp_basis(x)$scores) == n,
     is.data.frame(x$removed), is.data.frame(x$fallbacks), is.data.frame(x$degenerate_data),
     x$dependence$type %in% c("independent", "copula"),
     is.null(x$alignment) || (inherits(x$alignment, "grasp_alignment") && dim(x$alignment$warped)[1] == n)
@@ -553,6 +552,15 @@ model_scores <- function(model) {
   scores <- array(0, c(model$n_used, length(dofs), q), dimnames = list(model$ids, dofs, paste0("FPC", seq_len(q))))
   for (j in seq_along(dofs)) scores[, j, ] <- model$fpca[[j]]$scores
   scores
+}
+
+# The warping FPCA's views, as the kernels take them (stored once, in
+# model$warp$fpca): mean (L), components (L x q) and scores (n x q).
+warp_basis <- function(model) {
+  f <- model$warp$fpca
+  L <- model$target_length
+  list(mean = as.numeric(f$mean), components = matrix(as.numeric(f$components), L),
+       scores = matrix(as.numeric(f$scores), model$n_used))
 }
 
 model_var_explained <- function(model) {

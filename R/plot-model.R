@@ -233,7 +233,7 @@ plot_model_mixture <- function(object, dofs, grid = 50L) {
 plot_model_warps <- function(object, max_recordings) {
   L <- object$target_length
   frame <- seq_len(L)
-  df <- data.frame(frame = frame, value = object$warp$mean, group = "mean", kind = "mean")
+  df <- data.frame(frame = frame, value = warp_basis(object)$mean, group = "mean", kind = "mean")
   if (!is.null(object$alignment)) {
     W <- object$alignment$warps
     keep <- seq_len(min(nrow(W), max_recordings))

@@ -129,7 +129,7 @@ stack_recordings <- function(x, dofs) {
 # then interpolates one DoF at a time, straight into an L x n matrix.
 warp_index <- function(model, st) {
   L <- model$target_length
-  wbar <- model$warp$mean
+  wbar <- warp_basis(model)$mean
   span <- wbar[L] - wbar[1]
   u <- if (is.finite(span) && span > 0) (wbar - wbar[1]) / span else seq(0, 1, length.out = L)
   u <- pmin(pmax(cummax(u), 0), 1)

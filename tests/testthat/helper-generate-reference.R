@@ -63,8 +63,8 @@ build_curves <- function(model, alpha) {
 # frame): monotone, starting at frame 1.
 build_warps <- function(model, beta) {
   n <- nrow(beta)
-  W <- matrix(model$warp$mean, n, length(model$warp$mean), byrow = TRUE) +
-    beta %*% t(model$warp$components)
+  W <- matrix(warp_basis(model)$mean, n, length(warp_basis(model)$mean), byrow = TRUE) +
+    beta %*% t(warp_basis(model)$components)
   W[W < 1] <- 1
   W[, 1] <- 1
   # cummax along rows, vectorised over draws: running max column by column.

@@ -57,7 +57,7 @@ test_that("the warp is eq. 2.5's: length round(w(L)) and values at the inverted 
   L <- m$target_length
   for (i in 1:30) {
     beta <- warped$meta$warp_score[i]
-    w <- m$warp$mean + beta * m$warp$components[, 1]
+    w <- warp_basis(m)$mean + beta * warp_basis(m)$components[, 1]
     w <- cummax(pmax(w, 1))
     w[1] <- 1
     n_new <- max(2L, as.integer(round(w[L])))
@@ -205,27 +205,27 @@ test_that("a model whose sampler was altered gets a classed error, not a crash",
   smp <- m$sampler
   smp$dofs$k <- smp$dofs$k + 1L
   expect_error(.Call(hm_generate_batch, 3L, smp$dofs, smp$warp, model_basis(m)$mean, model_basis(m)$components,
-                     as.numeric(m$warp$mean), matrix(as.numeric(m$warp$components), m$target_length),
+                     as.numeric(warp_basis(m)$mean), matrix(as.numeric(warp_basis(m)$components), m$target_length),
                      TRUE, m$dofs, NULL, NULL, rep(NA_real_, length(m$dofs)), rep(NA_real_, length(m$dofs)), 0.05),
                "sampler cumw")
   # drawn scores and limits of the wrong size, or empty limits, are refused
   p <- length(m$dofs)
   nolim <- rep(NA_real_, p)
   expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, model_basis(m)$mean,
-                     model_basis(m)$components, as.numeric(m$warp$mean),
-                     matrix(as.numeric(m$warp$components), m$target_length), TRUE, m$dofs,
+                     model_basis(m)$components, as.numeric(warp_basis(m)$mean),
+                     matrix(as.numeric(warp_basis(m)$components), m$target_length), TRUE, m$dofs,
                      array(0, c(2, p, 2)), matrix(0, 3, 1), nolim, nolim, 0.05), "drawn FPC scores")
   expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, model_basis(m)$mean,
-                     model_basis(m)$components, as.numeric(m$warp$mean),
-                     matrix(as.numeric(m$warp$components), m$target_length), TRUE, m$dofs,
+                     model_basis(m)$components, as.numeric(warp_basis(m)$mean),
+                     matrix(as.numeric(warp_basis(m)$components), m$target_length), TRUE, m$dofs,
                      NULL, NULL, rep(1, p), rep(1, p), 0.05), "limits of DoF 1 are empty")
   expect_error(.Call(hm_generate_batch, 3L, m$sampler$dofs, m$sampler$warp, model_basis(m)$mean,
-                     model_basis(m)$components, as.numeric(m$warp$mean),
-                     matrix(as.numeric(m$warp$components), m$target_length), TRUE, m$dofs,
+                     model_basis(m)$components, as.numeric(warp_basis(m)$mean),
+                     matrix(as.numeric(warp_basis(m)$components), m$target_length), TRUE, m$dofs,
                      NULL, NULL, seq_len(p + 1), nolim, 0.05), "lower limits")
   # a warp far outside the data asks for more frames than one draw may have
   huge <- m
-  huge$warp$mean <- huge$warp$mean * 1e6
+  huge$warp$fpca$mean <- huge$warp$fpca$mean * 1e6
   expect_error(generate(huge, n = 1, seed = 1), "at most 100000")
 })
 

@@ -49,8 +49,8 @@ test_that("warping functions are in original frames and one FPC carries the leng
   expect_equal(unname(m$alignment$warps[, 1]), rep(1, 50))
   expect_gt(m$warp$fpca$var_explained[1], 0.999)
   # positive warp score = longer grasp
-  expect_gt(cor(m$warp$scores[, 1], nk), 0.999)
-  expect_gt(m$warp$components[L, 1], 0)
+  expect_gt(cor(warp_basis(m)$scores[, 1], nk), 0.999)
+  expect_gt(warp_basis(m)$components[L, 1], 0)
 })
 
 test_that("over-long recordings are removed by the documented rule and recorded", {

@@ -57,7 +57,7 @@ test_that("warps plot: one grey line per recording and the red mean", {
   m <- plot_model_fixture()
   b <- ggplot2::ggplot_build(ggplot2::autoplot(m, type = "warps"))
   expect_equal(length(unique(b$data[[1]]$group)), 12L)
-  expect_equal(b$data[[2]]$y, m$warp$mean)
+  expect_equal(b$data[[2]]$y, warp_basis(m)$mean)
 })
 
 test_that("without kept data the model layers still draw; bad DoFs are clear errors", {

@@ -18,7 +18,7 @@ test_that("distance is eq. 4.4 over the hand, computed independently with apply_
   x <- planted_grasps(n = 3, p = 3, seed = 43, len = 55)
   pr <- predict(m, x)
   L <- m$target_length
-  wbar <- m$warp$mean
+  wbar <- warp_basis(m)$mean
   u <- (wbar - wbar[1]) / (wbar[L] - wbar[1])
   for (i in 1:3) {
     rec <- x$recordings[[i]]
