@@ -29,8 +29,8 @@ browser_args <- function(budget_ms) {
 
 # chromium run under coreutils' timeout, so a page that never settles fails
 # its check instead of stalling the run
-browser_run <- function(args, ...) {
-  suppressWarnings(system2("timeout", c("300", chromium_path(), args), ...))
+browser_run <- function(args, ..., seconds = 300) {
+  suppressWarnings(system2("timeout", c(as.character(seconds), chromium_path(), args), ...))
 }
 
 # A page to open: a URL as it is, a file as a file:// URL.
@@ -53,12 +53,19 @@ browser_console <- function(page, budget_ms = 1000) {
 }
 
 # A screenshot (PNG path) of the page after `budget_ms` of virtual time.
-browser_screenshot <- function(page, budget_ms = 1000, size = c(800, 500)) {
+# Headless chromium's screenshot of a page with running WebGL widgets now and
+# then never returns (seen on a quiet machine: one run in three hung past
+# 300 s, the next took seconds), so each try gets 100 s and a hung try is
+# made again, up to three times; then the page's check fails by name.
+browser_screenshot <- function(page, budget_ms = 1000, size = c(800, 500), tries = 3L) {
   png <- tempfile(fileext = ".png")
-  browser_run(c(browser_args(budget_ms), sprintf("--window-size=%d,%d", size[1], size[2]),
-                paste0("--screenshot=", png), shQuote(page_url(page))),
-              stdout = FALSE, stderr = FALSE)
-  png
+  for (i in seq_len(tries)) {
+    browser_run(c(browser_args(budget_ms), sprintf("--window-size=%d,%d", size[1], size[2]),
+                  paste0("--screenshot=", png), shQuote(page_url(page))),
+                stdout = FALSE, stderr = FALSE, seconds = 100)
+    if (file.exists(png) && file.size(png) > 0) return(png)
+  }
+  stop(sprintf("headless chromium took no screenshot of %s in %d tries of 100 s", page, tries), call. = FALSE)
 }
 
 # Pixels of a PNG as an integer array (height x width x channels).
