@@ -14,8 +14,9 @@
 #' interpolation. Each DoF is then projected onto the model's FPCs; the
 #' residual norm per DoF is the L2 norm of the warped curve minus its
 #' projection, and `distance` is the square root of the sum over DoFs of the
-#' squared residual norms (eq. 4.4 over the whole hand), the distance the
-#' FPCA classifier ranks.
+#' squared residual norms (eq. 4.4 over the whole hand) over a \[0, 1\] time
+#' axis; the FPCA classifier ranks it times `sqrt(target_length - 1)`, the
+#' thesis' frame axis (see [classify()]).
 #'
 #' @param object A `grasp_model` ([fit_grasp_model()]) or a `grasp_models`
 #'   set ([fit_grasp_models()]).
