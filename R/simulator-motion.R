@@ -35,14 +35,25 @@ sim_streams <- function(seed) {
   with_sim_seed(seed, sample.int(.Machine$integer.max, 34L))
 }
 
-# Subject-level draws, one row per subject in subject order (drawn row by row,
-# so subject s is the same hand whatever the number of subjects): latent
-# factors z (k), own per-DoF offsets u (12) and a tempo factor.
+# Subject-level draws, one row per subject in subject order: latent factors z
+# (k), own per-DoF offsets u (12) and a tempo factor. z and u are whitened in
+# sample (see sim_whiten()), so every seed's population of hands has exactly
+# the calibrated spread; the seed decides which hand is whose. (A subject's
+# hand therefore depends on the number of subjects.)
 sim_subject_draws <- function(stream, subjects, k) {
   nd <- length(sim_driven_dofs)
   x <- with_sim_seed(stream, matrix(stats::rnorm(subjects * (k + nd + 1L)), subjects, byrow = TRUE))
+  x[, seq_len(k + nd)] <- sim_whiten(x[, seq_len(k + nd), drop = FALSE])
   list(z = x[, seq_len(k), drop = FALSE], u = x[, k + seq_len(nd), drop = FALSE],
        tempo = x[, k + nd + 1L])
+}
+
+# Centre the columns of `x` and make their sample covariance the identity
+# exactly (when there are more rows than columns; otherwise `x` unchanged).
+sim_whiten <- function(x) {
+  if (nrow(x) <= ncol(x) + 1L) return(x)
+  x <- sweep(x, 2L, colMeans(x))
+  x %*% solve(chol(stats::cov(x)))
 }
 
 # The design of one type: subject x object x trial, trial fastest.
@@ -87,7 +98,7 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   runif <- stats::runif
 
   # ---- all random draws, fixed order --------------------------------------
-  e_subtype <- matrix(rnorm(S * nd), S, nd, byrow = TRUE)
+  e_subtype <- sim_whiten(matrix(rnorm(S * nd), S, nd, byrow = TRUE))
   e_tempo <- rnorm(N)
   e_post <- matrix(rnorm(N * nd), N, nd)
   e_rest <- matrix(rnorm(N * nd), N, nd)
@@ -184,11 +195,14 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   final <- rep_row(base, N) + p$final_variability * (type_offset[s_idx, , drop = FALSE] +
     p$subject_type_sd * e_subtype[s_idx, , drop = FALSE] +
     outer(logsize, p$object_response[g, ]) + p$trial_posture_sd * e_post)
-  rest <- rep_row(p$rest, N) + p$subject_rest_share * offset[s_idx, , drop = FALSE] + p$rest_sd * e_rest
+  # the glove's fit (the subject's own offsets) is there from the first frame;
+  # the hand's style factors show partly at rest and fully in the grasp
+  rest <- rep_row(p$rest, N) + p$subject_rest_share * factors[s_idx, , drop = FALSE] +
+    p$subject_dof_sd * subj$u[s_idx, , drop = FALSE] + p$rest_sd * e_rest
   amp <- p$aperture_scale[g] * design$size^p$object_aperture * exp(p$aperture_sd * e_ap)
   # pre-shaping: on the way, the open hand already leans towards the type's
   # final posture (a share `preshape` of its distance from the mean posture)
-  peak <- rest + outer(amp, p$aperture) + rep_row(p$preshape * (base - centre), N)
+  peak <- rest + outer(amp, p$aperture) + rep_row(p$preshape[[g]] * (base - centre), N)
 
   # ---- trajectories -----------------------------------------------------------
   Ft <- sum(n)

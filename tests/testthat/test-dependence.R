@@ -18,8 +18,9 @@ test_that("the copula model recovers a planted cross-DoF correlation; the indepe
   params <- planted_params()
   train <- simulate_grasps(subjects = 30, grasps = "Medium Wrap", seed = 11, params = params,
                            overlong = FALSE)
-  # the truth: 120 other subjects (simulate_grasps() subject s is the same
-  # hand whatever the number of subjects, so take subjects 31-150)
+  # the truth: subjects 31-150 of a 150-subject draw of the same seed (the
+  # first 30 are close to, not exactly, the training hands: subject draws are
+  # whitened within each sample)
   big <- simulate_grasps(subjects = 150, grasps = "Medium Wrap", seed = 11, params = params,
                          overlong = FALSE)
   truth <- final_cor(big[as.integer(sub("S", "", big$meta$subject)) > 30])
