@@ -16,11 +16,11 @@
 #' * Table 5.1: the warping target length of every type (must equal the
 #'   thesis' exactly);
 #' * Table 5.2: the mean over DoFs of the variance explained by two FPCs, per
-#'   type (within 2 points) and overall;
+#'   type (within 2 points) and overall (within 0.5 points);
 #' * Table 5.7: the cumulative variance of five last-frame PCs per type (within
 #'   0.05);
 #' * the in-sample accuracy of the last-frame PCA classifier (five PCs) and of
-#'   the FPCA classifier (within 5 points of the thesis' 64% and 35%, the
+#'   the FPCA classifier (within 4 points of the thesis' 64% and 35%, the
 #'   totals of the diagonals of Tables 5.8 and 5.6);
 #' * optionally (`held_out = TRUE`) the same two accuracies estimated by
 #'   leave-subject-out evaluation ([evaluate_loso()]), which must be lower than
@@ -136,11 +136,12 @@ calibration_measure <- function(x, models, last_frame) {
                          recall_fpca = unname(recall(cl_fp)), recall_last_frame = unname(recall(cl_lf)),
                          stringsAsFactors = FALSE)
   truth <- factor(as.character(cl_fp$predictions$truth), levels = types)
+  dtab <- distance_table(cl_fp)
   confusion <- unclass(table(truth = truth,
                              predicted = factor(as.character(cl_fp$predictions$predicted), levels = types)))
   list(types = per_type, accuracy = c(fpca = accuracy(cl_fp), last_frame = accuracy(cl_lf)),
        overall_mean_var = mean(per_type$mean_var, na.rm = TRUE), confusion_fpca = confusion,
-       minima = distance_minima(distance_table(cl_fp)))
+       distances = dtab, minima = distance_minima(dtab))
 }
 
 # The groups of types the thesis names as hard to tell apart (Jeppsson 2017,
@@ -258,11 +259,11 @@ calibration_combine <- function(reps, seeds) {
                  seeds = seeds), class = "calibration_report")
 }
 
-# The tolerances of the calibration (issue 5): absolute, in the units of each
-# figure (frames, percentage points, proportions).
+# The tolerances of the calibration (issue 14): absolute, in the units of
+# each figure (frames, percentage points, proportions).
 calibration_tolerances <- function() {
-  c(target_frames = 0, mean_var = 2, overall_mean_var = 1, pc5 = 0.05,
-    accuracy_last_frame = 0.05, accuracy_fpca = 0.05)
+  c(target_frames = 0, mean_var = 2, overall_mean_var = 0.5, pc5 = 0.05,
+    accuracy_last_frame = 0.04, accuracy_fpca = 0.04)
 }
 
 new_calibration_report <- function(ours, loso = NULL) {

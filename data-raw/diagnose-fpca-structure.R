@@ -57,6 +57,9 @@
 #   (MMD / posture-correlation gap), and Table 5.6's recall correlation
 #   reaches only 0.51-0.68 over seeds 1-10 at 35-37% accuracy.
 #
+# (These findings predate the per-type calibration of data-raw/calibrate-
+# simulator.R; its figures over seeds 1-10 are in ?simulate_grasps.)
+#
 # Run from the package root (about 1 minute per seed and variant on 2 cores):
 #   Rscript data-raw/diagnose-fpca-structure.R [seeds] [variants]
 # seeds: e.g. 1:3 (default 1); variants: "shipped" (default) or "all" (adds
