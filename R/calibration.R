@@ -119,12 +119,6 @@ calibration_measure <- function(x, models, last_frame) {
   cl_fp <- classify(models, x)
   cl_lf <- classify(last_frame, x)
   types <- feix_order(unique(c(s$grasp, cv$grasp)))
-  recall <- function(cl) {
-    p <- cl$predictions
-    ok <- as.character(p$truth) == as.character(p$predicted)
-    ok[is.na(ok)] <- FALSE
-    vapply(types, function(t) mean(ok[as.character(p$truth) == t]), numeric(1))
-  }
   accuracy <- function(cl) {
     p <- cl$predictions[!is.na(cl$predictions$truth), ]
     mean(!is.na(p$predicted) & as.character(p$truth) == as.character(p$predicted))
@@ -133,15 +127,24 @@ calibration_measure <- function(x, models, last_frame) {
                          target_frames = s$target_length[match(types, s$grasp)],
                          mean_var = s$mean_var[match(types, s$grasp)],
                          pc5 = cv$pc5[match(types, cv$grasp)],
-                         recall_fpca = unname(recall(cl_fp)), recall_last_frame = unname(recall(cl_lf)),
+                         recall_fpca = per_type_recall(cl_fp, types),
+                         recall_last_frame = per_type_recall(cl_lf, types),
                          stringsAsFactors = FALSE)
   truth <- factor(as.character(cl_fp$predictions$truth), levels = types)
-  dtab <- distance_table(cl_fp)
   confusion <- unclass(table(truth = truth,
                              predicted = factor(as.character(cl_fp$predictions$predicted), levels = types)))
   list(types = per_type, accuracy = c(fpca = accuracy(cl_fp), last_frame = accuracy(cl_lf)),
        overall_mean_var = mean(per_type$mean_var, na.rm = TRUE), confusion_fpca = confusion,
-       distances = dtab, minima = distance_minima(dtab))
+       minima = distance_minima(distance_table(cl_fp)))
+}
+
+# Share of each type's recordings in `types` that the classification `cl`
+# gives their true type (a recording left unclassified counts as wrong).
+per_type_recall <- function(cl, types) {
+  p <- cl$predictions
+  ok <- as.character(p$truth) == as.character(p$predicted)
+  ok[is.na(ok)] <- FALSE
+  unname(vapply(types, function(t) mean(ok[as.character(p$truth) == t]), numeric(1)))
 }
 
 # The groups of types the thesis names as hard to tell apart (Jeppsson 2017,

@@ -56,8 +56,9 @@
 #'   the variance in prismatic and parallel-extension grasps, Table 5.2).
 #' * The subjects' factors and offsets, and each type's subject styles, are
 #'   drawn from the normal distribution and then whitened in sample (centred,
-#'   sample covariance exactly the identity) when there are more subjects than
-#'   columns (at least 19 subjects). Every seed then has a population of hands
+#'   sample covariance exactly the identity) when there are enough subjects
+#'   (at least 19 for the 17 columns of factors and offsets, 14 for the 12
+#'   style columns). Every seed then has a population of hands
 #'   of the same calibrated spread, and the seed decides which hand is whose.
 #'   Without this, the last-frame accuracy varied by 2.2 points (sd) between
 #'   seeds of the default design; with it, by about 1.

@@ -102,21 +102,19 @@ recall_goal <- function(thesis, acc, ours, stuck) {
   goal
 }
 
-# One measurement per seed; per-type figures averaged over the seeds.
+# One measurement per seed; per-type figures averaged over the seeds. The
+# full pipeline (calibration_measure(), as calibration_report() measures) only
+# when `full`; otherwise the last frames alone.
 measure_seeds <- function(p, full) {
   per_seed <- lapply(CAL_SEEDS, function(s) {
     g <- simulate_grasps(seed = s, params = p)
     lf <- fit_grasp_classifier(g, method = "last_frame", k = 5)
-    cl <- classify(lf, g)
-    ok <- as.character(cl$predictions$truth) == as.character(cl$predictions$predicted)
-    out <- list(pc5 = cumulative_variance(lf)$pc5,
-                recall_last_frame = as.numeric(tapply(ok, factor(cl$predictions$truth, levels = types), mean)))
-    if (full) {
-      m <- calibration_measure(g, fit_grasp_models(g, seed = 1), lf)
-      out$mean_var <- m$types$mean_var
-      out$recall_fpca <- m$types$recall_fpca
+    if (!full) {
+      return(list(pc5 = cumulative_variance(lf)$pc5, recall_last_frame = per_type_recall(classify(lf, g), types)))
     }
-    out
+    ty <- calibration_measure(g, fit_grasp_models(g, seed = 1), lf)$types
+    stopifnot(identical(ty$grasp, types))
+    as.list(ty[c("pc5", "recall_last_frame", "mean_var", "recall_fpca")])
   })
   els <- names(per_seed[[1]])
   stats::setNames(lapply(els, function(el) rowMeans(sapply(per_seed, `[[`, el))), els)
