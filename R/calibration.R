@@ -35,7 +35,10 @@
 #' writing tripod; precision disk, precision sphere and tripod) have a
 #' confusion between two members among our ten largest off-diagonal cells of
 #' Table 5.6 (aim at least 2), and Table 5.3's four counts beside the thesis'
-#' (aim within 5 each).
+#' (aim within 5 each). The thesis column of the confusion-group figure is
+#' measured on the thesis' own recovered Table 5.6 by the same rule: 1 of 3
+#' (its largest off-diagonal cells are types drawn to the palmar pinch
+#' model), so issue 14's aim of 2 asks more than the thesis' table shows.
 #'
 #' With `seeds`, the default data are simulated and the pipeline run once per
 #' seed; every figure is then the mean over seeds, each target also carries
@@ -156,17 +159,38 @@ thesis_confusion_groups <- function() {
        `precision disk, precision sphere, tripod` = c(12L, 13L, 14L))
 }
 
-# How many of the groups have a cell (truth, predicted) with both in the group
+# Which of the groups have a cell (truth, predicted) with both in the group
 # among the `top` largest off-diagonal cells of the confusion matrix `conf`
-# (rows = truth, columns = predicted, dimnames = type names).
-confusion_groups_found <- function(conf, groups = thesis_confusion_groups(), top = 10L) {
+# (rows = truth, columns = predicted, dimnames = type names): one logical per
+# group. confusion_groups_found() counts them.
+confusion_groups_hit <- function(conf, groups = thesis_confusion_groups(), top = 10L) {
   ids <- match(rownames(conf), feix_levels())
   off <- which(row(conf) != col(conf), arr.ind = FALSE)
   o <- off[order(conf[off], decreasing = TRUE)][seq_len(min(top, length(off)))]
   o <- o[conf[o] > 0]
   ti <- ids[row(conf)[o]]
   pj <- ids[col(conf)[o]]
-  sum(vapply(groups, function(g) any(ti %in% g & pj %in% g), logical(1)))
+  vapply(groups, function(g) any(ti %in% g & pj %in% g), logical(1))
+}
+
+confusion_groups_found <- function(conf, groups = thesis_confusion_groups(), top = 10L) {
+  sum(confusion_groups_hit(conf, groups, top))
+}
+
+# The thesis' own Table 5.6 as recovered (best-guess reading; unreadable
+# cells count 0), laid out as calibration_measure()'s confusion: rows = true
+# type, columns = model, Feix names. Measured by the same rules as ours, it
+# shows what the thesis' figures are on its own matrix: its ten largest
+# off-diagonal cells hold only the first of its three hard-to-discern groups
+# (most are types drawn to the palmar pinch model), so the confusion-group
+# figure is compared with that, not with 3.
+thesis_confusion_fpca <- function() {
+  cells <- handmotion::thesis_results$table_5_6_cells
+  lv <- feix_levels()
+  m <- matrix(0, length(lv), length(lv), dimnames = list(truth = lv, predicted = lv))
+  ok <- !is.na(cells$count)
+  m[cbind(cells$true_id[ok], cells$model_id[ok])] <- cells$count[ok]
+  m
 }
 
 # The structure figures of one measurement (see calibration_report()).
@@ -197,7 +221,7 @@ calibration_structure <- function(ours) {
              recall_cor(ty$recall_last_frame, th$table_5_8_diagonal),
              confusion_groups_found(ours$confusion_fpca),
              mn$model_min_own_type, mn$type_min_own_model, mn$both, mn$n_attracted),
-    thesis = c(1, 1, length(thesis_confusion_groups()), claim("model_min_own_type"),
+    thesis = c(1, 1, confusion_groups_found(thesis_confusion_fpca()), claim("model_min_own_type"),
                claim("type_min_own_model"), claim("both"), claim("n_attracted")),
     aim = c("at least 0.7", "at least 0.7", "at least 2", rep("within 5", 4)),
     stringsAsFactors = FALSE)
