@@ -183,23 +183,29 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   L <- p$loadings
   s_idx <- design$subject
   factors <- subj$z %*% t(L)                                        # S x 12: the subject's hand
-  offset <- factors + p$subject_dof_sd * subj$u
+  own <- p$subject_dof_sd * subj$u                                  # S x 12: the subject's own offsets
   # the type's posture, its distance from the mean posture of all types scaled
   # by posture_spread (calibration: how distinct final postures are), and
   # the subject's factors scaled per type (calibration: Table 5.7's shape)
   centre <- colMeans(p$postures)
   base <- centre + p$posture_spread[[g]] * (p$postures[g, ] - centre)
-  type_offset <- offset + (p$factor_scale[[g]] - 1) * factors
+  type_offset <- p$factor_scale[[g]] * factors + own
   logsize <- log(design$size)
-  # final_variability scales every within-type variation of the final posture
-  final <- rep_row(base, N) + p$final_variability * (type_offset[s_idx, , drop = FALSE] +
+  # grasp_variability (per type) scales every within-type variation of the
+  # final posture, the subject's own offsets included: an object that fixes
+  # the hand's shape (a flat palm, a prismatic pinch) leaves a hand's
+  # idiosyncrasies less room. At rest they are whole (below).
+  final <- rep_row(base, N) + p$grasp_variability[[g]] * (type_offset[s_idx, , drop = FALSE] +
     p$subject_type_sd * e_subtype[s_idx, , drop = FALSE] +
     outer(logsize, p$object_response[g, ]) + p$trial_posture_sd * e_post)
   # the glove's fit (the subject's own offsets) is there from the first frame;
   # the hand's style factors show partly at rest and fully in the grasp
   rest <- rep_row(p$rest, N) + p$subject_rest_share * factors[s_idx, , drop = FALSE] +
-    p$subject_dof_sd * subj$u[s_idx, , drop = FALSE] + p$rest_sd * e_rest
-  amp <- p$aperture_scale[g] * design$size^p$object_aperture * exp(p$aperture_sd * e_ap)
+    own[s_idx, , drop = FALSE] + p$rest_sd * e_rest
+  # the opening's amplitude: wider for larger objects and varying from grasp
+  # to grasp, both scaled by the type's aperture_variability
+  amp <- p$aperture_scale[g] *
+    exp(p$aperture_variability[[g]] * (p$object_aperture * logsize + p$aperture_sd * e_ap))
   # pre-shaping: on the way, the open hand already leans towards the type's
   # final posture (a share `preshape` of its distance from the mean posture)
   peak <- rest + outer(amp, p$aperture) + rep_row(p$preshape[[g]] * (base - centre), N)

@@ -15,7 +15,7 @@ quiet_params <- function(...) {
   # from the taxonomy (test-calibration.R covers the knobs)
   p$posture_spread[] <- 1
   p$factor_scale[] <- 1
-  p$final_variability <- 1
+  p$grasp_variability[] <- 1
   over <- list(...)
   p[names(over)] <- over
   p
