@@ -20,11 +20,10 @@
 #                      posture of all types                  -> Table 5.8 recall
 #   preshape           how far the open hand already leans towards the
 #                      type's final posture during the reach -> Table 5.6 recall
-#                      (at least PRESHAPE_FLOOR, so that the opening still
+#                      (at least preshape_floor(), so that the opening still
 #                      tells the grasp early, issue 13)
-#   grasp_variability  within-type variation of the final posture and of the
-#                      opening, with the type's posture_spread scaled by the
-#                      same factor
+#   grasp_variability  within-type variation of the final posture, with the
+#                      type's posture_spread scaled by the same factor
 #                      -> Table 5.6 recall below what the preshape floor
 #                      gives (at most 1; see below)
 #   jitter_scale       finger-by-finger timing jitter        -> Table 5.2
