@@ -172,7 +172,7 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   f0 <- 1 + lead
   fend <- m - hold
   motion <- pmax(fend - f0, 1e-6)
-  pf <- pmin(pmax(p$peak_time[1] + p$peak_time[2] * e_peak, 0.2), 0.8)
+  pf <- pmin(pmax(p$peak_time[[g]] + p$peak_time_sd * e_peak, 0.2), 0.8)
   fpk <- f0 + pf * motion
   jit <- p$onset_jitter * p$jitter_scale[[g]] * motion
   on_f <- pmin(pmax(f0 + jit * e_on, 1), fpk - 0.1 * motion)

@@ -27,7 +27,7 @@ test_that("overrides replace elements by name", {
   expect_equal(p$rest, simulator_params()$rest)
   expect_error(simulator_params(1), class = "handmotion_error_bad_input")
   expect_error(simulator_params(loadings = matrix(0, 3, 2)), class = "handmotion_error_bad_params")
-  expect_error(simulator_params(peak_time = c(0.95, 0.1)), class = "handmotion_error_bad_params")
+  expect_error(simulator_params(peak_time = 0.95), class = "handmotion_error_bad_params")
 })
 
 test_that("postures follow the roles the taxonomy gives each finger", {
