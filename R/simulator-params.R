@@ -259,6 +259,7 @@ sim_default_params <- function(target_frames) {
   v <- function(...) { x <- c(...); x[d] }
   built <- sim_build_postures()
   per_type <- function(value) stats::setNames(rep(value, nrow(tax)), tax$name)
+  per_class <- function(...) stats::setNames(c(...)[as.character(tax$class)], tax$name)
   loadings <- matrix(0, length(d), 5, dimnames = list(d, c("flexion", "thumb", "spread", "proximal", "pinch")))
   # Degrees per unit factor (a first calibration put the within-type
   # last-frame covariance near the thesis' Table 5.7 shape: ~5 PCs for 80-85%).
@@ -281,8 +282,7 @@ sim_default_params <- function(target_frames) {
              PIP3 = 25, MCP4 = 20, PIP4 = 28, MCP5 = 22, PIP5 = 30),
     aperture = v(CMC1 = 8, ABD1 = 20, MCP1 = -8, IP1 = -10, MCP2 = -18, PIP2 = -20, MCP3 = -18,
                  PIP3 = -20, MCP4 = -18, PIP4 = -20, MCP5 = -18, PIP5 = -20),
-    aperture_scale = stats::setNames(c(power = 1, intermediate = 0.8, precision = 0.7)[as.character(tax$class)],
-                                     tax$name),
+    aperture_scale = per_class(power = 1, intermediate = 0.8, precision = 0.7),
     aperture_sd = 0.15,
     loadings = loadings,
     subject_dof_sd = 2.5,
@@ -301,8 +301,7 @@ sim_default_params <- function(target_frames) {
     hold_frames = c(3, 6),
     # the hand is widest earlier in a precision grip than in whole-hand
     # prehension (Gentilucci et al. 1991); intermediate grasps in between
-    peak_time = stats::setNames(c(power = 0.55, intermediate = 0.45, precision = 0.35)[as.character(tax$class)],
-                                tax$name),
+    peak_time = per_class(power = 0.55, intermediate = 0.45, precision = 0.35),
     peak_time_sd = 0.05,
     onset_jitter = 0.04,
     dip_pip_ratio = 2 / 3,
