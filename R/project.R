@@ -24,12 +24,11 @@
 #' has no mean term; we read it as centred because the thesis' own
 #' projections are: its GMM weights come from the same projection and "had
 #' means centered at zero", weight zero giving "only the mean function"
-#' (section 5.1.4). Read
-#' literally, the distance would rank models by how well two FPCs through
-#' the origin span a whole joint-angle curve: on `simulate_grasps()` (seeds
-#' 1 and 2) the FPCA classifier then recognises 7-8% of the recordings,
-#' against the thesis' 35%, and one model is the closest of 12-13 types in
-#' Table 5.3.
+#' (section 5.1.4). Read literally, the distance would rank models by how
+#' well two FPCs through the origin span a whole joint-angle curve: on
+#' `simulate_grasps()` (seeds 1 and 2) the FPCA classifier then recognises
+#' 7-8% of the recordings, against the thesis' 35%, and one model is the
+#' closest of 12-13 types in Table 5.3.
 #'
 #' @param object A `grasp_model` ([fit_grasp_model()]) or a `grasp_models`
 #'   set ([fit_grasp_models()]).
