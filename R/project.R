@@ -20,11 +20,10 @@
 #'
 #' The projection is of the recording minus the model's mean function, and
 #' the fitted curve is the mean plus the FPCs times the scores. Eq. 4.4 as
-#' printed, \eqn{\|g - \sum_k \langle g, f_k\rangle f_k\|}{||g - sum_k <g, f_k> f_k||},
-#' has no mean term; we read it as centred because the thesis' own
-#' projections are: its GMM weights come from the same projection and "had
-#' means centered at zero", weight zero giving "only the mean function"
-#' (section 5.1.4). Read literally, the distance would rank models by how
+#' printed, `||g - sum_k <g, f_k> f_k||`, has no mean term; we read it as
+#' centred because the thesis' own projections are: its GMM weights come
+#' from the same projection and "had means centered at zero", weight zero
+#' giving "only the mean function" (section 5.1.4). Read literally, the distance would rank models by how
 #' well two FPCs through the origin span a whole joint-angle curve: on
 #' `simulate_grasps()` (seeds 1 and 2) the FPCA classifier then recognises
 #' 7-8% of the recordings, against the thesis' 35%, and one model is the
