@@ -12,8 +12,8 @@
 #'
 #' For one grasp type: align the recordings (as [fit_grasp_model()] does),
 #' then at every template frame `t` run a PCA of the postures
-#' \eqn{g_t \in R^p} of all recordings, keeping `d` PCs
-#' \eqn{p_{i,t}} and their weights \eqn{\alpha_{i,t}} (eq. 4.1, with the
+#' `g_t` (one value per DoF) of all recordings, keeping `d` PCs
+#' `p_it` and their weights `alpha_it` (eq. 4.1, with the
 #' frame's mean posture added back); concatenate each PC's weights over the
 #' frames into a curve and fit an FPCA with `k` components to it (eq. 4.2),
 #' and a Gaussian mixture on each PC's FPC scores.
@@ -250,7 +250,7 @@ print.frame_pca_model <- function(x, ...) {
 #' Plot the frame-PCA alternative: sign flips between frames (Figure 5.3)
 #'
 #' `type = "weights"` draws, for one PC, each recording's weight
-#' \eqn{\alpha_{i,t}} over the frames, before and after the sign repair
+#' `alpha_it` over the frames, before and after the sign repair
 #' (when the model was fitted with `align_signs = TRUE`), with the frames
 #' where the raw PC flipped marked by dashed lines: the jumps of Figure 5.3.
 #' `type = "loadings"` draws the loading of every DoF on that PC over the

@@ -22,11 +22,11 @@ generics::generate
 
 #' Generate new grasps from a fitted model
 #'
-#' Samples FPC scores \eqn{\alpha_i} for every DoF and a warp score
-#' \eqn{\beta} from the model's Gaussian mixtures and builds eq. 2.5 of
+#' Samples FPC scores `alpha_i` for every DoF and a warp score
+#' `beta` from the model's Gaussian mixtures and builds eq. 2.5 of
 #' Jeppsson (2017): each DoF's curve on the template grid is
-#' \eqn{p_{i,0} + P_i \alpha_i}; the warping function
-#' \eqn{w(j) = q_0(j) + \beta q_1(j)} gives the original frame of template
+#' `p_i0 + P_i alpha_i`; the warping function
+#' `w(j) = q_0(j) + beta q_1(j)` gives the original frame of template
 #' frame `j` (made monotone and started at frame 1); the new recording has
 #' `round(w(L))` frames and its value at original frame `t` is the curve at
 #' the template time where `w` reaches `t`.

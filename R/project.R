@@ -9,7 +9,7 @@
 #'
 #' `predict()` on a fitted model projects recordings onto it. Each recording
 #' of `newdata` (any length) is warped to the model's template time by the
-#' model's mean warping function \eqn{\bar w}, normalised to \[0, 1\] and
+#' model's mean warping function `w_bar`, normalised to \[0, 1\] and
 #' mapped onto the recording's frames `1..n`, and evaluated there by linear
 #' interpolation. Each DoF is then projected onto the model's FPCs; the
 #' residual norm per DoF is the L2 norm of the warped curve minus its
