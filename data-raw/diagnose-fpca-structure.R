@@ -12,55 +12,49 @@
 #     the minimum of no type);
 #   * the correlation of each model's received recordings (row total of Table
 #     5.6) with its target length, ours and the thesis'.
-# Each figure comes twice: with the pipeline's distance (the FPCA norm on the
-# template grid rescaled to [0, 1], as fit_grasp_models() builds it) and with
-# the same distance on a grid of frame numbers 1..T_i (fda.usc's default
-# `argvals` for a matrix of curves; the thesis used fda.usc), which multiplies
-# model i's distances by sqrt(T_i - 1). The second is a counterfactual of the
-# pipeline's convention, computed from the same distances; it is not an
-# option of the package.
+# Each figure comes twice: with the pipeline's distance (eq. 4.4 on a grid of
+# frame numbers 1..T_i, fda.usc's default `argvals` for a matrix of curves,
+# as classify() measures it since 53c6438) and, as a counterfactual, the same
+# distance on the template grid rescaled to [0, 1] (model i's distances
+# divided by sqrt(T_i - 1), computed from the same distances; it is not an
+# option of the package).
 #
-# Findings (2026-11-25, parameters of main 3376309; `Rscript
-# data-raw/diagnose-fpca-structure.R 1 all` prints the seed-1 rows):
-# * The norm convention decides Table 5.3's column minima (G2, G4). Our
-#   FPCA norm does not grow with the model's length, so Table 5.3's division
-#   by T_i favours the longest model: Distal Type (54 frames) is the minimum
-#   of 21 types and receives the most recordings in Table 5.6 (r = +0.32
-#   between a model's received recordings and its length). In the thesis
-#   the shortest model, Palmar Pinch (32 frames), receives 1347 of 8085
-#   (r = -0.61), as a norm on frames 1..T_i (fda.usc's default) predicts, and
-#   the thesis divides Table 5.3 by T_i "to facilitate comparison between
-#   rows", which is needed only if distances grow with T_i. On that grid the
-#   same distances give G1-G4 14/16/7/8 and 17 models the minimum of no type
-#   (thesis 28/14/12/9 and 16) instead of 14/6/3/21 and 26, and received
-#   recordings correlate with length at -0.28. G1 (row minima)
-#   does not depend on it: within a row T_i is one number.
-# * The lead (the residual is blind to what lies in a model's FPC span)
-#   holds: with no pre-shaping (motions = final posture x one time profile)
-#   FPCA accuracy falls to 23% and one model (Distal Type) is the Table 5.3
-#   minimum of all 33 types; preshape 0.5 lifts G1/G2/G3 to 20/15/9 but the
-#   accuracy to 46%. One jitter_scale for every type changes little
-#   (14/6/2/21): a model's pull is not its timing flexibility.
-# * G1 stays low because a few types are close in every model: Inferior
-#   Pincer's recordings are the row minimum of 10 models; the precision
-#   types open less (aperture_scale 0.7), so their curves leave less residual
-#   anywhere.
-# * G6: only "adducted thumb, light tool, fixed hook" is among our ten
-#   largest off-diagonal cells (none without pre-shaping).
-# * Calibration attempts (see the report of issue 14): a per-type
-#   posture_spread fitted to Table 5.8 alone keeps early recognition (90% at
-#   300 ms, seed 1) and gives a Table 5.8 recall correlation of 0.90, but
-#   with it and a per-type preshape_scale never below a common floor of 0.15
-#   (branch i14c-floor) the copula model's ratios to the real-vs-real
-#   baseline (issue 12; evaluate_generation(list(thesis, copula), reps = 5,
-#   seed = 1), subjects 1-20 vs 21-30) rise from 0.965/0.966 to 1.042/1.004
-#   (MMD / posture-correlation gap), and Table 5.6's recall correlation
-#   reaches only 0.51-0.68 over seeds 1-10 at 35-37% accuracy.
+# Findings (2026-11-26, the shipped calibration of main a399a52; `Rscript
+# data-raw/diagnose-fpca-structure.R 1:2 all`, about 45 s):
 #
-# (These findings predate the per-type calibration of data-raw/calibrate-
-# simulator.R; its figures over seeds 1-10 are in ?simulate_grasps.)
+#   variant           seed  G6  G1  G2  G3  G4  FPCA acc  r(5.6)  r(received, T)
+#   shipped              1   1  18  19  11   5     36.3%    0.82   -0.30
+#   shipped              2   0  15  18   8   4     37.8%    0.84   -0.29
+#   preshape 0           1   0   8  15   4   5     24.0%    0.35   -0.36
+#   preshape 0.5         1   2  20  27  15   3     44.3%    0.67   -0.32
+#   jitter_scale 0.5     1   1  19  23  15   5     36.7%    0.77   -0.35
+#   (thesis                 1*  28  14  12   9     35.1%*          -0.61)
+#   * derived from the recovered Table 5.6 (thesis-tables/README.md).
 #
-# Run from the package root (about 1 minute per seed and variant on 2 cores):
+# * On the pipeline's 1..T_i grid a model's received recordings fall with its
+#   length (r -0.29/-0.30; the thesis -0.61); on the [0, 1] counterfactual
+#   they do not (+0.04/+0.11), and G2 falls by 4: the grid decides how many
+#   columns the short models take. G1 is the same on both (within a row T_i
+#   is one number).
+# * Pre-shaping is what the FPCA classifier sees beyond the final posture:
+#   without it the accuracy falls to 24% and G1 to 8; at 0.5 for every type
+#   G1 rises to 20-21 but G2 to 25-27 and the accuracy to 44%. G1 and G2 rise
+#   together: what makes a model fit its own type best (row minimum) also
+#   makes the type fit its own model best (column minimum).
+# * The thesis' counts need the opposite of the last point: many rows with
+#   their minimum on their own type (28) but few columns (14). Why no
+#   per-type knob of the simulator gives that is measured by
+#   data-raw/diagnose-table-5-3-effects.R.
+# * G6: the largest off-diagonal cells are types drawn to short models (Tip
+#   Pinch, Prismatic 3/4 Finger); of the thesis' three groups only one is
+#   among them, sometimes (0-1 on seeds 1-30). The thesis' own recovered
+#   Table 5.6 has one.
+#
+# Earlier findings of this script (before the pipeline measured on frames
+# 1..T_i, and before the per-type calibration) are in its history: git log
+# data-raw/diagnose-fpca-structure.R.
+#
+# Run from the package root (about 6 seconds per seed and variant):
 #   Rscript data-raw/diagnose-fpca-structure.R [seeds] [variants]
 # seeds: e.g. 1:3 (default 1); variants: "shipped" (default) or "all" (adds
 # preshape 0 and 0.5, and one jitter_scale for every type).
@@ -115,11 +109,12 @@ for (v in names(variants)) for (s in seeds) {
   recall_lf <- as.numeric(tapply(truth == as.character(lf$predictions$predicted),
                                  factor(truth, levels = feix_levels()), mean))
   T <- cl$target_length[colnames(cl$distances)]
-  rows[[length(rows) + 1L]] <- cbind(variant = v, seed = s, norm = c("[0, 1] (pipeline)", "1..T (fda.usc default)"),
+  rows[[length(rows) + 1L]] <- cbind(variant = v, seed = s, norm = c("1..T (pipeline)", "[0, 1] (counterfactual)"),
     rbind(structure_of(cl$distances, truth, T, recall_lf),
-          structure_of(sweep(cl$distances, 2L, sqrt(T - 1), `*`), truth, T, recall_lf)))
+          structure_of(sweep(cl$distances, 2L, sqrt(T - 1), `/`), truth, T, recall_lf)))
 }
 out <- do.call(rbind, rows)
+options(width = 250)
 print(out, row.names = FALSE, digits = 3)
 
 m <- as.matrix(t56[, grep("^true_", names(t56))])

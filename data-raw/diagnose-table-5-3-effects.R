@@ -1,0 +1,117 @@
+# Why Table 5.3's counts do not follow the thesis (issue 14, claims G1 and
+# G2 in thesis-tables/claims.md): which simulator parameters make a MODEL fit
+# every type well, and which make a TYPE easy for every model. A maintainer's
+# diagnosis, not part of the calibration.
+#
+# log Table 5.3 (rows model i, columns type j) = mu + A_i + B_j + residual:
+# A_i is how far model i is from every type (low: a generalist that draws
+# columns), B_j how far type j's recordings are from every model (low: an
+# easy type that takes rows). A row's minimum falls on its own type (G1)
+# unless some other type is much easier (B varies); a column's minimum falls
+# on another model (the thesis' 33 - G2 = 19) only when some model is a much
+# better generalist (A varies). The thesis' 28 rows and 14 columns therefore
+# need sd(A) well above sd(B).
+#
+# The script prints the decomposition for the shipped parameters, then
+# perturbs every type's calibration knobs at once by independent random
+# factors (a randomised design: each type draws its own multiplier for each
+# knob), refits, and regresses each type's change in A and in B on the log
+# multipliers. A knob that could give the thesis' counts would move A with
+# little B.
+#
+# Findings (2026-11-26, the shipped calibration of main a399a52; seeds 1-3,
+# 4 designs each, 396 type-runs; `Rscript data-raw/diagnose-table-5-3-effects.R`,
+# about 75 s):
+# * Shipped: sd(A) 0.10-0.11, sd(B) 0.19-0.20, cor(A, B) 0.53-0.55: the
+#   reverse of what the thesis' counts need. A model fits its own type 1.8
+#   times better than A + B predict (own-type residual -0.58).
+# * The 12 random designs: sd(A) 0.12-0.16, sd(B) 0.21-0.30; G1 14-24 but
+#   G2 26-32 in every one (thesis 28 and 14), FPCA accuracy 38-45%.
+# * Change of A and B per unit of log multiplier (peak_time: per unit of
+#   shift; standard errors 0.01-0.03, peak_time 0.12):
+#     knob                    A       B
+#     aperture_scale         +0.14   +0.43
+#     grasp_variability      -0.00   +0.12   (with posture_spread)
+#     aperture_variability   +0.03   +0.06
+#     factor_scale           -0.01   +0.03
+#     preshape               -0.02   -0.01
+#     jitter_scale            0.00    0.00   (most types are at its floor)
+#     object_response        -0.01   +0.01
+#     peak_time              +0.23   -0.06
+#   Every knob that moves a type's B moves it more than its model's A. Only
+#   the type's peak time moves A alone, and weakly: a shift of 0.08 of the
+#   motion moves A by 0.02, a tenth of sd(B). (A per-type peak_time_sd, the
+#   within-type timing variability, tried on a throw-away branch, moved only
+#   B.) So no per-type parameter of the simulator makes a model a generalist
+#   that draws other types' columns while its own type stays ordinary, and
+#   G1 and G2 rise and fall together; see also
+#   data-raw/diagnose-fpca-structure.R.
+#
+# Run from the package root:
+#   Rscript data-raw/diagnose-table-5-3-effects.R [seeds] [designs]
+# seeds: e.g. 1:5 (default 1:3); designs: random designs per seed (default 4).
+
+pkgload::load_all(".", quiet = TRUE)
+args <- commandArgs(trailingOnly = TRUE)
+seeds <- if (length(args) >= 1L) eval(parse(text = args[1])) else 1:3
+designs <- if (length(args) >= 2L) as.integer(args[2]) else 4L
+
+# log Table 5.3 split into model and type effects (centred)
+table_effects <- function(params, seed) {
+  g <- simulate_grasps(seed = seed, params = params)
+  cl <- classify(fit_grasp_models(g, seed = seed), g)
+  tab <- distance_table(cl)
+  L <- log(tab)
+  A <- rowMeans(L) - mean(L)
+  B <- colMeans(L) - mean(L)
+  R <- L - outer(A, B, `+`) - mean(L)
+  mn <- distance_minima(tab)
+  list(A = A, B = B, own = mean(diag(R)), G1 = mn$model_min_own_type, G2 = mn$type_min_own_model,
+       acc = mean(as.character(cl$predictions$truth) == as.character(cl$predictions$predicted)))
+}
+
+p0 <- simulator_params()
+# log multipliers (peak_time: an additive shift), each type drawn on its own;
+# grasp_variability moves with posture_spread as in the calibration, so the
+# last frames keep their separation in units of their own spread
+draw_design <- function() {
+  u <- function(lo, hi) stats::runif(33, lo, hi)
+  list(jitter_scale = u(-1, 1), aperture_variability = u(-1, 0.7), factor_scale = u(-0.5, 0.5),
+       grasp_variability = u(-0.7, 0), preshape = u(-0.7, 0.7), aperture_scale = u(-0.5, 0.5),
+       object_response = u(-1, 1), peak_time = u(-0.08, 0.08))
+}
+apply_design <- function(d) {
+  p <- list(jitter_scale = p0$jitter_scale * exp(d$jitter_scale),
+            aperture_variability = p0$aperture_variability * exp(d$aperture_variability),
+            factor_scale = p0$factor_scale * exp(d$factor_scale),
+            grasp_variability = p0$grasp_variability * exp(d$grasp_variability),
+            posture_spread = p0$posture_spread * exp(d$grasp_variability),
+            preshape = pmin(1, p0$preshape * exp(d$preshape)),
+            aperture_scale = p0$aperture_scale * exp(d$aperture_scale),
+            object_response = p0$object_response * exp(d$object_response),
+            peak_time = p0$peak_time + d$peak_time)
+  p
+}
+
+rows <- list()
+for (s in seeds) {
+  base <- table_effects(NULL, s)
+  cat(sprintf("seed %d, shipped: sd(A) %.3f, sd(B) %.3f, cor(A, B) %.2f, own-type residual %.2f; G1 %d, G2 %d, FPCA accuracy %.1f%%\n",
+              s, stats::sd(base$A), stats::sd(base$B), stats::cor(base$A, base$B), base$own, base$G1, base$G2,
+              100 * base$acc))
+  for (k in seq_len(designs)) {
+    d <- withr::with_seed(1000 * s + k, draw_design())
+    r <- table_effects(apply_design(d), s)
+    cat(sprintf("  design %d: sd(A) %.3f, sd(B) %.3f; G1 %d, G2 %d, FPCA accuracy %.1f%%\n",
+                k, stats::sd(r$A), stats::sd(r$B), r$G1, r$G2, 100 * r$acc))
+    rows[[length(rows) + 1L]] <- data.frame(dA = r$A - base$A, dB = r$B - base$B, as.data.frame(d))
+  }
+}
+fit <- do.call(rbind, rows)
+knobs <- setdiff(names(fit), c("dA", "dB"))
+coef_of <- function(y) stats::coef(summary(stats::lm(stats::reformulate(knobs, y), data = fit)))[knobs, 1:2]
+a <- coef_of("dA")
+b <- coef_of("dB")
+cat(sprintf("\nChange per unit of log multiplier (peak_time: per unit shift), %d type-runs:\n", nrow(fit)))
+print(data.frame(knob = knobs, A = round(a[, 1], 3), A_se = round(a[, 2], 3),
+                 B = round(b[, 1], 3), B_se = round(b[, 2], 3)), row.names = FALSE)
