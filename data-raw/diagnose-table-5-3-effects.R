@@ -38,9 +38,10 @@
 #     jitter_scale            0.00    0.00   (most types are at its floor)
 #     object_response        -0.01   +0.01
 #     peak_time              +0.23   -0.06
-#   Every knob that moves a type's B moves it more than its model's A. Only
-#   the type's peak time moves A alone, and weakly: a shift of 0.08 of the
-#   motion moves A by 0.02, a tenth of sd(B). (A per-type peak_time_sd, the
+#   Every knob that moves B beyond its standard error moves it more than A.
+#   Preshape moves A more than B but hardly moves either; the type's peak
+#   time moves A alone, and weakly: a shift of 0.08 of the motion moves A by
+#   0.02, a tenth of sd(B). (A per-type peak_time_sd, the
 #   within-type timing variability, tried on a throw-away branch, moved only
 #   B.) So no per-type parameter of the simulator makes a model a generalist
 #   that draws other types' columns while its own type stays ordinary, and
