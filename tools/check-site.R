@@ -58,7 +58,7 @@ check_widgets <- function(page, expected, height = 1400L) {
   # about 70,000 with its two widgets, looking-at-hands.html 21,000 in its
   # first 1,400 px, the text of either page none)
   px <- matrix(png_pixels(browser_screenshot(paste0(base, page), 1000, c(1000, height))), ncol = 3)
-  coloured <- sum(apply(px, 1, max) - apply(px, 1, min) > 80)
+  coloured <- sum(pmax(px[, 1], px[, 2], px[, 3]) - pmin(px[, 1], px[, 2], px[, 3]) > 80)
   if (coloured < 5000) stop(sprintf("site: %s shows no hand in the browser (%d coloured pixels)", page, coloured))
   message(sprintf("site: %s: %d 3D widget(s) drawn, no widget script errors, %d coloured pixels on screen",
                   page, ready, coloured))
