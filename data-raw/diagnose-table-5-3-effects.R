@@ -82,16 +82,15 @@ draw_design <- function() {
        object_response = u(-1, 1), peak_time = u(-0.08, 0.08))
 }
 apply_design <- function(d) {
-  p <- list(jitter_scale = p0$jitter_scale * exp(d$jitter_scale),
-            aperture_variability = p0$aperture_variability * exp(d$aperture_variability),
-            factor_scale = p0$factor_scale * exp(d$factor_scale),
-            grasp_variability = p0$grasp_variability * exp(d$grasp_variability),
-            posture_spread = p0$posture_spread * exp(d$grasp_variability),
-            preshape = pmin(1, p0$preshape * exp(d$preshape)),
-            aperture_scale = p0$aperture_scale * exp(d$aperture_scale),
-            object_response = p0$object_response * exp(d$object_response),
-            peak_time = p0$peak_time + d$peak_time)
-  p
+  list(jitter_scale = p0$jitter_scale * exp(d$jitter_scale),
+       aperture_variability = p0$aperture_variability * exp(d$aperture_variability),
+       factor_scale = p0$factor_scale * exp(d$factor_scale),
+       grasp_variability = p0$grasp_variability * exp(d$grasp_variability),
+       posture_spread = p0$posture_spread * exp(d$grasp_variability),
+       preshape = pmin(1, p0$preshape * exp(d$preshape)),
+       aperture_scale = p0$aperture_scale * exp(d$aperture_scale),
+       object_response = p0$object_response * exp(d$object_response),
+       peak_time = p0$peak_time + d$peak_time)
 }
 
 rows <- list()
