@@ -47,6 +47,14 @@
 #   that draws other types' columns while its own type stays ordinary, and
 #   G1 and G2 rise and fall together; see also
 #   data-raw/diagnose-fpca-structure.R.
+# * The same holds for changes of every type at once (seed 1, 2026-11-26,
+#   probes not shipped): grasp_variability raised to at least 0.7 or 1
+#   (posture_spread in proportion), posture_spread times 0.5, 0.7 or 1 and
+#   preshape times 0.6 or 1, 12 variants, gave G1 7-24 and G2 6-23 but
+#   G1 - G2 between -5 and +3 in every one (thesis +14); at
+#   grasp_variability >= 1 G1 reached 24 with G2 23 and an FPCA accuracy of
+#   45.4%. How much of each type's distance the models' FPCs absorb is
+#   measured by data-raw/diagnose-fpca-absorption.R.
 #
 # Run from the package root:
 #   Rscript data-raw/diagnose-table-5-3-effects.R [seeds] [designs]
