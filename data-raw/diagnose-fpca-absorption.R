@@ -65,6 +65,9 @@ args <- commandArgs(trailingOnly = TRUE)
 seeds <- if (length(args) >= 1L) eval(parse(text = args[1])) else 1L
 p0 <- simulator_params()
 
+# mean over the other types: a types x models table without its own cells
+others_mean <- function(M) (colSums(M) - diag(M)) / (ncol(M) - 1L)
+
 for (s in seeds) {
   g <- simulate_grasps(seed = s)
   models <- fit_grasp_models(g, seed = s)
@@ -76,24 +79,26 @@ for (s in seeds) {
   # types x models: mean squared residual and mean squared distance to the mean
   by_type <- function(M) t(vapply(types, function(ty) colMeans(M[truth == ty, , drop = FALSE]),
                                   numeric(ncol(M))))
-  absorbed <- 1 - by_type(resid2) / by_type(total2)
+  tot <- by_type(total2)
+  absorbed <- 1 - by_type(resid2) / tot
   own <- diag(absorbed)
-  others <- (colSums(absorbed) - own) / (length(types) - 1L)
+  others <- others_mean(absorbed)
+  # Table 5.3 as the package builds it (classify() projects again, keeping
+  # only the distances: the scores above are not part of its result)
   L <- log(distance_table(classify(models, g, method = "fpca")))[types, types]
   A <- rowMeans(L) - mean(L)
   gv <- p0$grasp_variability[types]
   # the model's centrality: log mean squared distance of the other types'
-  # recordings to its mean function, per frame of the model's grid
-  tot <- by_type(total2)
-  centre <- log((colSums(tot) - diag(tot)) / (length(types) - 1L))
+  # recordings to its mean function (on predict()'s [0, 1] time axis)
+  centre <- log(others_mean(tot))
   T_i <- vapply(pr, function(p) p$target_length, numeric(1))
+  fit <- stats::lm(A ~ log(1 - others) + centre + log(T_i))
   cat(sprintf("seed %d: absorbed, own type %.3f, other types %.3f (per model %.2f-%.2f); cor(absorbed of others, grasp_variability) %.2f\n",
               s, mean(own), mean(others), min(others), max(others), stats::cor(others, gv)))
   cat(sprintf("  model effect A: cor with absorbed of others %.2f, with log distance of others to the mean %.2f, with log T %.2f; R^2 of all three %.2f\n",
-              stats::cor(A, others), stats::cor(A, centre), stats::cor(A, log(T_i)),
-              summary(stats::lm(A ~ log(1 - others) + centre + log(T_i)))$r.squared))
+              stats::cor(A, others), stats::cor(A, centre), stats::cor(A, log(T_i)), summary(fit)$r.squared))
   cat(sprintf("  cor(absorbed of others, log distance of others to the mean) %.2f\n", stats::cor(others, centre)))
-  print(round(stats::coef(summary(stats::lm(A ~ log(1 - others) + centre + log(T_i))))[, 1:2], 3))
+  print(round(stats::coef(summary(fit))[, 1:2], 3))
   o <- order(others)
   cat("  poorest absorbers: ", paste(sprintf("%s %.2f (gv %.2f)", types[o[1:8]], others[o[1:8]], gv[o[1:8]]),
                                      collapse = ", "), "\n", sep = "")
