@@ -18,11 +18,10 @@ DEBIAN_PKGS=(
   r-cran-foreach r-cran-doparallel r-cran-mvtnorm r-cran-ksamples r-cran-suppdists
   r-cran-httr r-cran-colorspace r-cran-locfit r-cran-rcolorbrewer r-cran-fnn
   r-cran-multicool r-cran-pracma r-cran-kernlab
-  # second wave: 3D viewer and site, animation export, fast reading, clusters,
-  # discriminative classifiers
-  r-cran-htmlwidgets r-cran-jsonlite r-cran-pkgdown r-cran-gganimate r-cran-magick
-  r-cran-data.table r-cran-future.batchtools r-cran-batchtools r-cran-mass
-  r-cran-glmnet
+  # second wave: 3D viewer (and its Shiny bindings) and site, animation export,
+  # fast reading, clusters, the shrinkage LDA's reference (MASS)
+  r-cran-htmlwidgets r-cran-jsonlite r-cran-shiny r-cran-pkgdown r-cran-gganimate
+  r-cran-magick r-cran-data.table r-cran-future.batchtools r-cran-batchtools r-cran-mass
   # the Python front end
   python3-rpy2 python3-numpy python3-pandas python3-pytest
 )
