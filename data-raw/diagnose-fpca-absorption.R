@@ -85,8 +85,7 @@ for (s in seeds) {
   others <- others_mean(absorbed)
   # Table 5.3 as the package builds it (classify() projects again, keeping
   # only the distances: the scores above are not part of its result)
-  L <- log(distance_table(classify(models, g, method = "fpca")))[types, types]
-  A <- rowMeans(L) - mean(L)
+  A <- distance_effects(distance_table(classify(models, g, method = "fpca"))[types, types])$model
   gv <- p0$grasp_variability[types]
   # the model's centrality: log mean squared distance of the other types'
   # recordings to its mean function (on predict()'s [0, 1] time axis)

@@ -80,33 +80,19 @@ args <- commandArgs(trailingOnly = TRUE)
 seeds <- if (length(args) >= 1L) eval(parse(text = args[1])) else 1:3
 designs <- if (length(args) >= 2L) as.integer(args[2]) else 4L
 
-# log Table 5.3 split into model and type effects (centred)
+# log Table 5.3 split into model and type effects (centred) by the
+# package's distance_effects(), which also counts G1 without the type effects
+# and G2 without the model effects
 table_effects <- function(params, seed) {
   g <- simulate_grasps(seed = seed, params = params)
   cl <- classify(fit_grasp_models(g, seed = seed), g)
-  tab <- distance_table(cl)
-  L <- log(tab)
-  A <- rowMeans(L) - mean(L)
-  B <- colMeans(L) - mean(L)
-  R <- L - outer(A, B, `+`) - mean(L)
-  mn <- distance_minima(tab)
-  list(A = A, B = B, R = R, own = mean(diag(R)), G1 = mn$model_min_own_type, G2 = mn$type_min_own_model,
-       acc = mean(as.character(cl$predictions$truth) == as.character(cl$predictions$predicted)))
-}
-
-# G1 with the type effects taken out of log Table 5.3, and G2 with the model
-# effects taken out: the counts the pairwise residual alone allows (a model
-# effect is constant along a row, so it cannot move G1, nor a type effect G2).
-counts_without_effects <- function(e) {
-  L <- outer(e$A, e$B, `+`) + e$R
-  own <- seq_len(nrow(L))
-  g1 <- function(M) sum(apply(M, 1L, which.min) == own)
-  g2 <- function(M) sum(apply(M, 2L, which.min) == own)
-  off <- e$R
+  e <- distance_effects(distance_table(cl))
+  off <- e$residual
   diag(off) <- NA
-  c(G1_no_B = g1(sweep(L, 2L, e$B)), G2_no_A = g2(sweep(L, 1L, e$A)),
-    sd_residual = stats::sd(off[!is.na(off)]),
-    closest_other_type = mean(apply(off, 1L, min, na.rm = TRUE)))
+  list(A = e$model, B = e$type, own = e$own, counts = e$counts, sd_residual = stats::sd(off, na.rm = TRUE),
+       closest_other = mean(e$closest_other$residual),
+       G1 = e$counts[["model_min_own_type"]], G2 = e$counts[["type_min_own_model"]],
+       acc = mean(as.character(cl$predictions$truth) == as.character(cl$predictions$predicted)))
 }
 
 p0 <- simulator_params()
@@ -137,9 +123,9 @@ for (s in seeds) {
   cat(sprintf("seed %d, shipped: sd(A) %.3f, sd(B) %.3f, cor(A, B) %.2f, own-type residual %.2f; G1 %d, G2 %d, FPCA accuracy %.1f%%\n",
               s, stats::sd(base$A), stats::sd(base$B), stats::cor(base$A, base$B), base$own, base$G1, base$G2,
               100 * base$acc))
-  cf <- counts_without_effects(base)
   cat(sprintf("  without type effects G1 %d, without model effects G2 %d; residual sd %.2f off the diagonal, each model's closest other type %.2f on average\n",
-              cf[["G1_no_B"]], cf[["G2_no_A"]], cf[["sd_residual"]], cf[["closest_other_type"]]))
+              base$counts[["model_min_own_type_without_type_effects"]],
+              base$counts[["type_min_own_model_without_model_effects"]], base$sd_residual, base$closest_other))
   for (k in seq_len(designs)) {
     d <- withr::with_seed(1000 * s + k, draw_design())
     r <- table_effects(apply_design(d), s)

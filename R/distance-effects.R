@@ -1,0 +1,60 @@
+# Model and type effects of Table 5.3 (issue 14, claims G1 and G2). The log of
+# a mean projection distance splits additively into an overall level, a model
+# effect (how far a model is from every type), a type effect (how far a type's
+# recordings are from every model) and a pairwise residual. A row minimum
+# (G1) cannot depend on the model effect, which is constant along the row,
+# nor a column minimum (G2) on the type effect, so the split says which part
+# of the table sets each count. The report and the maintainer's diagnoses in
+# data-raw/ use this one decomposition.
+
+#' Split a Table 5.3 distance table into model, type and pairwise effects
+#'
+#' `log(tab) = level + model_i + type_j + residual_ij`, with the model and type
+#' effects centred (the two-way additive fit of a complete table, by row and
+#' column means). The own-type residual (the diagonal) is how much better a
+#' model fits its own type than its two effects predict.
+#'
+#' @param tab A `distance_table()` result over the same types in its rows
+#'   (models) and columns (true types); the columns are put in the rows' order.
+#' @return A list: `level`, `model` and `type` (named effect vectors),
+#'   `residual` (matrix), `own` (mean diagonal residual), `closest_other` (a
+#'   data frame per model: the other type with the smallest residual and that
+#'   residual) and `counts`: G1 and G2 as the table has them
+#'   (`model_min_own_type`, `type_min_own_model`), and G1 with the type effects
+#'   removed (`model_min_own_type_without_type_effects`) and G2 with the model
+#'   effects removed (`type_min_own_model_without_model_effects`).
+#' @seealso `distance_minima()` counts the minima of the table as it is.
+#' @noRd
+#' @examples
+#' tab <- exp(outer(c(a = 0, b = 0.2, c = 0.4), c(a = 0, b = 0, c = 0), `+`) - 0.5 * diag(3))
+#' dimnames(tab) <- list(model = c("a", "b", "c"), truth = c("a", "b", "c"))
+#' distance_effects(tab)$model
+distance_effects <- function(tab, call = rlang::caller_env()) {
+  if (!is.matrix(tab) || !is.numeric(tab) || nrow(tab) < 2L || is.null(rownames(tab)) ||
+      !setequal(rownames(tab), colnames(tab)) || nrow(tab) != ncol(tab)) {
+    hm_abort(c("{.arg tab} must be a distance table with the same types as models (rows) and true types (columns).",
+               i = "Give the {.code thesis_table(\"5.3\", classification = )} of a classification over every modelled type."),
+             "bad_input", argument = "tab", call = call)
+  }
+  tab <- tab[, rownames(tab), drop = FALSE]
+  if (any(!is.finite(tab) | tab <= 0)) {
+    hm_abort("{.arg tab} has distances that are missing, infinite or not positive; their logarithm cannot be split.",
+             "bad_input", argument = "tab", call = call)
+  }
+  L <- log(tab)
+  level <- mean(L)
+  model <- rowMeans(L) - level
+  type <- colMeans(L) - level
+  residual <- L - level - outer(model, type, `+`)
+  off <- residual
+  diag(off) <- Inf
+  own <- seq_len(nrow(L))
+  row_min_own <- function(M) sum(apply(M, 1L, which.min) == own)
+  col_min_own <- function(M) sum(apply(M, 2L, which.min) == own)
+  list(level = level, model = model, type = type, residual = residual, own = mean(diag(residual)),
+       closest_other = data.frame(model = rownames(L), type = colnames(L)[apply(off, 1L, which.min)],
+                                  residual = apply(off, 1L, min), stringsAsFactors = FALSE),
+       counts = c(model_min_own_type = row_min_own(L), type_min_own_model = col_min_own(L),
+                  model_min_own_type_without_type_effects = row_min_own(sweep(L, 2L, type)),
+                  type_min_own_model_without_model_effects = col_min_own(sweep(L, 1L, model))))
+}
