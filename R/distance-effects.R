@@ -19,10 +19,9 @@
 #' @return A list: `level`, `model` and `type` (named effect vectors),
 #'   `residual` (matrix), `own` (mean diagonal residual), `closest_other` (a
 #'   data frame per model: the other type with the smallest residual and that
-#'   residual) and `counts`: G1 and G2 as the table has them
-#'   (`model_min_own_type`, `type_min_own_model`), and G1 with the type effects
-#'   removed (`model_min_own_type_without_type_effects`) and G2 with the model
-#'   effects removed (`type_min_own_model_without_model_effects`).
+#'   residual) and `counts`: G1 with the type effects removed
+#'   (`model_min_own_type_without_type_effects`) and G2 with the model effects
+#'   removed (`type_min_own_model_without_model_effects`).
 #' @seealso `distance_minima()` counts the minima of the table as it is.
 #' @noRd
 #' @examples
@@ -48,13 +47,11 @@ distance_effects <- function(tab, call = rlang::caller_env()) {
   residual <- L - level - outer(model, type, `+`)
   off <- residual
   diag(off) <- Inf
-  own <- seq_len(nrow(L))
-  row_min_own <- function(M) sum(apply(M, 1L, which.min) == own)
-  col_min_own <- function(M) sum(apply(M, 2L, which.min) == own)
   list(level = level, model = model, type = type, residual = residual, own = mean(diag(residual)),
        closest_other = data.frame(model = rownames(L), type = colnames(L)[apply(off, 1L, which.min)],
                                   residual = apply(off, 1L, min), stringsAsFactors = FALSE),
-       counts = c(model_min_own_type = row_min_own(L), type_min_own_model = col_min_own(L),
-                  model_min_own_type_without_type_effects = row_min_own(sweep(L, 2L, type)),
-                  type_min_own_model_without_model_effects = col_min_own(sweep(L, 1L, model))))
+       # distance_minima() counts by name and only compares within a row or a
+       # column, so it counts the log tables with an effect taken out as well
+       counts = c(model_min_own_type_without_type_effects = distance_minima(sweep(L, 2L, type))$model_min_own_type,
+                  type_min_own_model_without_model_effects = distance_minima(sweep(L, 1L, model))$type_min_own_model))
 }

@@ -86,12 +86,14 @@ designs <- if (length(args) >= 2L) as.integer(args[2]) else 4L
 table_effects <- function(params, seed) {
   g <- simulate_grasps(seed = seed, params = params)
   cl <- classify(fit_grasp_models(g, seed = seed), g)
-  e <- distance_effects(distance_table(cl))
+  tab <- distance_table(cl)
+  e <- distance_effects(tab)
+  mn <- distance_minima(tab)
   off <- e$residual
   diag(off) <- NA
   list(A = e$model, B = e$type, own = e$own, counts = e$counts, sd_residual = stats::sd(off, na.rm = TRUE),
        closest_other = mean(e$closest_other$residual),
-       G1 = e$counts[["model_min_own_type"]], G2 = e$counts[["type_min_own_model"]],
+       G1 = mn$model_min_own_type, G2 = mn$type_min_own_model,
        acc = mean(as.character(cl$predictions$truth) == as.character(cl$predictions$predicted)))
 }
 

@@ -40,19 +40,19 @@ test_that("type effects lower G1 only, model effects G2 only, and removing them 
   n <- 10
   # every model fits its own type clearly best: both counts are n
   res <- centred_residual(n, sd = 0.05, own = -0.5)
-  flat <- distance_effects(planted_table(rep(0, n), rep(0, n), res))
-  expect_equal(unname(flat$counts[c("model_min_own_type", "type_min_own_model")]), c(n, n))
+  flat <- distance_minima(planted_table(rep(0, n), rep(0, n), res))
+  expect_equal(c(flat$model_min_own_type, flat$type_min_own_model), c(n, n))
   # one very easy type (low type effect) takes every other model's row minimum
   type <- c(-2, rep(2 / (n - 1), n - 1))
-  e <- distance_effects(planted_table(rep(0, n), type, res))
-  expect_equal(unname(e$counts["model_min_own_type"]), 1)
-  expect_equal(unname(e$counts["type_min_own_model"]), n)
-  expect_equal(unname(e$counts["model_min_own_type_without_type_effects"]), n)
+  tab <- planted_table(rep(0, n), type, res)
+  expect_equal(distance_minima(tab)$model_min_own_type, 1)
+  expect_equal(distance_minima(tab)$type_min_own_model, n)
+  expect_equal(unname(distance_effects(tab)$counts["model_min_own_type_without_type_effects"]), n)
   # one generalist model (low model effect) takes every other type's column minimum
-  e <- distance_effects(planted_table(type, rep(0, n), res))
-  expect_equal(unname(e$counts["model_min_own_type"]), n)
-  expect_equal(unname(e$counts["type_min_own_model"]), 1)
-  expect_equal(unname(e$counts["type_min_own_model_without_model_effects"]), n)
+  tab <- planted_table(type, rep(0, n), res)
+  expect_equal(distance_minima(tab)$model_min_own_type, n)
+  expect_equal(distance_minima(tab)$type_min_own_model, 1)
+  expect_equal(unname(distance_effects(tab)$counts["type_min_own_model_without_model_effects"]), n)
 })
 
 test_that("distance_effects puts the columns in the rows' order", {
