@@ -46,7 +46,10 @@
 #   B.) So no per-type parameter of the simulator makes a model a generalist
 #   that draws other types' columns while its own type stays ordinary, and
 #   G1 and G2 rise and fall together; see also
-#   data-raw/diagnose-fpca-structure.R.
+#   data-raw/diagnose-fpca-structure.R, and
+#   data-raw/diagnose-table-5-3-linear-warping.R for two mechanisms beyond
+#   the knobs (the thesis' linear warping of eight types; fingers outside
+#   the grasp that do not open with the hand), which do the same.
 # * The same holds for changes of every type at once (seed 1, 2026-11-26,
 #   probes not shipped): grasp_variability raised to at least 0.7 or 1
 #   (posture_spread in proportion), posture_spread times 0.5, 0.7 or 1 and
