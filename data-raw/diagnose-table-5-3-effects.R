@@ -97,7 +97,7 @@ table_effects <- function(params, seed) {
   list(A = e$model, B = e$type, own = e$own, counts = e$counts, sd_residual = stats::sd(off, na.rm = TRUE),
        closest_other = mean(e$closest_other$residual),
        G1 = mn$model_min_own_type, G2 = mn$type_min_own_model,
-       acc = mean(as.character(cl$predictions$truth) == as.character(cl$predictions$predicted)))
+       acc = confusion_accuracy(grasp_confusion(cl)))
 }
 
 p0 <- simulator_params()
