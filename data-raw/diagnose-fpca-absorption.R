@@ -52,6 +52,14 @@
 #   fingers 3-5 to the mean posture of all types, with or without that
 #   free variation (sd 0-20 degrees), moved A by -0.03 to +0.04 and B up by
 #   0.02-0.13;
+# * (2026-11-26, shipped calibration of main 0fc93b8; A 0.10 and B 0.02 as
+#   shipped) more variation of its opening, aperture_variability times 2, 4
+#   or 8 (0.2 as shipped), moved A by -0.02 to -0.04 and B up by 0.01-0.13;
+#   more variation of its final posture, grasp_variability times 2 or 3,
+#   moved A by +0.05 and -0.06 and B up by 0.19 and 0.39. Its model took no
+#   column in any of the five, and G1 and G2 stayed at 18 and 19: a type
+#   that varies more, in its opening or in its final posture, becomes harder
+#   for every model before its own model becomes a generalist;
 # * raising every quieted type's grasp_variability to 0.7 (posture_spread in
 #   proportion) gave G1 22 but G2 22 and an FPCA accuracy of 42.6%
 #   (tolerance 35.1 +/- 4).
