@@ -47,9 +47,10 @@ distance_effects <- function(tab, call = rlang::caller_env()) {
   residual <- L - level - outer(model, type, `+`)
   off <- residual
   diag(off) <- Inf
+  closest <- max.col(-off, ties.method = "first")
   list(level = level, model = model, type = type, residual = residual, own = mean(diag(residual)),
-       closest_other = data.frame(model = rownames(L), type = colnames(L)[apply(off, 1L, which.min)],
-                                  residual = apply(off, 1L, min), stringsAsFactors = FALSE),
+       closest_other = data.frame(model = rownames(L), type = colnames(L)[closest],
+                                  residual = off[cbind(seq_len(nrow(off)), closest)], stringsAsFactors = FALSE),
        # distance_minima() counts by name and only compares within a row or a
        # column, so it counts the log tables with an effect taken out as well
        counts = c(model_min_own_type_without_type_effects = distance_minima(sweep(L, 2L, type))$model_min_own_type,
