@@ -321,7 +321,7 @@ assemble_generated <- function(models, parts, first_id = 1) {
     unlist(lapply(parts, `[[`, "recordings"), recursive = FALSE)
   names(recs) <- ids
   n_frames <- unlist(lapply(parts, `[[`, "n_frames"), use.names = FALSE)
-  lev <- feix_levels()
+  lev <- model_levels(first)
   codes <- vapply(models, function(m) match(m$grasp, lev), integer(1))
   meta <- structure(list(id = ids,
                          grasp = structure(rep.int(codes, counts), levels = lev, class = "factor"),
@@ -330,7 +330,7 @@ assemble_generated <- function(models, parts, first_id = 1) {
                          source = rep.int("generated", N),
                          warp_score = unlist(lapply(parts, function(pt) pt$beta[, 1]), use.names = FALSE)),
                     class = "data.frame", row.names = c(NA_integer_, -N))
-  out <- new_grasps(recs, meta, first$dofs, first$rate, first$unit, n_frames = n_frames)
+  out <- new_grasps(recs, meta, first$dofs, first$rate, first$unit, n_frames = n_frames, glove = first$glove)
   attr(out, "scores") <- stack_scores(parts, N, ids, first)
   out
 }

@@ -279,7 +279,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
 
   new_grasp_model(
     grasp = type,
-    grasp_id = match(type, feix_levels()),
+    grasp_id = feix_ids(type),
     dofs = dofs, rate = x$rate, unit = x$unit,
     target_length = L, argvals = argvals,
     n_input = prep$n_input, n_used = n, ids = prep$ids,
@@ -294,6 +294,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
     timing = c(align = t_align - t0, fpca = t_fpca - t_align, gmm = t_gmm - t_fpca,
                total = t_gmm - t0),
     limits = recorded_limits(x[prep$ids], dofs),
+    levels = levels(x$meta$grasp), glove = x$glove,
     # what of the input was degenerate (said at the top level by the caller)
     degenerate_data = model_degeneracies(list(fallbacks = fallbacks, dofs = dofs, settings = settings,
                                               warp = list(constant = isTRUE(warp_fit$constant))),
@@ -315,7 +316,8 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
 # from.
 new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, argvals, n_input, n_used,
                             ids, removed, warping, fpca, gmm, warp, fallbacks, settings, engine, timing,
-                            limits, alignment = NULL, degenerate_data = empty_degenerate_notes()) {
+                            limits, alignment = NULL, degenerate_data = empty_degenerate_notes(),
+                            levels = feix_levels(), glove = NULL) {
   model <- list(grasp = grasp, grasp_id = grasp_id, dofs = dofs, rate = rate, unit = unit,
                 target_length = target_length, argvals = argvals, n_input = n_input, n_used = n_used,
                 ids = ids, removed = removed, warping = warping, fpca = fpca, gmm = gmm, warp = warp, fallbacks = fallbacks, settings = settings, engine = engine,
@@ -324,6 +326,10 @@ new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, ar
   model$dependence <- list(type = settings$dependence,
                            copula = if (settings$dependence == "copula") fit_score_copula(model))
   model$limits <- limits
+  # the labels the model was fitted among (its own is `grasp`) and the glove
+  # of its recordings, so generated grasps carry both
+  model$levels <- levels
+  model$glove <- glove
   model$degenerate_data <- degenerate_data
   model$alignment <- alignment
   validate_grasp_model(structure(model, class = "grasp_model"))
@@ -623,10 +629,10 @@ resolve_engines <- function(engine, call) {
 # Select the recordings of one type; refuse a set that mixes types.
 select_one_type <- function(x, grasp, call) {
   if (!is.null(grasp)) {
-    g <- as_feix_grasp(grasp, call = call)
-    if (length(g) != 1L || is.na(g)) {
-      hm_abort("{.arg grasp} must name one grasp type.", "bad_input", argument = "grasp", call = call)
+    if (length(grasp) != 1L || is.na(grasp)) {
+      hm_abort("{.arg grasp} must name one class label.", "bad_input", argument = "grasp", call = call)
     }
+    g <- resolve_labels(grasp, levels(x$meta$grasp), "grasp", call = call)
     x <- x[!is.na(x$meta$grasp) & x$meta$grasp == g]
     if (length(x) == 0L) {
       hm_abort("No recordings of grasp type {.val {as.character(g)}} in {.arg x}.",
