@@ -355,3 +355,22 @@ shipped_gloves <- list(
   cyberglove22 = function() cyberglove_channels(cyberglove22_sensors),
   resistive = resistive_glove_channels
 )
+
+# One recording of a set as forward kinematics wants it: angles in degrees
+# through the set's glove, and the glove's joint mapping (NULL for a set
+# without a profile: the mapping is then chosen from the DoF names).
+glove_recording <- function(x, i) {
+  rec <- x$recordings[[i]]
+  if (is.null(x$glove)) return(list(angles = rec, unit = x$unit, mapping = NULL))
+  glove <- match_glove(x$glove, x$dofs, x$unit)
+  map <- glove_mapping(glove)
+  list(angles = glove_degrees(list(rec), glove)[[1]], unit = "deg", mapping = if (nrow(map)) map)
+}
+
+# forward_kinematics() of one recording matrix with a glove's mapping, unless
+# the caller's `...` gives one.
+fk_mapped <- function(angles, skeleton, unit, mapping, ...) {
+  dots <- list(...)
+  if (is.null(dots$mapping)) dots$mapping <- mapping
+  do.call(forward_kinematics, c(list(angles, skeleton, unit = unit), dots))
+}
