@@ -131,6 +131,14 @@
 #'   final posture in full (the trapezoidal rule halves the weight of the end
 #'   points, where grasps vary most). `NULL` (default): `"trapezoid"` for the
 #'   independent model, `"least_squares"` for the copula model.
+#' @param motion Recordings that rest before and hold after the grasp (as a
+#'   data glove records them) are cut to the motion first ([trim_motion()]),
+#'   so that alignment compares motions, not waiting: `"trim"` always,
+#'   `"as_recorded"` never, `"auto"` (default) when the median recording is
+#'   more than 35% still (rest plus hold, measured on up to 200 recordings;
+#'   the thesis' recordings, cut to the motion, are not trimmed). Recordings
+#'   projected on a trimmed model ([classify()], [predict()]) are trimmed the
+#'   same way.
 #' @return An object of class `grasp_model`: a list with `grasp`, `grasp_id`,
 #'   `dofs`, `rate`, `unit`, `target_length`, `argvals`, `n_input`, `n_used`,
 #'   `ids` (recordings used), `removed` (data frame: `id`, `n_frames`, `reason`,
@@ -165,7 +173,7 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
                             engine = c("fast", "reference"), overlong = c(iqr_mult = 3, median_mult = 1.5),
                             warping = NULL, max_stall = 0.25, seed = NULL,
                             keep_data = TRUE, dependence = c("independent", "copula"),
-                            mixture_guard = NULL, fpc_scores = NULL) {
+                            mixture_guard = NULL, fpc_scores = NULL, motion = c("auto", "trim", "as_recorded")) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   dependence <- check_choice(dependence, arg = "dependence", call = call)
@@ -185,10 +193,13 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
   overlong <- as_overlong_rule(overlong, call = call)
   x <- select_one_type(x, grasp, call)
   check_grasps_finite(x, call = call)
+  motion <- resolve_motion(x, motion, call = call)
+  if (motion == "trim") x <- trim_motion(x)
   settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
                    k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,
                    keep_data = keep_data, gmm_max_iter = gmm_model_max_iter,
-                   dependence = dependence, mixture_guard = mixture_guard, fpc_scores = fpc_scores)
+                   dependence = dependence, mixture_guard = mixture_guard, fpc_scores = fpc_scores,
+                   motion = motion)
   model <- with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))
   warn_degenerate(model$degenerate_data,
                   sprintf("The model of grasp type \"%s\" rests on degenerate data:", model$grasp))
@@ -664,8 +675,11 @@ print.grasp_model <- function(x, ...) {
   rm <- table(factor(x$removed$reason, levels = c("overlong", "degenerate warp")))
   cat(sprintf("  recordings: %d in, %d used (%d over-long, %d degenerate warps removed)\n",
               x$n_input, x$n_used, rm[["overlong"]], rm[["degenerate warp"]]))
-  cat(sprintf("  target length: %d frames at %g Hz; warping: %s\n", x$target_length, x$rate,
-              x$warping$method))
+  cat(sprintf("  target length: %d frames at %g Hz; warping: %s%s\n", x$target_length, x$rate,
+              x$warping$method, if (identical(x$settings$motion, "trim")) "; recordings trimmed to the motion" else ""))
+  if (!is.null(x$glove) && any(x$glove$channels$stuck)) {
+    cat(sprintf("  stuck channels held constant: %s\n", paste(x$glove$channels$channel[x$glove$channels$stuck], collapse = " ")))
+  }
   ve <- 100 * rowSums(model_var_explained(x))
   if (any(is.finite(ve))) {
     cat(sprintf("  variance explained by %d FPCs per DoF: min %.1f%%, median %.1f%%, max %.1f%%\n",

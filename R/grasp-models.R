@@ -81,6 +81,9 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
                i = "Arguments must be named; see {.help handmotion::fit_grasp_model}."),
              "bad_input", argument = "...", call = call)
   }
+  # rest/hold trimming is decided once for the whole set, so every type's
+  # model treats its recordings (and the recordings it classifies) alike
+  args$motion <- resolve_motion(x, args$motion %||% "auto", call = call)
   seed <- check_seed(seed, call = call)
   # future's seeding switches the session to L'Ecuyer-CMRG; give the caller back their RNG
   old_rng <- save_rng()
