@@ -63,6 +63,14 @@
 #' | `"independent"` (the thesis) | 2 | 1 | 2 | `"dtw"` | `"trapezoid"` | `"none"` |
 #' | `"copula"` | 4 | 1 | 1 | `"linear"` | `"least_squares"` | `"bic"` |
 #'
+#' Recordings trimmed to their motion (argument `motion`) are warped
+#' linearly by default in either model: cut at their detected onset and end,
+#' they are registered at both landmarks, which linear time normalisation
+#' keeps. Dynamic time warping on top of it, with projections by the mean
+#' warp, costs held-out accuracy there (on the twin's raw-count glove
+#' protocol, six objects, one subject, 5-fold by recording: FPCA distance
+#' 75% with DTW, 96% linear).
+#'
 #' The copula model's were chosen by measurement on held-out subjects
 #' ([evaluate_generation()], `vignette("natural-grasps")`): with DTW the
 #' mid-motion posture of generated grasps varied a fifth less than recorded
@@ -95,7 +103,8 @@
 #'   fallback only when it fails; `"linear"` asks for linear warping of every
 #'   recording (the thesis' fallback: time normalised to the template length,
 #'   so the timing stays in the curves). `NULL` (default): `"dtw"` for the
-#'   independent model (the thesis), `"linear"` for the copula model.
+#'   independent model (the thesis), `"linear"` for the copula model and for
+#'   recordings trimmed to their motion (see Defaults).
 #' @param max_stall Largest share of template frames a warp may spend on one
 #'   original frame before the recording counts as degenerately warped (step
 #'   2 of the description).
@@ -183,7 +192,7 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
   k <- check_whole(k %||% def$k, "k", max = 50, call = call)
   warp_ncomp <- check_whole(warp_ncomp %||% def$warp_ncomp, "warp_ncomp", max = 50, call = call)
   engines <- resolve_engines(engine, call)
-  warping <- check_choice(warping %||% def$warping, c("dtw", "linear"), arg = "warping", call = call)
+  if (!is.null(warping)) warping <- check_choice(warping, c("dtw", "linear"), arg = "warping", call = call)
   mixture_guard <- check_choice(mixture_guard %||% def$mixture_guard, c("none", "bic"),
                                 arg = "mixture_guard", call = call)
   fpc_scores <- check_choice(fpc_scores %||% def$fpc_scores, c("trapezoid", "least_squares"),
@@ -195,6 +204,9 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
   check_grasps_finite(x, call = call)
   motion <- resolve_motion(x, motion, call = call)
   if (motion == "trim") x <- trim_motion(x)
+  # recordings cut at their detected onset and end are registered at both;
+  # linear time normalisation keeps that registration (see Defaults)
+  warping <- warping %||% if (motion == "trim") "linear" else def$warping
   settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
                    k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,
                    keep_data = keep_data, gmm_max_iter = gmm_model_max_iter,
