@@ -320,6 +320,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
     levels = levels(x$meta$grasp), glove = x$glove,
     # what of the input was degenerate (said at the top level by the caller)
     degenerate_data = model_degeneracies(list(fallbacks = fallbacks, dofs = dofs, settings = settings,
+                                              stuck = stuck_channels(x),
                                               warp = list(constant = isTRUE(warp_fit$constant))),
                                          x$meta$n_frames),
     # the alignment as the aligner returned it (warped curves, warping
