@@ -280,8 +280,8 @@ find_stuck <- function(recordings, tol = 1e-9) {
 flag_stuck <- function(x, call = rlang::caller_env()) {
   stuck <- find_stuck(x$recordings)
   if (length(x) > 1L && any(stuck & !x$glove$channels$stuck)) {
-    hm_warn(c("Channel{?s} {.val {x$dofs[stuck]}} {?is/are} constant over every recording (a stuck or unplugged sensor?).",
-              i = "{?It is/They are} kept in the data, left out of models (held at {?its/their} value) and shown by {.fn print}."),
+    hm_warn(c("{cli::qty(sum(stuck))}Channel{?s} {.val {x$dofs[stuck]}} {?is/are} constant over every recording (a stuck or unplugged sensor?).",
+              i = "{cli::qty(sum(stuck))}{?It is/They are} kept in the data, left out of models (held at {?its/their} value) and shown by {.fn print}."),
             "stuck_channels", channels = x$dofs[stuck])
   }
   x$glove$channels$stuck <- stuck & length(x) > 1L

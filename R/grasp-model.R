@@ -148,6 +148,14 @@
 #'   the thesis' recordings, cut to the motion, are not trimmed). Recordings
 #'   projected on a trimmed model ([classify()], [predict()]) are trimmed the
 #'   same way.
+#' @param residuals What generation does with the variation the FPCs leave
+#'   out: `"none"` (the thesis: a generated curve is the mean plus FPCs times
+#'   scores) or `"resample"`: each generated grasp gets the residual curves
+#'   (aligned curve minus its FPC reconstruction, all DoFs together) of a
+#'   training recording drawn at random, so the generated grasps vary as
+#'   much as the recordings, with their sensor noise and small corrections.
+#'   `NULL` (default): `"resample"` for recordings trimmed to their motion
+#'   (real glove recordings; see Defaults), `"none"` otherwise.
 #' @return An object of class `grasp_model`: a list with `grasp`, `grasp_id`,
 #'   `dofs`, `rate`, `unit`, `target_length`, `argvals`, `n_input`, `n_used`,
 #'   `ids` (recordings used), `removed` (data frame: `id`, `n_frames`, `reason`,
@@ -182,7 +190,8 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
                             engine = c("fast", "reference"), overlong = c(iqr_mult = 3, median_mult = 1.5),
                             warping = NULL, max_stall = 0.25, seed = NULL,
                             keep_data = TRUE, dependence = c("independent", "copula"),
-                            mixture_guard = NULL, fpc_scores = NULL, motion = c("auto", "trim", "as_recorded")) {
+                            mixture_guard = NULL, fpc_scores = NULL, motion = c("auto", "trim", "as_recorded"),
+                            residuals = NULL) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   dependence <- check_choice(dependence, arg = "dependence", call = call)
@@ -203,16 +212,23 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
   x <- select_one_type(x, grasp, call)
   check_grasps_finite(x, call = call)
   motion <- resolve_motion(x, motion, call = call)
-  if (motion == "trim") x <- trim_motion(x)
+  phases <- NULL
+  if (motion == "trim") {
+    trimmed <- trim_motion(x)
+    phases <- still_phases(x, attr(trimmed, "motion"))
+    x <- trimmed
+  }
   # recordings cut at their detected onset and end are registered at both;
   # linear time normalisation keeps that registration (see Defaults)
   warping <- warping %||% if (motion == "trim") "linear" else def$warping
+  residuals <- check_choice(residuals %||% if (motion == "trim") "resample" else "none",
+                            c("none", "resample"), arg = "residuals", call = call)
   settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
                    k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,
                    keep_data = keep_data, gmm_max_iter = gmm_model_max_iter,
                    dependence = dependence, mixture_guard = mixture_guard, fpc_scores = fpc_scores,
-                   motion = motion)
-  model <- with_seed(seed, fit_grasp_model_impl(x, settings, engines, call))
+                   motion = motion, residuals = residuals)
+  model <- with_seed(seed, fit_grasp_model_impl(x, settings, engines, call, phases))
   warn_degenerate(model$degenerate_data,
                   sprintf("The model of grasp type \"%s\" rests on degenerate data:", model$grasp))
   model
@@ -233,7 +249,7 @@ model_defaults <- list(
   copula = list(ncomp = 4L, warp_ncomp = 1L, k = 1L, warping = "linear",
                 mixture_guard = "bic", fpc_scores = "least_squares"))
 
-fit_grasp_model_impl <- function(x, settings, engines, call) {
+fit_grasp_model_impl <- function(x, settings, engines, call, phases = NULL) {
   t0 <- proc.time()[["elapsed"]]
   type <- as.character(x$meta$grasp[1])
   prep <- prepare_alignment(x, settings, engines, call)
@@ -266,6 +282,8 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
     }
   }
   t_fpca <- proc.time()[["elapsed"]]
+  # what the FPCs leave of each aligned curve, for generation to resample
+  residuals <- if (identical(settings$residuals, "resample")) fpca_residual_curves(aln$warped, fpca)
 
   # Warping functions in original frames: one FPC carries the duration.
   warp_fit <- fit_fpca_or_constant(aln$warps, argvals, settings$warp_ncomp, engines$fpca,
@@ -317,7 +335,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
     timing = c(align = t_align - t0, fpca = t_fpca - t_align, gmm = t_gmm - t_fpca,
                total = t_gmm - t0),
     limits = recorded_limits(x[prep$ids], dofs),
-    levels = levels(x$meta$grasp), glove = x$glove,
+    levels = levels(x$meta$grasp), glove = x$glove, phases = phases, residuals = residuals,
     # what of the input was degenerate (said at the top level by the caller)
     degenerate_data = model_degeneracies(list(fallbacks = fallbacks, dofs = dofs, settings = settings,
                                               stuck = stuck_channels(x),
@@ -341,7 +359,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call) {
 new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, argvals, n_input, n_used,
                             ids, removed, warping, fpca, gmm, warp, fallbacks, settings, engine, timing,
                             limits, alignment = NULL, degenerate_data = empty_degenerate_notes(),
-                            levels = feix_levels(), glove = NULL) {
+                            levels = feix_levels(), glove = NULL, phases = NULL, residuals = NULL) {
   model <- list(grasp = grasp, grasp_id = grasp_id, dofs = dofs, rate = rate, unit = unit,
                 target_length = target_length, argvals = argvals, n_input = n_input, n_used = n_used,
                 ids = ids, removed = removed, warping = warping, fpca = fpca, gmm = gmm, warp = warp, fallbacks = fallbacks, settings = settings, engine = engine,
@@ -354,6 +372,8 @@ new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, ar
   # of its recordings, so generated grasps carry both
   model$levels <- levels
   model$glove <- glove
+  model$phases <- phases
+  model$residuals <- residuals
   model$degenerate_data <- degenerate_data
   model$alignment <- alignment
   validate_grasp_model(structure(model, class = "grasp_model"))

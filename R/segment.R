@@ -256,3 +256,24 @@ resolve_motion <- function(x, motion, call = rlang::caller_env()) {
   m <- find_motion(x[idx])
   if (stats::median((m$rest + m$hold) / m$n_frames) > motion_auto_share) "trim" else "as_recorded"
 }
+
+# What a model of trimmed recordings keeps of their still phases: the rest
+# and hold lengths (frames) and the tremor per channel (the standard
+# deviation of each channel about its mean within a still phase, pooled over
+# the phases at least 3 frames long).
+still_phases <- function(x, motion) {
+  p <- length(x$dofs)
+  ss <- numeric(p)
+  df <- 0
+  for (i in seq_along(x)) {
+    r <- x$recordings[[i]]
+    for (rows in list(seq_len(motion$rest[i]), motion$end[i] + seq_len(motion$hold[i]))) {
+      if (length(rows) < 3L) next
+      seg <- r[rows, , drop = FALSE]
+      ss <- ss + colSums(sweep(seg, 2, colMeans(seg))^2)
+      df <- df + length(rows) - 1
+    }
+  }
+  list(rest = as.integer(motion$rest), hold = as.integer(motion$hold),
+       tremor = stats::setNames(if (df > 0) sqrt(ss / df) else numeric(p), x$dofs))
+}
