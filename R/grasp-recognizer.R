@@ -44,8 +44,13 @@ fit_grasp_recognizer <- function(x, at = c(0, 0.25, 0.5, 0.75, 1), horizon = NUL
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   at <- check_fractions(at, "at", call = call)
+  # recordings that rest before the grasp are read from their motion onset
+  det <- if (resolve_motion(x, "auto") == "trim") fit_onset_detector(x)
+  x <- from_onset(x, det)
   y <- check_training_labels(x, call = call)
-  recognizer_fit(x, y, at, recognizer_horizon(x, horizon, call))
+  rec <- recognizer_fit(x, y, at, recognizer_horizon(x, horizon, call))
+  rec$onset <- det
+  rec
 }
 
 # The number of horizons: given, or the 95th percentile of the durations.
@@ -128,6 +133,7 @@ predict.grasp_recognizer <- function(object, newdata, frames = NULL, ms = NULL, 
   call <- rlang::caller_env()
   type <- check_choice(type, arg = "type", call = call)
   check_trained_dofs(newdata, object$dofs, "recogniser", call = call)
+  newdata <- from_onset(newdata, object$onset)   # time counts from the motion's onset
   seen <- seen_frames(newdata, frames, ms, fraction, call)
   s <- recognizer_scores(object, newdata, seen)
   if (type == "prob") return(softmax_rows(s))

@@ -149,7 +149,7 @@ motion_speed <- function(rec, spread, width, lag = width %/% 2L) {
   behind <- pmax(seq_len(n) - lag, 1L)
   d <- (r[ahead, , drop = FALSE] - r[behind, , drop = FALSE]) / (ahead - behind)
   s <- sqrt(rowMeans(d^2))
-  if (width > 1L) {
+  if (width > 1L && n > width) {
     k <- rep(1 / width, width)
     f <- stats::filter(s, k, sides = 2)
     f[is.na(f)] <- s[is.na(f)]
@@ -276,4 +276,42 @@ still_phases <- function(x, motion) {
   }
   list(rest = as.integer(motion$rest), hold = as.integer(motion$hold),
        tremor = stats::setNames(if (df > 0) sqrt(ss / df) else numeric(p), x$dofs))
+}
+
+# --- onset detection for recognition -------------------------------------
+# A recogniser of recordings that start at rest must know where the motion
+# starts without seeing its end. The detector is fitted once on the training
+# recordings (channel spreads, and the median high and low speed levels of
+# their motions) and then reads a recording, or a live stream, from the
+# start: the motion starts where the speed first passes the high level,
+# walked back to where it passed the low one. The speed is centred, so the
+# detector looks `lag + width / 2` frames ahead (about 80 ms).
+fit_onset_detector <- function(x, high = 0.15, low = 0.03, smooth = 0.08) {
+  spread <- channel_spread(x)
+  width <- max(1L, round(smooth * x$rate))
+  lv <- lapply(x$recordings, function(r) speed_levels(motion_speed(r, spread, width), high, low))
+  list(spread = spread, width = width, hi = stats::median(vapply(lv, `[[`, 0, "hi")),
+       lo = stats::median(vapply(lv, `[[`, 0, "lo")), rate = x$rate)
+}
+
+# The onset frame of one recording by a fitted detector, NA when the speed
+# never passes the high level.
+detect_onset <- function(rec, det) {
+  s <- motion_speed(rec, det$spread, det$width)
+  a <- which(s > det$hi)[1]
+  if (is.na(a)) return(NA_integer_)
+  while (a > 1L && s[a - 1L] > det$lo) a <- a - 1L
+  as.integer(a)
+}
+
+# Recordings cut to start at their detected onset (kept whole where none is
+# found; a NULL detector changes nothing). Metadata column `onset`.
+from_onset <- function(x, det) {
+  if (is.null(det)) return(x)
+  on <- vapply(x$recordings, detect_onset, integer(1), det = det)
+  start <- ifelse(is.na(on), 1L, on)
+  recs <- Map(function(r, a) r[a:nrow(r), , drop = FALSE], x$recordings, start)
+  meta <- x$meta
+  meta$onset <- on
+  new_grasps(recs, meta, x$dofs, x$rate, x$unit, glove = x$glove)
 }
