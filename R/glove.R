@@ -119,6 +119,10 @@ complete_channels <- function(ch, unit, file = NULL, call = rlang::caller_env())
   }
   ch$channel <- as.character(ch$channel)
   ch$axis <- tolower(ch$axis)
+  # (a CSV column left empty reads as logical NA)
+  for (col in c("sign", "scale", "min", "max", "angle_min", "angle_max")) {
+    if (is.logical(ch[[col]]) && all(is.na(ch[[col]]))) ch[[col]] <- as.numeric(ch[[col]])
+  }
   ch$stuck <- as.logical(ch$stuck)
   ch$stuck[is.na(ch$stuck)] <- FALSE
   ch[glove_channel_cols]

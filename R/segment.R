@@ -106,7 +106,10 @@ cut_motion <- function(x, min_motion = 0.3, min_gap = 0.3, high = 0.15, low = 0.
   for (i in seq_along(x)) {
     s <- motion_speed(x$recordings[[i]], spread, width)
     runs <- motion_runs(s, high, low, round(min_gap * x$rate), round(min_motion * x$rate))
+    lv <- speed_levels(s, high, low)
     for (k in seq_len(nrow(runs))) {
+      runs$start[k] <- edge_extrapolate(s, runs$start[k], lv, forward = TRUE)
+      runs$end[k] <- edge_extrapolate(s, runs$end[k], lv, forward = FALSE)
       id <- sprintf("%s-m%d", x$meta$id[i], k)
       pieces[[id]] <- x$recordings[[i]][runs$start[k]:runs$end[k], , drop = FALSE]
       row <- x$meta[i, , drop = FALSE]
