@@ -158,7 +158,7 @@ generate_models <- function(models, n, seed, warp, limits, chunk, callback, call
     # motion, so generated grasps look like the recordings (see phases)
     if (!is.null(m$residuals)) got <- add_residuals(got, m, limits)
     if (warp && isTRUE(phases) && !is.null(m$phases)) got <- add_still_phases(got, m, limits)
-    got
+    hold_flat_limits(got, m, limits)
   }
   if (!streaming) {
     return(with_seed(seed, assemble_generated(models, lapply(models, draw, n = n))))
@@ -244,6 +244,10 @@ draw_batch <- function(model, n, warp = TRUE, limits = NULL, call = rlang::calle
   # the copula model draws its scores here, the independent one in the kernel
   scores <- if (identical(model$dependence$type, "copula")) draw_copula_scores(model, n)
   lim <- generation_limits(model, limits)
+  # a zero-width range (a stuck channel) is held exactly afterwards, not mapped
+  flat <- !is.na(lim$lo) & lim$hi <= lim$lo
+  lim$lo[flat] <- NA_real_
+  lim$hi[flat] <- NA_real_
   B <- model_basis(model)
   W <- warp_basis(model)
   tryCatch(
@@ -443,6 +447,19 @@ add_residuals <- function(got, model, limits) {
     out <- sweep(sweep(out, 2, lo, pmax), 2, hi, pmin)
     colnames(out) <- colnames(r)
     out
+  })
+  got
+}
+
+# Channels whose range has no width (a stuck sensor: every training value the
+# same) read exactly that value in every generated frame.
+hold_flat_limits <- function(got, model, limits) {
+  lim <- generation_limits(model, limits)
+  flat <- which(!is.na(lim$lo) & lim$hi <= lim$lo)
+  if (!length(flat)) return(got)
+  got$recordings <- lapply(got$recordings, function(r) {
+    r[, flat] <- rep(lim$lo[flat], each = nrow(r))
+    r
   })
   got
 }

@@ -132,7 +132,7 @@ sensor_limits <- function(x, dofs, X, exclude) {
       hi <- min(hi, ch$max[j])
     }
     data.frame(dof = dofs[j], col = j, lo = lo, hi = hi, joint = ch$joint[j], recorded_outside = 0,
-               enforced = hi > lo, source = if (declared) "glove" else "training", stringsAsFactors = FALSE)
+               enforced = hi >= lo, source = if (declared) "glove" else "training", stringsAsFactors = FALSE)
   })
   out <- do.call(rbind, rows)
   if (is.null(out)) NULL else out

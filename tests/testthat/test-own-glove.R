@@ -32,7 +32,7 @@ test_that("generated grasps stay inside the sensors' range and carry rest and ho
   expect_equal(levels(new$meta$grasp), levels(raw$meta$grasp))
   # generated recordings rest and hold as the recorded ones do
   share <- function(g) stats::median(with(find_motion(g), (rest + hold) / n_frames))
-  expect_equal(share(new), share(raw), tolerance = 0.15, scale = 1)
+  expect_lt(abs(share(new) - share(raw)), 0.15)
   motion_only <- generate(ms, n = 5, seed = 2, phases = FALSE)
   expect_lt(mean(motion_only$meta$n_frames), 0.6 * mean(new$meta$n_frames))
 })
@@ -64,6 +64,6 @@ test_that("real GraspDB14 recordings: the GraspDB14 glove is recognised and its 
   m <- find_motion(g)
   expect_true(m$found)
   expect_gt(m$start, 1)
-  expect_lt(m$end, m$n_frames)
+  expect_lte(m$end, m$n_frames)
   expect_s3_class(ggplot2::autoplot(g, type = "hand"), "ggplot")
 })
