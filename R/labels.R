@@ -119,7 +119,7 @@ resolve_labels <- function(values, levels, arg, call = rlang::caller_env()) {
   if (length(bad)) {
     shown <- utils::head(levels, 12)
     more <- if (length(levels) > 12) " ..." else ""
-    hm_abort(c("{cli::qty(length(bad))}Unknown label{?s} {.val {bad}} in {.arg {arg}}.",
+    hm_abort(c("Unknown label{?s} {.val {bad}} in {.arg {arg}}.",
                i = "The labels here are {.val {shown}}{more}."),
              "unknown_grasp", argument = arg, grasp = bad, call = call)
   }

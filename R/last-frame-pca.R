@@ -35,7 +35,7 @@ fit_last_frame_pca <- function(x, k = 5, grasps = NULL, call = rlang::caller_env
 # present, in Feix order.
 labelled_types <- function(x, grasps = NULL, call = rlang::caller_env()) {
   have <- check_some_types(feix_order(unique(as.character(stats::na.omit(x$meta$grasp)))), x, call = call)
-  want <- check_grasp_selection(grasps, "grasps", call = call)
+  want <- check_grasp_selection(grasps, "grasps", levels = levels(x$meta$grasp), call = call)
   if (is.null(want)) return(have)
   absent <- setdiff(want, have)
   if (length(absent) > 0L) {

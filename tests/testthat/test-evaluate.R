@@ -54,7 +54,9 @@ test_that("a held-out type missing from training is reported, unlabelled data co
 
 test_that("too few subjects and bad arguments give classed errors", {
   g <- planted_types(types = c(1, 17), subjects = 1, trials = 3)
-  expect_error(evaluate_loso(g, "last_frame"), class = "handmotion_error_too_few_subjects")
+  # one subject: folds by subject are refused, the default holds out recordings
+  expect_error(evaluate_loso(g, "last_frame", split = "subject"), class = "handmotion_error_too_few_subjects")
+  expect_equal(evaluate_loso(g, "last_frame", folds = 3, fit_args = list(k = 1))$split, "recording")
   g2 <- planted_types(types = c(1, 17), subjects = 3, trials = 3)
   expect_error(evaluate_loso(g2, "last_frame", folds = 1), class = "handmotion_error_too_few_subjects")
   expect_error(evaluate_loso(g2, "last_frame", folds = 4), class = "handmotion_error_bad_input")
