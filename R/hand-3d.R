@@ -43,6 +43,8 @@
 #' @param skeleton The [hand_skeleton()] that poses the hands.
 #' @param hand_colour `"skin"` (default) or `"fingers"` (each finger in its
 #'   own colour).
+#' @param view The first view, as in the still pictures (see
+#'   [autoplot.hand_pose()]; the default `"oblique"` is their default).
 #' @param background Background colour of the scene.
 #' @param width,height Size of the widget (CSS units or pixels); `NULL` for
 #'   the htmlwidgets defaults.
@@ -65,8 +67,8 @@
 #' htmlwidgets::saveWidget(w, f, selfcontained = FALSE)
 hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits = FALSE, markers = NULL,
                     speed = 1, autoplay = TRUE, loop = TRUE, rate = NULL, skeleton = hand_skeleton(),
-                    hand_colour = c("skin", "fingers"), background = "#f7f7f5", width = NULL, height = NULL,
-                    elementId = NULL, ...) {
+                    hand_colour = c("skin", "fingers"), view = "oblique", background = "#f7f7f5",
+                    width = NULL, height = NULL, elementId = NULL, ...) {
   call <- rlang::caller_env()
   check_skeleton(skeleton, call = call)
   hand_colour <- check_choice(hand_colour, arg = "hand_colour", call = rlang::current_env())
@@ -122,13 +124,14 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
          },
          extent = apply(pos, 3, range))
   })
-  # side by side, a hand's width apart, along the line across the camera's
-  # first view (hand3d.js looks along (0.55, -0.25, -1)): along the thumb's
-  # axis alone, the hands stood at different depths and looked different in size
-  width_mm <- max(vapply(recs, function(r) diff(r$extent[, 1]), numeric(1)))
-  across <- c(1, 0, 0.55) / sqrt(1 + 0.55^2)
+  # the first view is the still pictures' `view` (rows: screen right, up,
+  # towards the viewer); side by side, the hands stand a hand's width apart
+  # along the screen's right, so at one depth, seen from one direction
+  V <- view_matrix(view, call)
+  width_mm <- max(vapply(recs, function(r) diff(r$extent[, 1]), numeric(1)),
+                  vapply(recs, function(r) diff(r$extent[, 2]), numeric(1)))
   for (i in seq_along(recs)) {
-    recs[[i]]$offset <- if (layout == "side") round((i - 1) * 1.25 * width_mm * across, 2) else c(0, 0, 0)
+    recs[[i]]$offset <- if (layout == "side") round((i - 1) * 1.1 * width_mm * V[1, ], 2) else c(0, 0, 0)
     recs[[i]]$extent <- NULL
   }
   data <- list(joints = joints$name, parent = ifelse(is.na(pidx), -1L, pidx - 1L),
@@ -136,6 +139,7 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
                # #rrggbb: three.js knows no R colour names)
                geometry = hand_geometry_json(geometry),
                marker_radius = round(0.025 * geometry$hand_length, 2),
+               camera = list(towards = round(V[3, ], 6), up = round(V[2, ], 6)),
                layout = layout, rate = rates[[1]], speed = speed, autoplay = autoplay, loop = loop,
                background = background, recordings = recs)
   htmlwidgets::createWidget("hand3d", data, width = width, height = height, package = "handmotion",

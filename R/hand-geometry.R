@@ -90,15 +90,19 @@ hand_geometry <- function(skeleton = hand_skeleton(), colour = c("skin", "finger
                          stringsAsFactors = FALSE)
   points <- matrix(0, 0, J, dimnames = list(NULL, j$name))
   if (!is.null(palm)) {
-    # the forearm: from the wrist back along the line from the middle knuckle
+    # the forearm: along the line from the middle knuckle through the wrist,
+    # its rounded end just behind the palm's wrist edge (so that it does not
+    # poke through the palm, which is thinner than the wrist)
     mid <- match("mf-mcp", j$name)
-    a <- hand_forearm[["length"]] * hand_length / sqrt(sum((rest[mid, ] - rest[root, ])^2))
-    points <- rbind(points, forearm = stats::setNames(numeric(J), j$name))
-    points["forearm", root] <- 1 + a
-    points["forearm", mid] <- -a
+    back <- sqrt(sum((rest[mid, ] - rest[root, ])^2))
+    r_wrist <- hand_forearm[["r_wrist"]] * hand_length
+    at <- c(forearm_end = r_wrist + hand_forearm[["length"]] * hand_length, forearm_wrist = r_wrist) / back
+    points <- matrix(0, 2, J, dimnames = list(names(at), j$name))
+    points[, root] <- 1 + at
+    points[, mid] <- -at
     segments <- rbind(segments, data.frame(
-      from = J + 1L, to = root, finger = "forearm", role = "forearm",
-      r_from = hand_forearm[["r_end"]] * hand_length, r_to = hand_forearm[["r_wrist"]] * hand_length,
+      from = J + 1L, to = J + 2L, finger = "forearm", role = "forearm",
+      r_from = hand_forearm[["r_end"]] * hand_length, r_to = r_wrist,
       fill = hand_skin_colour, draw = TRUE, stringsAsFactors = FALSE))
   }
   structure(list(joints = j$name, points = points, segments = segments, palm = palm,

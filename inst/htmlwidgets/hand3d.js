@@ -12,7 +12,8 @@
  *   points: {n, weights (row-major n x joints: affine combinations of the
  *   joints)}, palm: {n, weights (n x joints), thickness, normal (4 outline
  *   indices a, b, c, d: normal = (b - a) x (d - c)), colour}},
- *   marker_radius, rate, speed, autoplay, loop, background, layout ("side"
+ *   marker_radius, camera: {towards, up} (the first view: the direction
+ *   towards the viewer and the screen's up, in skeleton axes), rate, speed, autoplay, loop, background, layout ("side"
  *   or "overlay"), recordings: [{label, colour, n, pos (frame-major n x
  *   joints x 3), outside (n x joints 0/1 or null), markers (n x m x 3 or
  *   null), offset [x, y, z], opacity}].
@@ -361,9 +362,10 @@
           halfHeight = radius * 1.05 * Math.max(1, (wh[1] / wh[0]) * 0.9);
           camera = new THREE.OrthographicCamera(-1, 1, 1, -1, radius / 50, radius * 50);
           frustum(wh[0], wh[1]);
-          camera.up.set(0, -1, 0); // fingers (skeleton -y) point up on screen
-          // (R/hand-3d.R sets side-by-side hands across this line of sight, at one depth)
-          var view = new THREE.Vector3(0.55, -0.25, -1).normalize();
+          // the first view is the still pictures' (R sends its screen up and
+          // the direction towards the viewer; side-by-side hands stand across it)
+          camera.up.set(x.camera.up[0], x.camera.up[1], x.camera.up[2]);
+          var view = new THREE.Vector3(x.camera.towards[0], x.camera.towards[1], x.camera.towards[2]).normalize();
           camera.position.copy(centre).addScaledVector(view, radius * 4);
           // the light turns with the camera: from its upper left, as in the still pictures
           var key = new THREE.DirectionalLight(0xffffff, 0.6);

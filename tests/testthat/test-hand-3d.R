@@ -13,12 +13,17 @@ test_that("the widget carries every frame's posed joints, at the recording's rat
   # frame-major: frame f, joint j, coordinate c at ((f - 1) J + j - 1) 3 + c
   back <- aperm(array(r1$pos, c(3, J, r1$n)), c(3, 2, 1))
   expect_equal(back, unname(pos), tolerance = 0.006, ignore_attr = TRUE)
-  # side by side: the second hand is moved across the first view (hand3d.js
-  # looks along (0.55, -0.25, -1)), so both stand at one depth
+  # the first view is the still pictures' (oblique by default); side by side,
+  # the second hand is moved across it, to the right, so both stand at one depth
+  V <- view_matrix("oblique")
+  expect_equal(x$camera$towards, V[3, ], tolerance = 1e-6)
+  expect_equal(x$camera$up, V[2, ], tolerance = 1e-6)
   expect_equal(x$recordings[[1]]$offset, c(0, 0, 0))
   off <- x$recordings[[2]]$offset
   expect_gt(sqrt(sum(off^2)), 50)
-  expect_lt(abs(sum(off * c(0.55, -0.25, -1))), 0.1)
+  expect_lt(abs(sum(off * V[3, ])), 0.1)
+  expect_lt(abs(sum(off * V[2, ])), 0.1)
+  expect_gt(sum(off * V[1, ]), 50)
   # parents point at earlier joints; the hand's shape is the description of hand_geometry()
   expect_true(all(x$parent < seq_len(J) - 1L))
   expect_identical(x$geometry, hand_geometry_json(hand_geometry(sk)))
