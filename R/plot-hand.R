@@ -1,6 +1,6 @@
 # Pictures of hands: a pose is the skeleton's joint positions at one frame,
-# projected onto the screen for a chosen view and drawn as bones (segments
-# from each joint to its parent) and joints (points), one colour per finger.
+# projected onto the screen for a chosen view and drawn as the solid hand of
+# hand_geometry() (R/hand-geometry.R, R/plot-hand-solid.R).
 
 # The 3D joint positions of one or more frames as a long data frame
 # (class hand_pose: id, frame, joint, parent, finger, x, y, z in mm, plus a
