@@ -169,8 +169,8 @@ finger_labels <- c(th = "thumb", `if` = "index", mf = "middle", rf = "ring", lf 
 # legend (and the pose data for anyone reading the plot's layers).
 # Text sizes are in points; vignettes and reports show figures at 72 dpi,
 # so a point is a screen pixel there and nothing should be below 9.
-pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 10, geometry = hand_geometry()) {
-  solid <- solid_hand_polygons(pr, scale, geometry)
+pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 10, geometry = hand_geometry(),
+                        solid = solid_hand_polygons(pr, scale, geometry)) {
   fingers <- intersect(names(finger_labels), unique(pr$finger))
   legend <- legend && geometry$colour == "fingers"
   list(
@@ -313,21 +313,24 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     "First" else paste("Frame", paste(frame, collapse = ", ")), if (by == "grasp") "grasp type" else by)
   subtitle <- view_label(view)
   labels <- NULL
+  # the solid hands (their extent, not the joints', places them and their names)
+  solid <- solid_hand_polygons(pr, geometry = geometry)
   if (length(sets) > 1L) {
     # the sets' hands side by side in one panel per group (recorded left of
     # generated, as in the thesis' Appendix A), each named underneath: one
     # strip per type instead of one per type and set, so 33 types fit a page
-    width <- diff(range(pr$sx)) * 1.1
+    width <- diff(range(solid$px)) * 1.06
     pr$sx <- pr$sx + (as.integer(pr$set) - 1L) * width
+    solid$px <- solid$px + (as.integer(solid$set) - 1L) * width
     labels <- unique(pr[c("group", "set")])
-    labels$sx <- (as.integer(labels$set) - 1L) * width + mean(range(pr$sx[pr$set == levels(pr$set)[1]]))
-    labels$sy <- min(pr$sy) - 0.08 * diff(range(pr$sy))
+    labels$sx <- (as.integer(labels$set) - 1L) * width + mean(range(solid$px[solid$set == levels(pr$set)[1]]))
+    labels$sy <- min(solid$py) - 0.05 * diff(range(solid$py))
     # on two lines: a grid of one or two types is narrow (its aspect is fixed)
     subtitle <- paste0(paste(levels(pr$set), collapse = " | "), "\n", subtitle)
   }
   # type names wrap onto two lines ("Large / Diameter") so that six or more
   # panels a row keep them whole at 9 pt
-  g <- ggplot2::ggplot() + pose_layers(pr, strip_size = 9, geometry = geometry) +
+  g <- ggplot2::ggplot() + pose_layers(pr, strip_size = 9, geometry = geometry, solid = solid) +
     ggplot2::labs(title = title, subtitle = subtitle) +
     ggplot2::facet_wrap(~group, labeller = ggplot2::label_wrap_gen(11), drop = FALSE,
                         ncol = ncol)
@@ -335,7 +338,7 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     g <- g + ggplot2::geom_text(data = labels, ggplot2::aes(x = .data$sx, y = .data$sy, label = .data$set),
                                 size = 3, colour = "grey35", vjust = 0.5) +
       # room for the names under the hands
-      ggplot2::expand_limits(y = labels$sy[1] - 0.06 * diff(range(pr$sy)))
+      ggplot2::expand_limits(y = labels$sy[1] - 0.05 * diff(range(solid$py)))
   }
   g
 }
