@@ -45,9 +45,9 @@ solid_polygons <- function(S, geometry, scale = 1) {
   seg <- seg[seg$draw, , drop = FALSE]
   dep <- matrix(S[, , 3], H)
   hi <- apply(dep, 1, max)
-  # 1 at the hand's nearest point, 0 from 60% of a hand length behind it on
-  # (a flat hand seen face on is evenly lit)
-  near <- function(d) pmin(1, pmax(0, 1 - (hi - d) / (0.6 * geometry$hand_length * scale)))
+  # 1 at the hand's nearest point, 0 from a hand length behind it on (a flat
+  # hand seen face on is evenly lit)
+  near <- function(d) pmin(1, pmax(0, 1 - (hi - d) / (geometry$hand_length * scale)))
   P <- segment_points(S, geometry)
   pieces <- list()
   add <- function(x, y, fill, kind, piece, order, sub, lwd, keep = rep(TRUE, H)) {
@@ -69,7 +69,7 @@ solid_polygons <- function(S, geometry, scale = 1) {
     }
     palm_depth <- rowMeans(matrix(pts[, , 3], H))
     # a face turned away from the light is darker than one seen face on
-    lit <- function(nz, nx, ny) 1 - 0.3 * pmax(0, hand_light[3] - (nx * hand_light[1] + ny * hand_light[2] +
+    lit <- function(nz, nx, ny) 1 - 0.22 * pmax(0, hand_light[3] - (nx * hand_light[1] + ny * hand_light[2] +
                                                                       nz * hand_light[3]))
     shade_lit <- function(l) (1 - l) + 0.12 * (1 - near(palm_depth))
     face_fill <- shade_colour(palm$colour, shade_lit(lit(n[, 3], n[, 1], n[, 2])))
@@ -103,7 +103,7 @@ solid_polygons <- function(S, geometry, scale = 1) {
     order <- if (in_palm) palm_depth else d
     sub <- if (!in_palm) 0 else if (s$role == "forearm") -1 else 2
     body <- tapered_outline(c0, c1, r0, r1)
-    fill <- shade_colour(s$fill, 0.25 * (1 - near(d)))
+    fill <- shade_colour(s$fill, 0.22 * (1 - near(d)))
     add(body$x, body$y, fill, "bone", seg_name(geometry, s), order, sub, 0.18)
     # a highlight along the segment, towards the light (upper left)
     o <- 0.35 * c(-1, 1)
