@@ -107,3 +107,23 @@ test_that("a tapered segment's outline holds both end circles", {
   out <- tapered_outline(matrix(c(0, 0), 1), matrix(c(0, 0), 1), 10, 6)
   expect_equal(max(sqrt(out$x^2 + out$y^2)), 10, tolerance = 1e-9)
 })
+
+test_that("a skeleton without the palm's joints is drawn bone by bone, its own shape", {
+  sk <- hand_skeleton()
+  sk$joints$name <- sub("^if-", "ix-", sk$joints$name)    # no index finger as the palm knows it
+  geo <- hand_geometry(sk)
+  expect_null(geo$palm)
+  expect_true(all(geo$segments$draw))
+  expect_equal(nrow(geo$points), 0L)
+  p <- ggplot2::autoplot(sk, labels = FALSE)
+  solid <- p$layers[[1]]$data
+  expect_false("palm" %in% solid$kind)
+  expect_setequal(unique(solid$piece[solid$kind == "bone"]), sk$joints$name[-1])
+  # and the picture of a skeleton is drawn with that skeleton's shape, not the package's hand
+  longer <- hand_skeleton()
+  longer$joints[c("x", "y", "z")] <- 1.5 * longer$joints[c("x", "y", "z")]
+  expect_equal(hand_geometry(longer)$hand_length, 1.5 * hand_geometry()$hand_length)
+  wide <- ggplot2::autoplot(longer, labels = FALSE)$layers[[1]]$data
+  base <- ggplot2::autoplot(hand_skeleton(), labels = FALSE)$layers[[1]]$data
+  expect_equal(diff(range(wide$px)), 1.5 * diff(range(base$px)), tolerance = 1e-6)
+})
