@@ -456,6 +456,8 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
 #'   frames.
 #' @param skeleton,view For `"poses"`, `"hand"` and `"strip"`: a
 #'   [hand_skeleton()] and the viewing direction (see [autoplot.hand_pose()]).
+#' @param hand_colour For `"poses"`, `"hand"` and `"strip"`: `"skin"`
+#'   (default) or `"fingers"` (one colour per finger, with a legend).
 #' @param ... For `"poses"`, `"hand"` and `"strip"`, passed to
 #'   [forward_kinematics()].
 #' @return A ggplot object. For `"poses"` its layers' data have columns `set`
@@ -478,9 +480,11 @@ autoplot.grasps <- function(object, type = c("curves", "poses", "hand", "strip",
                             compare = NULL, label = NULL, frame = "last", by = "grasp", per_group = 1L,
                             ncol = NULL, recording = 1L, n_frames = 6L, grasp = NULL,
                             overlong = c(iqr_mult = 3, median_mult = 1.5), binwidth = 1,
-                            skeleton = hand_skeleton(), view = "oblique", ...) {
+                            skeleton = hand_skeleton(), view = "oblique", hand_colour = c("skin", "fingers"),
+                            ...) {
   call <- rlang::caller_env()
   type <- check_choice(type, arg = "type", call = rlang::current_env())
+  hand_colour <- check_choice(hand_colour, arg = "hand_colour", call = rlang::current_env())
   check_grasps(object, "object", call = call)
   sets <- function() {
     if (is.null(compare)) return(if (is.null(label)) object else stats::setNames(list(object), label))
@@ -494,11 +498,11 @@ autoplot.grasps <- function(object, type = c("curves", "poses", "hand", "strip",
   switch(type,
     curves = plot_grasp_curves(object, colour, dofs, max_recordings, call),
     poses = plot_pose_grid(sets(), frame = frame, by = by, per_group = per_group, skeleton = skeleton,
-                           view = view, ncol = ncol, ..., call = call),
+                           view = view, ncol = ncol, hand_colour = hand_colour, ..., call = call),
     hand = autoplot.hand_pose(hand_pose(object, frame = frame, skeleton = skeleton, ..., call = call),
-                              view = view),
+                              view = view, hand_colour = hand_colour),
     strip = plot_frame_strip(sets(), recording = recording, n_frames = n_frames, skeleton = skeleton,
-                             view = view, ..., call = call),
+                             view = view, hand_colour = hand_colour, ..., call = call),
     frame_counts = plot_frame_counts(object, grasp = grasp, rule = as_overlong_rule(overlong, call = call),
                                      binwidth = binwidth, call = call))
 }

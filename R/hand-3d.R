@@ -5,9 +5,13 @@
 
 #' An interactive 3D hand
 #'
-#' Draws one or more recordings as solid hands (bones as cylinders, joints
-#' as spheres, the palm as a surface, sized from the skeleton) that play at
-#' the recordings' real timing, in a page you can turn and zoom with the
+#' Draws one or more recordings as solid hands that play at the recordings'
+#' real timing: the shape every hand picture of the package draws (see
+#' [autoplot.hand_pose()]), a palm spanning the metacarpals from their bases
+#' across the carpus, the thumb from its carpometacarpal joint, finger
+#' segments that taper, in skin tone or one colour per finger. Hands side by
+#' side are seen through one orthographic camera (so from exactly the same
+#' direction), each named underneath, in a page you can turn and zoom with the
 #' mouse (drag to orbit, wheel to zoom, right-drag to pan), with
 #' play/pause, a time slider and a playback speed. It is an
 #' [htmlwidget][htmlwidgets::htmlwidgets-package]: it shows in the RStudio or
@@ -37,6 +41,10 @@
 #' @param rate Frames per second for matrix input (a `grasps` carries its
 #'   own).
 #' @param skeleton The [hand_skeleton()] that poses the hands.
+#' @param hand_colour `"skin"` (default) or `"fingers"` (each finger in its
+#'   own colour).
+#' @param view The first view, as in the still pictures (see
+#'   [autoplot.hand_pose()]; the default `"oblique"` is their default).
 #' @param background Background colour of the scene.
 #' @param width,height Size of the widget (CSS units or pixels); `NULL` for
 #'   the htmlwidgets defaults.
@@ -59,9 +67,11 @@
 #' htmlwidgets::saveWidget(w, f, selfcontained = FALSE)
 hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits = FALSE, markers = NULL,
                     speed = 1, autoplay = TRUE, loop = TRUE, rate = NULL, skeleton = hand_skeleton(),
-                    background = "#f7f7f5", width = NULL, height = NULL, elementId = NULL, ...) {
+                    hand_colour = c("skin", "fingers"), view = "oblique", background = "#f7f7f5",
+                    width = NULL, height = NULL, elementId = NULL, ...) {
   call <- rlang::caller_env()
   check_skeleton(skeleton, call = call)
+  hand_colour <- check_choice(hand_colour, arg = "hand_colour", call = rlang::current_env())
   layout <- check_choice(layout, arg = "layout", call = call)
   check_flag(limits, "limits", call = call)
   check_flag(autoplay, "autoplay", call = call)
@@ -97,7 +107,7 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
   marker_set <- if (is.null(markers)) NULL else resolve_marker_set(markers, call = call)
   joints <- skeleton$joints
   pidx <- skeleton_parent_index(skeleton)
-  chains <- skeleton_chains(skeleton)
+  geometry <- hand_geometry(skeleton, hand_colour)
   palette <- c("#4477aa", "#cc6677", "#228833", "#aa3377", "#66ccee", "#ccbb44", "#ee6677", "#bbbbbb")
   recs <- lapply(seq_along(hands), function(i) {
     h <- hands[[i]]
@@ -114,20 +124,22 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
          },
          extent = apply(pos, 3, range))
   })
-  # side by side, a hand's width apart, along the line across the camera's
-  # first view (hand3d.js looks along (0.55, -0.25, -1)): along the thumb's
-  # axis alone, the hands stood at different depths and looked different in size
-  width_mm <- max(vapply(recs, function(r) diff(r$extent[, 1]), numeric(1)))
-  across <- c(1, 0, 0.55) / sqrt(1 + 0.55^2)
+  # the first view is the still pictures' `view` (rows: screen right, up,
+  # towards the viewer); side by side, the hands stand a hand's width apart
+  # along the screen's right, so at one depth, seen from one direction
+  V <- view_matrix(view, call)
+  width_mm <- max(vapply(recs, function(r) diff(r$extent[, 1]), numeric(1)),
+                  vapply(recs, function(r) diff(r$extent[, 2]), numeric(1)))
   for (i in seq_along(recs)) {
-    recs[[i]]$offset <- if (layout == "side") round((i - 1) * 1.25 * width_mm * across, 2) else c(0, 0, 0)
+    recs[[i]]$offset <- if (layout == "side") round((i - 1) * 1.1 * width_mm * V[1, ], 2) else c(0, 0, 0)
     recs[[i]]$extent <- NULL
   }
   data <- list(joints = joints$name, parent = ifelse(is.na(pidx), -1L, pidx - 1L),
-               # as #rrggbb: three.js knows no R colour names ("grey40" drew the wrist white, with a console warning)
-               colour = grDevices::rgb(t(grDevices::col2rgb(unname(finger_colours[chains]))), maxColorValue = 255),
-               radius = bone_radii(skeleton),
-               palm = match(intersect(palm_outline, joints$name), joints$name) - 1L,
+               # the hand's solid shape, as every picture draws it (colours as
+               # #rrggbb: three.js knows no R colour names)
+               geometry = hand_geometry_json(geometry),
+               marker_radius = round(0.025 * geometry$hand_length, 2),
+               camera = list(towards = round(V[3, ], 6), up = round(V[2, ], 6)),
                layout = layout, rate = rates[[1]], speed = speed, autoplay = autoplay, loop = loop,
                background = background, recordings = recs)
   htmlwidgets::createWidget("hand3d", data, width = width, height = height, package = "handmotion",
@@ -204,13 +216,6 @@ joint_limit_flags <- function(h, joint_names, skeleton) {
     if (!is.na(j)) out[j, bad[, a]] <- 1L
   }
   as.vector(out)
-}
-
-# Bone radius at each joint (the bone from its parent), in mm: the rule of
-# the still pictures (bone_radius_rule()), from the skeleton's rest pose.
-bone_radii <- function(skeleton) {
-  r <- pose_radii(skeleton_rest_pose(skeleton))
-  round(unname(r[skeleton$joints$name]), 2)
 }
 
 #' Shiny bindings for the 3D hand

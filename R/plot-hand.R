@@ -1,6 +1,6 @@
 # Pictures of hands: a pose is the skeleton's joint positions at one frame,
-# projected onto the screen for a chosen view and drawn as bones (segments
-# from each joint to its parent) and joints (points), one colour per finger.
+# projected onto the screen for a chosen view and drawn as the solid hand of
+# hand_geometry() (R/hand-geometry.R, R/plot-hand-solid.R).
 
 # The 3D joint positions of one or more frames as a long data frame
 # (class hand_pose: id, frame, joint, parent, finger, x, y, z in mm, plus a
@@ -45,7 +45,8 @@ hand_pose <- function(x, frame = "last", skeleton = hand_skeleton(), ..., call =
     out <- cbind(out, meta[match(out$id, meta$id), extra, drop = FALSE])
   }
   rownames(out) <- NULL
-  structure(out, class = c("hand_pose", "data.frame"))
+  # the skeleton that posed the hand decides its solid shape (hand_geometry())
+  structure(out, class = c("hand_pose", "data.frame"), skeleton = skeleton)
 }
 
 pose_frames <- function(a, frame, id, call) {
@@ -80,7 +81,7 @@ skeleton_rest_pose <- function(skeleton) {
   pos <- skeleton_rest_positions(skeleton)
   a <- array(pos, c(1, dim(pos)), dimnames = list(NULL, rownames(pos), c("x", "y", "z")))
   out <- pose_long(a, "rest", skeleton, rlang::caller_env())
-  structure(out, class = c("hand_pose", "data.frame"))
+  structure(out, class = c("hand_pose", "data.frame"), skeleton = skeleton)
 }
 
 # Screen axes for a view: rows are screen right, screen up and towards the
@@ -162,34 +163,23 @@ finger_colours <- c(root = "grey40", th = "#D55E00", `if` = "#0072B2", mf = "#00
                     rf = "#CC79A7", lf = "#E69F00")
 finger_labels <- c(th = "thumb", `if` = "index", mf = "middle", rf = "ring", lf = "little")
 
-# Joints outlining the palm (wrist, thumb base, knuckles), in drawing order.
-palm_outline <- c("root", "th-tmc", "if-mcp", "mf-mcp", "rf-mcp", "lf-mcp")
-
-# The palm of every drawn hand as a polygon: a skeleton alone reads as a bunch
-# of sticks; a shaded palm shows at once where the hand is and which way the
-# fingers curl. Keeps every column of `pr`, so facets work on it.
-pose_palm <- function(pr) {
-  keep <- pr$joint %in% palm_outline
-  if (sum(palm_outline %in% pr$joint) < 4L) return(pr[0, , drop = FALSE])
-  out <- pr[keep, , drop = FALSE]
-  out$hand <- paste(out$id, out$frame, sep = "\r")
-  out[order(out$hand, match(out$joint, palm_outline)), , drop = FALSE]
-}
-
 # Layers shared by every hand drawing (autoplot.hand_pose, plot_pose_grid,
-# plot_frame_strip, plot_marker_sets): the solid hands (R/plot-hand-solid.R),
-# then the joints as invisible points that carry the finger legend (and the
-# pose data for anyone reading the plot's layers).
+# plot_frame_strip, plot_marker_sets): the solid hands (the shape of
+# hand_geometry(), cut into polygons by R/plot-hand-solid.R), then, with
+# finger colours, the joints as invisible points that carry the finger
+# legend (and the pose data for anyone reading the plot's layers).
 # Text sizes are in points; vignettes and reports show figures at 72 dpi,
 # so a point is a screen pixel there and nothing should be below 9.
-pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 10) {
-  solid <- solid_hand_polygons(pr, scale)
+pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 10, geometry = hand_geometry(),
+                        solid = solid_hand_polygons(pr, scale, geometry)) {
   fingers <- intersect(names(finger_labels), unique(pr$finger))
+  legend <- legend && geometry$colour == "fingers"
   list(
     ggplot2::geom_polygon(data = solid, ggplot2::aes(x = .data$px, y = .data$py, group = .data$draw,
-                                                     fill = .data$fill),
-                          colour = "grey25", linewidth = 0.12),
+                                                     fill = .data$fill, linewidth = .data$lwd),
+                          colour = grDevices::adjustcolor(hand_outline_colour, 0.55)),
     ggplot2::scale_fill_identity(),
+    ggplot2::scale_linewidth_identity(),
     # the legend names the fingers (the polygons' colours are shaded by depth)
     ggplot2::geom_point(data = pr, ggplot2::aes(x = .data$sx, y = .data$sy, colour = .data$finger),
                         alpha = 0, size = 0.1),
@@ -211,6 +201,14 @@ pose_layers <- function(pr, scale = 1, legend = TRUE, strip_size = 10) {
   )
 }
 
+# The geometry a pose is drawn with: from the skeleton that posed it (kept by
+# hand_pose()), else the package's hand.
+pose_geometry <- function(pose, hand_colour, skeleton = NULL, call = rlang::caller_env()) {
+  hand_colour <- check_choice(hand_colour, c("skin", "fingers"), arg = "hand_colour", call = call)
+  skeleton <- skeleton %||% attr(pose, "skeleton") %||% hand_skeleton()
+  hand_geometry(skeleton, hand_colour)
+}
+
 view_label <- function(view) {
   if (is.numeric(view)) return(sprintf("view: azimuth %g, elevation %g degrees", view[1], view[2]))
   switch(view, back = "seen from the back of the hand", palm = "seen from the palm",
@@ -222,10 +220,14 @@ view_label <- function(view) {
 
 #' Draw a hand pose
 #'
-#' Projects the joints onto the screen for `view` and draws the palm (shaded,
-#' wrist to knuckles), bones and joints, one colour per finger (legend at the
-#' bottom); several recordings or frames give one panel each, labelled by
-#' grasp type when the pose carries one.
+#' Projects the hand onto the screen for `view` and draws it solid: a palm
+#' spanning the metacarpals from their bases across the carpus to the
+#' knuckles, the thumb from its carpometacarpal joint, finger segments that
+#' taper towards the tips, in skin tone shaded by depth and light (or one
+#' colour per finger, with a legend). The shape is the one every hand
+#' picture of the package draws, the 3D widget ([hand_3d()]) and the videos
+#' ([write_hand_animation()]) included. Several recordings or frames give
+#' one panel each, labelled by grasp type when the pose carries one.
 #'
 #' @param object A hand pose: what `autoplot(<grasps>, type = "hand")`
 #'   ([autoplot.grasps()]) and `autoplot(<hand_skeleton>)` draw with this method.
@@ -235,6 +237,8 @@ view_label <- function(view) {
 #'   `c(-135, 20)`), or `c(azimuth, elevation)` in degrees (turning the back
 #'   view about the screen's vertical, then tilting it).
 #' @param labels Label the joints with their names?
+#' @param hand_colour `"skin"` (default) or `"fingers"` (each finger in its
+#'   own colour, named in a legend).
 #' @param ... Unused.
 #' @return A ggplot object.
 #' @export
@@ -242,10 +246,11 @@ view_label <- function(view) {
 #' @examples
 #' g <- simulate_grasps(subjects = 1, grasps = 1, objects = 1, trials = 1, seed = 1)
 #' ggplot2::autoplot(g, type = "hand", view = "palm")
-autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, ...) {
+autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, hand_colour = c("skin", "fingers"), ...) {
+  geometry <- pose_geometry(object, hand_colour, call = rlang::caller_env())
   p <- project_pose(as.data.frame(unclass(object), stringsAsFactors = FALSE), view, rlang::caller_env())
   p$panel <- pose_panels(p)
-  g <- ggplot2::ggplot() + pose_layers(p) + ggplot2::labs(subtitle = view_label(view))
+  g <- ggplot2::ggplot() + pose_layers(p, geometry = geometry) + ggplot2::labs(subtitle = view_label(view))
   if (labels) {
     g <- g + ggplot2::geom_text(data = p, ggplot2::aes(x = .data$sx, y = .data$sy, label = .data$joint),
                                 size = 2.3, vjust = -0.8)
@@ -265,9 +270,10 @@ autoplot.hand_pose <- function(object, view = "oblique", labels = FALSE, ...) {
 # larger hands, which keep their shape, so a grid fills the width of a figure
 # only when its height allows (about 1.5 times the panel width per row).
 plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
-                           skeleton = hand_skeleton(), view = "oblique", ncol = NULL, ...,
-                           call = rlang::caller_env()) {
+                           skeleton = hand_skeleton(), view = "oblique", ncol = NULL,
+                           hand_colour = "skin", ..., call = rlang::caller_env()) {
   check_whole(ncol, "ncol", allow_null = TRUE, call = call)
+  geometry <- pose_geometry(NULL, hand_colour, skeleton, call = call)
   per_group <- check_whole(per_group, "per_group", call = call)
   sets <- if (inherits(x, "grasps")) list(x) else x
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasps"))) {
@@ -308,21 +314,24 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     "First" else paste("Frame", paste(frame, collapse = ", ")), if (by == "grasp") "grasp type" else by)
   subtitle <- view_label(view)
   labels <- NULL
+  # the solid hands (their extent, not the joints', places them and their names)
+  solid <- solid_hand_polygons(pr, geometry = geometry)
   if (length(sets) > 1L) {
     # the sets' hands side by side in one panel per group (recorded left of
     # generated, as in the thesis' Appendix A), each named underneath: one
     # strip per type instead of one per type and set, so 33 types fit a page
-    width <- diff(range(pr$sx)) * 1.1
+    width <- diff(range(solid$px)) * 1.06
     pr$sx <- pr$sx + (as.integer(pr$set) - 1L) * width
+    solid$px <- solid$px + (as.integer(solid$set) - 1L) * width
     labels <- unique(pr[c("group", "set")])
-    labels$sx <- (as.integer(labels$set) - 1L) * width + mean(range(pr$sx[pr$set == levels(pr$set)[1]]))
-    labels$sy <- min(pr$sy) - 0.08 * diff(range(pr$sy))
+    labels$sx <- (as.integer(labels$set) - 1L) * width + mean(range(solid$px[solid$set == levels(pr$set)[1]]))
+    labels$sy <- min(solid$py) - 0.05 * diff(range(solid$py))
     # on two lines: a grid of one or two types is narrow (its aspect is fixed)
     subtitle <- paste0(paste(levels(pr$set), collapse = " | "), "\n", subtitle)
   }
   # type names wrap onto two lines ("Large / Diameter") so that six or more
   # panels a row keep them whole at 9 pt
-  g <- ggplot2::ggplot() + pose_layers(pr, strip_size = 9) +
+  g <- ggplot2::ggplot() + pose_layers(pr, strip_size = 9, geometry = geometry, solid = solid) +
     ggplot2::labs(title = title, subtitle = subtitle) +
     ggplot2::facet_wrap(~group, labeller = ggplot2::label_wrap_gen(11), drop = FALSE,
                         ncol = ncol)
@@ -330,7 +339,7 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     g <- g + ggplot2::geom_text(data = labels, ggplot2::aes(x = .data$sx, y = .data$sy, label = .data$set),
                                 size = 3, colour = "grey35", vjust = 0.5) +
       # room for the names under the hands
-      ggplot2::expand_limits(y = labels$sy[1] - 0.06 * diff(range(pr$sy)))
+      ggplot2::expand_limits(y = labels$sy[1] - 0.05 * diff(range(solid$py)))
   }
   g
 }

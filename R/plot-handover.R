@@ -28,7 +28,8 @@ plot_marker_sets <- function(sets, skeleton = hand_skeleton(), view = "back", fo
                     selected = ms$marker %in% sets[[nm]], stringsAsFactors = FALSE)
     list(pose = p, markers = m)
   })
-  pose_all <- structure(do.call(rbind, lapply(panels, `[[`, "pose")), class = c("hand_pose", "data.frame"))
+  pose_all <- structure(do.call(rbind, lapply(panels, `[[`, "pose")), class = c("hand_pose", "data.frame"),
+                        skeleton = skeleton)
   marks <- do.call(rbind, lapply(panels, `[[`, "markers"))
   marks <- project_pose(marks, view, call)
   marks$panel <- factor(marks$id, levels = names(sets))

@@ -37,7 +37,8 @@ plot_frame_counts <- function(x, grasp = NULL, rule = overlong_rule(), binwidth 
 # One recording of each set as a row of hands at equally spaced fractions of
 # its duration (Tables 5.4 and 5.5); autoplot(<grasps>, type = "strip").
 plot_frame_strip <- function(x, recording = 1L, n_frames = 6L, skeleton = hand_skeleton(),
-                             view = "oblique", ..., call = rlang::caller_env()) {
+                             view = "oblique", hand_colour = "skin", ..., call = rlang::caller_env()) {
+  geometry <- pose_geometry(NULL, hand_colour, skeleton, call = call)
   sets <- if (inherits(x, "grasps")) list(x) else x
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasps"))) {
     hm_abort("{.arg x} must be a {.cls grasps} object or a list of them, not {.obj_type_friendly {x}}.",
@@ -72,7 +73,7 @@ plot_frame_strip <- function(x, recording = 1L, n_frames = 6L, skeleton = hand_s
   p$id <- paste(p$set, p$id)
   pr <- project_pose(p, view, call)
   grasp <- unique(stats::na.omit(as.character(p$grasp)))
-  g <- ggplot2::ggplot() + pose_layers(pr) +
+  g <- ggplot2::ggplot() + pose_layers(pr, geometry = geometry) +
     ggplot2::labs(title = if (length(grasp) == 1L) grasp else NULL,
                   subtitle = paste0("columns: fraction of each recording's duration\n", view_label(view)))
   if (length(sets) > 1L) {

@@ -61,6 +61,7 @@ hand_animation_html <- function(pose, skeleton, keep, interval_ms, fps, size, ti
   px <- function(v) pad + ox + (v - rx[1]) * s
   py <- function(v) size - pad - oy - (v - ry[1]) * s          # SVG y grows downwards
   chains <- skeleton_finger_paths(skeleton)
+  geometry <- hand_geometry(skeleton)
   groups <- vapply(seq_along(keep), function(k) {
     p <- pose[pose$frame == keep[k], , drop = FALSE]
     lines <- vapply(names(chains), function(f) {
@@ -68,11 +69,11 @@ hand_animation_html <- function(pose, skeleton, keep, interval_ms, fps, size, ti
       pts <- paste(sprintf("%.1f,%.1f", px(p$sx[idx]), py(p$sy[idx])), collapse = " ")
       sprintf('<polyline points="%s" stroke="%s"/>', pts, finger_colours[[f]])
     }, character(1))
-    # the shaded palm, as in the static pictures (autoplot.hand_pose)
-    palm <- pose_palm(p)
-    palm_svg <- if (nrow(palm)) {
+    # the palm's outline of the static pictures (hand_geometry())
+    palm_svg <- if (!is.null(geometry$palm)) {
+      palm <- palm_points(pose_screen_array(p, geometry)$S, geometry)[1, , ]
       sprintf('<polygon class="palm" points="%s" fill="#e5e5e5" stroke="#b3b3b3" stroke-width="1"/>',
-              paste(sprintf("%.1f,%.1f", px(palm$sx), py(palm$sy)), collapse = " "))
+              paste(sprintf("%.1f,%.1f", px(palm[, 1]), py(palm[, 2])), collapse = " "))
     } else ""
     sprintf('<g class="f" data-frame="%d" style="display:none">%s%s</g>', keep[k], palm_svg,
             paste(lines, collapse = ""))

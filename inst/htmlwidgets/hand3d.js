@@ -1,19 +1,27 @@
 /* handmotion's 3D hand (hand_3d() in R/hand-3d.R): a solid hand per
- * recording -- bones as cylinders with spheres at the joints (capsules), the
- * palm as a surface -- played back at the recording's own rate, with an
- * orbit camera, play/pause, a time slider and a speed choice.
+ * recording played back at the recording's own rate, with an orbit camera,
+ * play/pause, a time slider and a speed choice.
  *
- * The R side sends joint positions already posed (forward kinematics is done
- * once, in R), so this file only places meshes. Data (x):
- *   joints, parent (0-based, -1 for the root), colour (per joint), radius
- *   (per joint, mm), palm (0-based outline indices), rate, speed, autoplay,
- *   loop, background, layout ("side" or "overlay"), recordings: [{label, colour, n, pos (frame-major
- *   n x joints x 3), outside (n x joints 0/1 or null), markers (n x m x 3
- *   or null), offset [x, y, z], opacity}].
+ * The hand's solid shape is not decided here: R sends its description
+ * (hand_geometry_json() in R/hand-geometry.R, the shape every picture of the
+ * package draws), and joint positions already posed (forward kinematics is
+ * done once, in R), so this file only places meshes. Data (x):
+ *   joints, parent (0-based, -1 for the root), geometry: {from, to (0-based
+ *   ends of each segment: joints, then extra points), r_from, r_to (radius
+ *   at each end, mm), fill (#rrggbb), draw (false: inside the palm), skin,
+ *   points: {n, weights (row-major n x joints: affine combinations of the
+ *   joints)}, palm: {n, weights (n x joints), thickness, normal (4 outline
+ *   indices a, b, c, d: normal = (b - a) x (d - c)), colour}},
+ *   marker_radius, camera: {towards, up} (the first view: the direction
+ *   towards the viewer and the screen's up, in skeleton axes), rate, speed, autoplay, loop, background, layout ("side"
+ *   or "overlay"), recordings: [{label, colour, n, pos (frame-major n x
+ *   joints x 3), outside (n x joints 0/1 or null), markers (n x m x 3 or
+ *   null), offset [x, y, z], opacity}].
  *
  * For tests in a headless browser the container carries data-ready="1"
- * once drawn and data-frame (the first recording's frame on screen), and
- * any script error is written to document.body's data-js-error. */
+ * once drawn, data-frame (the first recording's frame on screen) and
+ * data-meshes (the number of segment meshes drawn), and any script error is
+ * written to document.body's data-js-error. */
 (function () {
   "use strict";
 
@@ -34,39 +42,64 @@
     return f < 0 ? 0 : (f >= rec.n ? rec.n - 1 : f);
   }
 
+  // affine combinations (row-major rows x J weights) of frame f's joints, into out (rows x 3)
+  function combine(weights, rows, J, pos, o, out) {
+    for (var v = 0; v < rows; v++) {
+      var px = 0, py = 0, pz = 0;
+      for (var j = 0; j < J; j++) {
+        var w = weights[v * J + j];
+        if (w === 0) continue;
+        px += w * pos[o + 3 * j]; py += w * pos[o + 3 * j + 1]; pz += w * pos[o + 3 * j + 2];
+      }
+      out[3 * v] = px; out[3 * v + 1] = py; out[3 * v + 2] = pz;
+    }
+  }
+
   function buildHand(scene, x, rec) {
-    var J = x.joints.length;
+    var J = x.joints.length, geo = x.geometry;
+    var K = geo.points ? geo.points.n : 0;
     var group = new THREE.Group();
     var opacity = rec.opacity === undefined ? 1 : rec.opacity;
     var material = function (colour) {
       return new THREE.MeshStandardMaterial({
-        color: colour, roughness: 0.55, metalness: 0.05,
+        color: colour, roughness: 0.62, metalness: 0.0,
         transparent: opacity < 1, opacity: opacity
       });
     };
-    var jointMat = [], spheres = [], bones = [];
-    for (var j = 0; j < J; j++) {
-      var colour = rec.colour ? rec.colour : x.colour[j];
-      jointMat.push(material(colour));
-      var s = new THREE.Mesh(new THREE.SphereGeometry(x.radius[j] * 1.08, 20, 14), jointMat[j]);
-      group.add(s);
-      spheres.push(s);
-      if (x.parent[j] >= 0) {
-        var c = new THREE.Mesh(new THREE.CylinderGeometry(1, 1, 1, 20, 1, true), material(colour));
-        group.add(c);
-        bones.push({ mesh: c, a: x.parent[j], b: j, r: x.radius[j] });
-      }
+    // segments: a truncated cone (unit height, scaled to the bone's length)
+    // capped by a sphere at each end, sized by the description's radii
+    var segs = [], spheres = [];
+    for (var s = 0; s < geo.from.length; s++) {
+      if (!geo.draw[s]) continue;
+      var colour = rec.colour || geo.fill[s];
+      var r0 = geo.r_from[s], r1 = geo.r_to[s];
+      var cone = new THREE.Mesh(new THREE.CylinderGeometry(r1, r0, 1, 24, 1, true), material(colour));
+      group.add(cone);
+      segs.push({ mesh: cone, a: geo.from[s], b: geo.to[s] });
+      [[geo.from[s], r0], [geo.to[s], r1]].forEach(function (end) {
+        var mat = material(colour);
+        var ball = new THREE.Mesh(new THREE.SphereGeometry(end[1], 24, 16), mat);
+        group.add(ball);
+        spheres.push({ mesh: ball, at: end[0], mat: mat, base: new THREE.Color(colour) });
+      });
     }
-    // the palm: a fan of triangles from the centroid of its outline
-    var P = x.palm.length, palm = null;
+    // the palm: a slab along its normal; top and bottom fans from the centre
+    // (vertices 0..P and P+1..2P+1) and its sides, four vertices each of
+    // their own so that their edges stay sharp
+    var palm = null, P = geo.palm ? geo.palm.n : 0, palmPts = new Float64Array(3 * Math.max(P, 1));
     if (P >= 3) {
-      var geo = new THREE.BufferGeometry();
-      geo.setAttribute("position", new THREE.BufferAttribute(new Float32Array((P + 1) * 3), 3));
-      var idx = [];
-      for (var k = 0; k < P; k++) idx.push(P, k, (k + 1) % P);
-      geo.setIndex(idx);
-      palm = new THREE.Mesh(geo, new THREE.MeshStandardMaterial({
-        color: rec.colour || 0xd9c2a7, roughness: 0.7, side: THREE.DoubleSide,
+      var g = new THREE.BufferGeometry();
+      g.setAttribute("position", new THREE.BufferAttribute(new Float32Array((6 * P + 2) * 3), 3));
+      var idx = [], S0 = 2 * P + 2;
+      for (var k = 0; k < P; k++) {
+        var k2 = (k + 1) % P, q0 = S0 + 4 * k;
+        idx.push(P, k, k2);                              // top
+        idx.push(2 * P + 1, P + 1 + k2, P + 1 + k);      // bottom
+        idx.push(q0, q0 + 2, q0 + 1, q0, q0 + 3, q0 + 2); // side k: top k, top k2, bottom k2, bottom k
+      }
+      g.setIndex(idx);
+      palm = new THREE.Mesh(g, new THREE.MeshStandardMaterial({
+        color: rec.colour || geo.palm.colour, roughness: 0.62, side: THREE.DoubleSide,
         transparent: opacity < 1, opacity: opacity
       }));
       group.add(palm);
@@ -74,61 +107,100 @@
     var markers = [];
     var M = rec.markers ? rec.markers.length / (rec.n * 3) : 0;
     for (var m = 0; m < M; m++) {
-      var mk = new THREE.Mesh(new THREE.SphereGeometry(x.radius[0] * 0.7, 14, 10),
-                              new THREE.MeshStandardMaterial({ color: MARKER_COLOUR, roughness: 0.3 }));
+      // markers sit on the bones' axes, inside the solid fingers: drawn over them
+      var mk = new THREE.Mesh(new THREE.SphereGeometry(x.marker_radius, 14, 10),
+                              new THREE.MeshBasicMaterial({ color: MARKER_COLOUR, depthTest: false,
+                                                            transparent: true, opacity: 0.85 }));
+      mk.renderOrder = 10;
       group.add(mk);
       markers.push(mk);
     }
     group.position.set(rec.offset[0], rec.offset[1], rec.offset[2]);
     scene.add(group);
-    var base = x.colour.map(function (c) { return new THREE.Color(rec.colour || c); });
+    var pts = new Float64Array(3 * (J + K)), extra = new Float64Array(3 * Math.max(K, 1));
     var pa = new THREE.Vector3(), pb = new THREE.Vector3(), dir = new THREE.Vector3();
+    var ab = new THREE.Vector3(), cd = new THREE.Vector3(), nrm = new THREE.Vector3();
 
-    return function pose(f) {
+    function pose(f) {
       var o = f * J * 3, pos = rec.pos;
-      for (var j = 0; j < J; j++) {
-        spheres[j].position.set(pos[o + 3 * j], pos[o + 3 * j + 1], pos[o + 3 * j + 2]);
-        var out = rec.outside && rec.outside[f * J + j] === 1;
-        jointMat[j].color.set(out ? LIMIT_COLOUR : base[j]);
+      for (var i = 0; i < 3 * J; i++) pts[i] = pos[o + i];
+      if (K > 0) {
+        combine(geo.points.weights, K, J, pos, o, extra);
+        for (var e = 0; e < 3 * K; e++) pts[3 * J + e] = extra[e];
       }
-      for (var b = 0; b < bones.length; b++) {
-        var bone = bones[b];
-        pa.copy(spheres[bone.a].position);
-        pb.copy(spheres[bone.b].position);
+      for (var b = 0; b < segs.length; b++) {
+        var seg = segs[b];
+        pa.set(pts[3 * seg.a], pts[3 * seg.a + 1], pts[3 * seg.a + 2]);
+        pb.set(pts[3 * seg.b], pts[3 * seg.b + 1], pts[3 * seg.b + 2]);
         dir.subVectors(pb, pa);
         var len = dir.length();
-        bone.mesh.position.addVectors(pa, pb).multiplyScalar(0.5);
-        if (len > 1e-9) bone.mesh.quaternion.setFromUnitVectors(UP, dir.divideScalar(len));
-        bone.mesh.scale.set(bone.r, Math.max(len, 1e-6), bone.r);
+        seg.mesh.position.addVectors(pa, pb).multiplyScalar(0.5);
+        if (len > 1e-9) seg.mesh.quaternion.setFromUnitVectors(UP, dir.divideScalar(len));
+        seg.mesh.scale.set(1, Math.max(len, 1e-6), 1);
+      }
+      for (var q = 0; q < spheres.length; q++) {
+        var sp = spheres[q], at = sp.at;
+        sp.mesh.position.set(pts[3 * at], pts[3 * at + 1], pts[3 * at + 2]);
+        var out = at < J && rec.outside && rec.outside[f * J + at] === 1;
+        sp.mat.color.copy(out ? new THREE.Color(LIMIT_COLOUR) : sp.base);
       }
       if (palm) {
+        combine(geo.palm.weights, P, J, pos, o, palmPts);
+        var nv = geo.palm.normal;
+        ab.set(palmPts[3 * nv[1]] - palmPts[3 * nv[0]], palmPts[3 * nv[1] + 1] - palmPts[3 * nv[0] + 1],
+               palmPts[3 * nv[1] + 2] - palmPts[3 * nv[0] + 2]);
+        cd.set(palmPts[3 * nv[3]] - palmPts[3 * nv[2]], palmPts[3 * nv[3] + 1] - palmPts[3 * nv[2] + 1],
+               palmPts[3 * nv[3] + 2] - palmPts[3 * nv[2] + 2]);
+        nrm.crossVectors(ab, cd).normalize().multiplyScalar(geo.palm.thickness / 2);
         var arr = palm.geometry.attributes.position.array, cx = 0, cy = 0, cz = 0;
-        for (var k = 0; k < P; k++) {
-          var q = o + 3 * x.palm[k];
-          arr[3 * k] = pos[q]; arr[3 * k + 1] = pos[q + 1]; arr[3 * k + 2] = pos[q + 2];
-          cx += pos[q]; cy += pos[q + 1]; cz += pos[q + 2];
+        for (var v = 0; v < P; v++) {
+          var X = palmPts[3 * v], Y = palmPts[3 * v + 1], Z = palmPts[3 * v + 2];
+          arr[3 * v] = X + nrm.x; arr[3 * v + 1] = Y + nrm.y; arr[3 * v + 2] = Z + nrm.z;
+          var w = 3 * (P + 1 + v);
+          arr[w] = X - nrm.x; arr[w + 1] = Y - nrm.y; arr[w + 2] = Z - nrm.z;
+          cx += X; cy += Y; cz += Z;
         }
-        arr[3 * P] = cx / P; arr[3 * P + 1] = cy / P; arr[3 * P + 2] = cz / P;
+        cx /= P; cy /= P; cz /= P;
+        arr[3 * P] = cx + nrm.x; arr[3 * P + 1] = cy + nrm.y; arr[3 * P + 2] = cz + nrm.z;
+        var c2 = 3 * (2 * P + 1);
+        arr[c2] = cx - nrm.x; arr[c2 + 1] = cy - nrm.y; arr[c2 + 2] = cz - nrm.z;
+        for (var u = 0; u < P; u++) {
+          var u2 = (u + 1) % P, corner = [u, u2, P + 1 + u2, P + 1 + u];
+          for (var cc = 0; cc < 4; cc++) {
+            var to = 3 * (2 * P + 2 + 4 * u + cc), from = 3 * corner[cc];
+            arr[to] = arr[from]; arr[to + 1] = arr[from + 1]; arr[to + 2] = arr[from + 2];
+          }
+        }
         palm.geometry.attributes.position.needsUpdate = true;
         palm.geometry.computeVertexNormals();
         palm.geometry.computeBoundingSphere();
       }
-      for (var m = 0; m < markers.length; m++) {
-        var r = (f * markers.length + m) * 3;
-        markers[m].position.set(rec.markers[r], rec.markers[r + 1], rec.markers[r + 2]);
+      for (var mm = 0; mm < markers.length; mm++) {
+        var r = (f * markers.length + mm) * 3;
+        markers[mm].position.set(rec.markers[r], rec.markers[r + 1], rec.markers[r + 2]);
       }
+    }
+    return { pose: pose, group: group, segments: segs.length };
+  }
+
+  // the box around a hand over its whole recording: joints and extra points (the forearm)
+  function handBox(x, rec) {
+    var box = new THREE.Box3(), v = new THREE.Vector3(), J = x.joints.length;
+    var K = x.geometry.points ? x.geometry.points.n : 0, extra = new Float64Array(3 * Math.max(K, 1));
+    var add = function (a, i) {
+      box.expandByPoint(v.set(a[i] + rec.offset[0], a[i + 1] + rec.offset[1], a[i + 2] + rec.offset[2]));
     };
+    for (var i = 0; i < rec.pos.length; i += 3) add(rec.pos, i);
+    for (var f = 0; f < rec.n && K > 0; f++) {
+      combine(x.geometry.points.weights, K, J, rec.pos, f * J * 3, extra);
+      for (var e = 0; e < 3 * K; e += 3) add(extra, e);
+    }
+    return box;
   }
 
   function bounds(x) {
     var box = new THREE.Box3();
-    var v = new THREE.Vector3();
-    x.recordings.forEach(function (rec) {
-      for (var i = 0; i < rec.pos.length; i += 3) {
-        v.set(rec.pos[i] + rec.offset[0], rec.pos[i + 1] + rec.offset[1], rec.pos[i + 2] + rec.offset[2]);
-        box.expandByPoint(v);
-      }
-    });
+    x.recordings.forEach(function (rec) { box.union(handBox(x, rec)); });
     return box;
   }
 
@@ -160,14 +232,12 @@
   function legend(el, x) {
     var div = document.createElement("div");
     div.className = "hand3d-legend";
-    div.style.cssText = "position:absolute;left:8px;top:6px;font:12px sans-serif;color:#222;" +
+    div.style.cssText = "position:absolute;left:8px;top:6px;font:13px sans-serif;color:#222;" +
       "background:rgba(255,255,255,0.7);padding:2px 6px;border-radius:3px";
     var esc = function (t) { return t.replace(/&/g, "&amp;").replace(/</g, "&lt;"); };
     if (x.layout === "side" && x.recordings.length > 1) {
-      // which hand is which: they stand in this order, left to right, in the first view
-      div.innerHTML = "<div>left to right (as first shown):</div>" + x.recordings.map(function (r, i) {
-        return "<div>" + (i + 1) + ". " + esc(r.label) + "</div>";
-      }).join("");
+      // each hand is named underneath (handLabels); this says what the view is
+      div.innerHTML = "<div>" + x.recordings.length + " hands, one camera: drag to turn them together</div>";
     } else {
       div.innerHTML = x.recordings.map(function (r) {
         var sw = r.colour ? '<span style="display:inline-block;width:10px;height:10px;margin-right:4px;background:' +
@@ -178,11 +248,44 @@
     el.appendChild(div);
   }
 
+  // Side by side: a label under each hand, kept there as the camera turns
+  // (the corners of the hand's box over the whole recording, projected).
+  function handLabels(el, x) {
+    if (!(x.layout === "side" && x.recordings.length > 1)) return null;
+    return x.recordings.map(function (rec) {
+      var div = document.createElement("div");
+      div.className = "hand3d-label";
+      div.style.cssText = "position:absolute;transform:translateX(-50%);font:13px sans-serif;color:#222;" +
+        "text-align:center;white-space:pre;background:rgba(255,255,255,0.6);padding:0 4px;border-radius:3px";
+      // on two lines ("recorded: id" / "(type)"), as in the videos: side by side, one line each runs into the next
+      div.textContent = rec.label.replace(" (", "\n(");
+      el.appendChild(div);
+      return { div: div, box: handBox(x, rec) };
+    });
+  }
+
+  function placeLabels(labels, camera, w, h) {
+    if (!labels) return;
+    var v = new THREE.Vector3();
+    labels.forEach(function (l) {
+      var lo = -Infinity, xs = 0;
+      for (var c = 0; c < 8; c++) {
+        v.set(c & 1 ? l.box.max.x : l.box.min.x, c & 2 ? l.box.max.y : l.box.min.y, c & 4 ? l.box.max.z : l.box.min.z);
+        v.project(camera);
+        var sy = (1 - v.y) / 2 * h;
+        if (sy > lo) lo = sy;
+        xs += (v.x + 1) / 2 * w / 8;
+      }
+      l.div.style.left = Math.round(xs) + "px";
+      l.div.style.top = Math.round(Math.min(lo + 4, h - 70)) + "px";
+    });
+  }
+
   HTMLWidgets.widget({
     name: "hand3d",
     type: "output",
     factory: function (el, width, height) {
-      var renderer = null, scene, camera, controls, ui, poses = [], x = null;
+      var renderer = null, scene, camera, controls, ui, poses = [], x = null, labels = null, halfHeight = 1;
       var playing = false, t = 0, duration = 0, last = null;
 
       function size() {
@@ -192,7 +295,7 @@
 
       function show(time) {
         t = Math.max(0, Math.min(time, duration));
-        for (var i = 0; i < poses.length; i++) poses[i](frameTime(x.recordings[i], x.rate, t));
+        for (var i = 0; i < poses.length; i++) poses[i].pose(frameTime(x.recordings[i], x.rate, t));
         var f0 = frameTime(x.recordings[0], x.rate, t);
         el.setAttribute("data-frame", f0);
         ui.slider.value = duration > 0 ? Math.round(1000 * t / duration) : 0;
@@ -223,7 +326,18 @@
           last = now;
         }
         controls.update();
+        var wh = size();
+        placeLabels(labels, camera, wh[0], wh[1]);
         renderer.render(scene, camera);
+      }
+
+      // an orthographic camera: hands side by side are seen from exactly the
+      // same direction (and as in the still pictures, which are projections)
+      function frustum(w, h) {
+        var a = w / h;
+        camera.left = -halfHeight * a; camera.right = halfHeight * a;
+        camera.top = halfHeight; camera.bottom = -halfHeight;
+        camera.updateProjectionMatrix();
       }
 
       return {
@@ -238,22 +352,26 @@
           renderer.setClearColor(new THREE.Color(x.background), 1);
           el.appendChild(renderer.domElement);
           scene = new THREE.Scene();
-          scene.add(new THREE.HemisphereLight(0xffffff, 0x8d7c6a, 0.75));
-          var key = new THREE.DirectionalLight(0xffffff, 0.65);
-          scene.add(key);
+          scene.add(new THREE.HemisphereLight(0xffffff, 0x8d7c6a, 0.7));
           poses = x.recordings.map(function (rec) { return buildHand(scene, x, rec); });
+          el.setAttribute("data-meshes", poses.map(function (p) { return p.segments; }).join(","));
 
           // frame the hands, seen from the palm and turned towards the thumb
           var box = bounds(x), centre = box.getCenter(new THREE.Vector3());
           var radius = box.getSize(new THREE.Vector3()).length() / 2;
-          camera = new THREE.PerspectiveCamera(35, wh[0] / wh[1], radius / 50, radius * 50);
-          camera.up.set(0, -1, 0); // fingers (skeleton -y) point up on screen
-          // (R/hand-3d.R sets side-by-side hands across this line of sight, at one depth)
-          var view = new THREE.Vector3(0.55, -0.25, -1).normalize();
-          var dist = radius / Math.sin(THREE.MathUtils.degToRad(35 / 2)) *
-            Math.max(1, wh[1] / wh[0]) * 0.75;
-          camera.position.copy(centre).addScaledVector(view, dist);
-          key.position.copy(camera.position).add(new THREE.Vector3(0, -radius, 0));
+          halfHeight = radius * 1.05 * Math.max(1, (wh[1] / wh[0]) * 0.9);
+          camera = new THREE.OrthographicCamera(-1, 1, 1, -1, radius / 50, radius * 50);
+          frustum(wh[0], wh[1]);
+          // the first view is the still pictures' (R sends its screen up and
+          // the direction towards the viewer; side-by-side hands stand across it)
+          camera.up.set(x.camera.up[0], x.camera.up[1], x.camera.up[2]);
+          var view = new THREE.Vector3(x.camera.towards[0], x.camera.towards[1], x.camera.towards[2]).normalize();
+          camera.position.copy(centre).addScaledVector(view, radius * 4);
+          // the light turns with the camera: from its upper left, as in the still pictures
+          var key = new THREE.DirectionalLight(0xffffff, 0.6);
+          key.position.set(-0.25, 0.35, 0.9);
+          camera.add(key);
+          scene.add(camera);
           controls = new THREE.OrbitControls(camera, renderer.domElement);
           controls.target.copy(centre);
           controls.update();
@@ -261,6 +379,8 @@
           duration = Math.max.apply(null, x.recordings.map(function (r) { return (r.n - 1) / x.rate; }));
           ui = controlBar(el);
           legend(el, x);
+          labels = handLabels(el, x);
+          placeLabels(labels, camera, wh[0], wh[1]);
           ui.speed.value = String(x.speed);
           if (ui.speed.value === "") ui.speed.value = "1";
           ui.play.onclick = function () {
@@ -276,8 +396,8 @@
         resize: function (w, h) {
           if (!renderer) return;
           renderer.setSize(w, h);
-          camera.aspect = w / h;
-          camera.updateProjectionMatrix();
+          frustum(w, h);
+          placeLabels(labels, camera, w, h);
           renderer.render(scene, camera);
         }
       };

@@ -13,16 +13,22 @@ test_that("the widget carries every frame's posed joints, at the recording's rat
   # frame-major: frame f, joint j, coordinate c at ((f - 1) J + j - 1) 3 + c
   back <- aperm(array(r1$pos, c(3, J, r1$n)), c(3, 2, 1))
   expect_equal(back, unname(pos), tolerance = 0.006, ignore_attr = TRUE)
-  # side by side: the second hand is moved across the first view (hand3d.js
-  # looks along (0.55, -0.25, -1)), so both stand at one depth
+  # the first view is the still pictures' (oblique by default); side by side,
+  # the second hand is moved across it, to the right, so both stand at one depth
+  V <- view_matrix("oblique")
+  expect_equal(x$camera$towards, V[3, ], tolerance = 1e-6)
+  expect_equal(x$camera$up, V[2, ], tolerance = 1e-6)
   expect_equal(x$recordings[[1]]$offset, c(0, 0, 0))
   off <- x$recordings[[2]]$offset
   expect_gt(sqrt(sum(off^2)), 50)
-  expect_lt(abs(sum(off * c(0.55, -0.25, -1))), 0.1)
-  # parents point at earlier joints, radii positive, palm outline found
+  expect_lt(abs(sum(off * V[3, ])), 0.1)
+  expect_lt(abs(sum(off * V[2, ])), 0.1)
+  expect_gt(sum(off * V[1, ]), 50)
+  # parents point at earlier joints; the hand's shape is the description of hand_geometry()
   expect_true(all(x$parent < seq_len(J) - 1L))
-  expect_true(all(x$radius > 0))
-  expect_length(x$palm, 6L)
+  expect_identical(x$geometry, hand_geometry_json(hand_geometry(sk)))
+  expect_true(all(x$geometry$r_from > 0 & x$geometry$r_to > 0))
+  expect_equal(x$geometry$palm$n * J, length(x$geometry$palm$weights))
 })
 
 test_that("joints are flagged exactly in the frames where a DoF breaks its limit", {
@@ -65,9 +71,12 @@ test_that("bad arguments give classed errors", {
   expect_error(hand_3d("hand"), class = "handmotion_error_bad_input")
   expect_error(hand_3d(g, recording = 1, background = "no-such-colour"), class = "handmotion_error_bad_input")
   # colours reach the page as #rrggbb (three.js does not know R's names)
-  w <- hand_3d(g, recording = 1, background = "grey90")
+  w <- hand_3d(g, recording = 1, background = "grey90", hand_colour = "fingers")
   expect_equal(w$x$background, "#E5E5E5")
-  expect_true(all(grepl("^#[0-9A-F]{6}$", w$x$colour)))
+  expect_true(all(grepl("^#[0-9A-F]{6}$", c(w$x$geometry$fill, w$x$geometry$skin))))
+  expect_gt(length(unique(w$x$geometry$fill)), 4L)      # a colour per finger
+  expect_length(unique(hand_3d(g, recording = 1)$x$geometry$fill), 1L)   # skin
+  expect_error(hand_3d(g, recording = 1, hand_colour = "blue"), class = "handmotion_error_bad_input")
   empty <- matrix(0, 0, 16, dimnames = list(NULL, hust_dofs$name))
   expect_error(hand_3d(list(none = empty)), "none", class = "handmotion_error_bad_recording")
   expect_error(hand_3d(list(a = g[1], b = matrix(1, 2, 2))), class = "handmotion_error_bad_input")
@@ -87,6 +96,9 @@ test_that("the widget page draws a hand that moves, without script errors, in a 
   dom <- browser_dom(page, 1000 * n / g$rate + 500)
   expect_match(dom, 'data-ready="1"', fixed = TRUE)
   expect_no_match(dom, "data-js-error", fixed = TRUE)
+  # it built a mesh for every segment the description draws
+  meshes <- as.integer(sub('.*data-meshes="([0-9]+)".*', "\\1", dom))
+  expect_equal(meshes, sum(w$x$geometry$draw))
   # nothing at all on the console: no uncaught exception, no error or warning from three.js
   console <- browser_console(page, 1000)
   expect_identical(console, character(), label = paste(console, collapse = "\n"))
@@ -103,4 +115,27 @@ test_that("the widget page draws a hand that moves, without script errors, in a 
   # and the hand moves between the two moments
   moved <- rowSums(abs(matrix(early, ncol = 3) - matrix(late, ncol = 3))) > 30
   expect_gt(sum(moved), 500)
+})
+
+test_that("hands side by side are named underneath, through one camera, in a real browser", {
+  skip_without_browser()
+  skip_if_not_installed("magick")
+  g <- simulate_grasps(subjects = 2, grasps = 11, objects = 1, trials = 1, seed = 1)
+  page <- file.path(withr::local_tempdir(), "pair.html")
+  w <- hand_3d(list(recorded = g[1], generated = g[2]), autoplay = FALSE)
+  htmlwidgets::saveWidget(w, page, selfcontained = FALSE)
+  dom <- browser_dom(page, 500)
+  expect_no_match(dom, "data-js-error", fixed = TRUE)
+  expect_match(dom, 'data-meshes="[0-9]+,[0-9]+"')
+  labels <- regmatches(dom, gregexpr('<div class="hand3d-label"[^>]*>[^<]*</div>', dom))[[1]]
+  expect_length(labels, 2L)
+  expect_match(labels[1], "recorded: T11-S01", fixed = TRUE)
+  expect_match(labels[2], "generated: T11-S02", fixed = TRUE)
+  # left to right, in the order given
+  left <- as.numeric(sub('.*left: ([0-9.]+)px.*', "\\1", labels))
+  expect_lt(left[1], left[2])
+  png <- png_pixels(browser_screenshot(page, 500))
+  bg <- c(0xf7, 0xf7, 0xf5)
+  drawn <- rowSums(abs(sweep(matrix(png, ncol = 3), 2, bg))) > 30
+  expect_gt(mean(drawn), 0.04)
 })

@@ -33,19 +33,26 @@ test_that("autoplot(type = \"hand\") of a grasps set draws its hand_pose", {
   expect_equal(ggplot2::ggplot_build(p)$data, ggplot2::ggplot_build(q)$data)
 })
 
-test_that("autoplot draws one bone per non-root joint and one panel per frame", {
+test_that("autoplot draws the geometry's segments and palm in every panel, back to front", {
   x <- hust(3)
   x[, "PIP3"] <- c(0, 45, 90)
   p <- ggplot2::autoplot(hand_pose(x, frame = 1:3), view = "radial")
   solid <- p$layers[[1]]$data
+  geo <- hand_geometry()
   pieces <- unique(solid[c("frame", "piece", "kind")])
-  expect_equal(sum(pieces$kind == "bone"), 3L * 24L)     # a capsule per bone
-  expect_equal(sum(pieces$kind == "palm"), 3L)
-  expect_equal(nrow(geom_data(p, "GeomPoint")), 3L * 25L)
+  # a body per drawn segment (the fingers, the thumb, the palm's two edges, the forearm)
+  expect_equal(sum(pieces$kind == "bone"), 3L * sum(geo$segments$draw))
+  expect_equal(sum(pieces$kind == "palm"), 3L)                # the palm's face, once a hand
   expect_equal(length(unique(geom_data(p, "GeomPolygon")$PANEL)), 3L)
-  # drawn back to front: the drawing order follows depth
-  first <- solid[!duplicated(solid$draw) & solid$kind == "bone", ]
-  expect_false(is.unsorted(first$order_depth[order(first$draw)]))
+  # drawn back to front within each hand, the palm's parts together
+  first <- solid[!duplicated(solid$draw), ]
+  for (f in 1:3) expect_false(is.unsorted(first$order_depth[first$frame == f]))
+  # skin tone by default: no finger legend; finger colours on request, with one
+  expect_equal(p$scales$get_scales("colour")$guide, "none")
+  q <- ggplot2::autoplot(hand_pose(x, frame = 1), hand_colour = "fingers")
+  legend <- q$scales$get_scales("colour")
+  expect_s3_class(legend$guide, "legend")
+  expect_error(ggplot2::autoplot(hand_pose(x), hand_colour = "rainbow"), class = "handmotion_error_bad_input")
 })
 
 test_that("views project as documented", {
@@ -74,7 +81,7 @@ test_that("autoplot(type = \"poses\") draws one panel per group and set", {
   p <- ggplot2::autoplot(g, type = "poses")
   expect_equal(length(unique(geom_data(p, "GeomPolygon")$PANEL)), 2L)
   bones <- unique(p$layers[[1]]$data[p$layers[[1]]$data$kind == "bone", c("id", "piece")])
-  expect_equal(nrow(bones), 2L * 24L)      # one recording per type
+  expect_equal(nrow(bones), 2L * sum(hand_geometry()$segments$draw))      # one recording per type
   gg <- ggplot2::autoplot(g, type = "poses", label = "recorded", compare = list(generated = g[2:3]),
                           view = "radial")
   b <- ggplot2::ggplot_build(gg)
