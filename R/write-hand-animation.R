@@ -129,7 +129,7 @@ write_hand_animation <- function(x, file, recording = 1L, view = "oblique", widt
   for (i in seq_along(hands)) {
     h <- hands[[i]]
     fr <- pmin(as.integer(round(at)), nrow(h$angles))
-    pos <- forward_kinematics(h$angles, skeleton, frames = fr, unit = h$unit, ...)[, geometry$joints, , drop = FALSE]
+    pos <- fk_mapped(h$angles, skeleton, h$unit, h$mapping, frames = fr, ...)[, geometry$joints, , drop = FALSE]
     S <- if (is.null(S)) project_array(pos, view, call) else abind_hands(S, project_array(pos, view, call))
   }
   frame_of <- rep(seq_len(ticks), length(hands))
