@@ -17,7 +17,9 @@
 #'   classes: `bad_recording`, `unknown_grasp`, `no_labels`, `bad_markers`,
 #'   `occluded`, `bad_mapping`, `dof_mismatch`, `multiple_grasps`,
 #'   `bad_params`, `bad_skeleton` (a skeleton that does not fit the data),
-#'   `too_few_subjects`.
+#'   `too_few_subjects`, `bad_glove` (a glove profile that does not
+#'   validate or does not match the data's channels), `not_feix_labels`
+#'   (the thesis' tables asked of data labelled otherwise than by Feix type).
 #' * `handmotion_error_bad_file`: a file that cannot be read in its format.
 #'   Specific classes: `empty_file`, `bad_field_count`, `truncated_line`,
 #'   `non_numeric`, `bad_value`, `unknown_header`, `unknown_file_name`,
@@ -49,7 +51,12 @@
 #' `zero_window` (a DTW window that leaves only the diagonal path). One
 #' warning carries every class that applies, and the rows in its field
 #' `degenerate_data` (`class`, `message`). Other warnings: `read_failures`
-#' (files a directory read skipped), `note` and `deprecated`.
+#' (files a directory read skipped), `stuck_channels` (channels constant
+#' over every recording, said once where the data are built),
+#' `constant_channels` (the same, said once by [evaluate_generation()]),
+#' `mixed_labels` (some labels are Feix types, others not), `no_limits`
+#' (`generate(limits = TRUE)` for a model without limits), `note` and
+#' `deprecated`.
 #'
 #' From Python the error families are `BadInputError`, `BadFileError` and
 #' `FitFailedError`, all subclasses of `HandmotionError`; warnings arrive as
