@@ -29,7 +29,11 @@ clamp_to_limits <- function(x, skeleton = hand_skeleton(), mapping = NULL, unit 
   call <- rlang::caller_env()
   check_skeleton(skeleton, call = call)
   input <- fk_input(x, unit, call)
-  lim <- dof_limits(input$dofs, input$factor, skeleton, mapping, call)
+  if (!is.null(input$mapping) && inherits(x, "grasps") && x$unit == "raw") {
+    hm_abort(c("Joint limits are angles; {.arg x} holds raw counts.", i = "Calibrate it first: {.code calibrate(x)}."),
+             "bad_input", argument = "x", call = call)
+  }
+  lim <- dof_limits(input$dofs, input$factor, skeleton, mapping %||% input$mapping, call)
   counts <- stats::setNames(integer(nrow(lim)), lim$dof)
   clamp_one <- function(rec) {
     for (k in seq_len(nrow(lim))) {
