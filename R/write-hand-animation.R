@@ -88,11 +88,11 @@ write_hand_animation <- function(x, file, recording = 1L, view = "oblique", widt
   check_whole(max_frames, "max_frames", min = 2, max = 10000, call = call)
   format <- tolower(sub(".*\\.", "", file))
   if (!requireNamespace("gganimate", quietly = TRUE) || !requireNamespace("magick", quietly = TRUE)) {
-    hm_abort("Writing a video needs the gganimate and magick packages.", "missing_package", call = call)
+    hm_abort("Writing a video needs the gganimate and magick packages.", "missing_dependency", call = call)
   }
   if (format == "mp4" && !nzchar(Sys.which("ffmpeg"))) {
     hm_abort(c("Writing an MP4 needs the {.code ffmpeg} program, which is not installed.",
-               i = "Install ffmpeg, or write a {.file .gif}."), "missing_package", call = call)
+               i = "Install ffmpeg, or write a {.file .gif}."), "missing_dependency", call = call)
   }
   pick <- if (inherits(x, "grasps")) recording else NULL
   hands <- hand_3d_inputs(x, pick, rate, call)
