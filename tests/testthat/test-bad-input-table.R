@@ -94,6 +94,7 @@ bad_input_cases <- function() {
     list("write_skeleton: not a skeleton", quote(write_skeleton("x", "s.xmlskel")), "bad_input"),
     list("write_skeleton: a folder for the file", quote(write_skeleton(hand_skeleton(), "empty")), "unwritable_file"),
     list("write_bvh: a folder for the file", quote(write_bvh(g, "empty")), "unwritable_file"),
+    list("write_bvh: an existing file", quote(write_bvh(g, "good.bvh")), "file_exists"),
     list("write_bvh: a missing folder", quote(write_bvh(g, file.path("no", "such", "a.bvh"))), "unwritable_file"),
     list("write_hust: a file for the folder", quote(write_hust(g, "a-file")), "unwritable_file"),
     list("read_failures: a number", quote(read_failures(42)), "bad_input"),
