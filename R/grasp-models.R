@@ -146,7 +146,8 @@ models_degeneracies <- function(models) {
 fit_one_type <- function(part, save_to, args, progress) {
   # (degenerate data is recorded in each model and said once for the set by
   # fit_grasp_models(), not once per type)
-  res <- tryCatch(withCallingHandlers(do.call(fit_grasp_model, c(list(part), args)),
+  # (seed = NULL: the type's own stream, set by future.seed, not fit_grasp_model()'s default)
+  res <- tryCatch(withCallingHandlers(do.call(fit_grasp_model, c(list(part), args, seed = list(NULL))),
                                       handmotion_warning_degenerate = function(w) invokeRestart("muffleWarning")),
                   handmotion_error = function(e) e)
   # saved at once (not after the whole set), so an interrupted fit keeps it;

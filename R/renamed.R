@@ -21,6 +21,7 @@
 #' | `predict(model, x)`, `predict(models, x)` (FPC projections) | [project()]`(model, x)`, `project(models, x)` |
 #' | `predict(classifier, newdata = )` (a factor or a probability matrix) | `predict(classifier, new_data = )$.pred_class`; `type = "prob"` gives a data frame with columns `.pred_<class>` ([predict.grasp_models()]) |
 #' | `predict(recognizer, x, frames = )` (one of `frames`, `ms`, `fraction` required) | `predict(recognizer, x)` sees the whole recording by default |
+#' | `read_bvh(f)$joints`, `$offsets`, `$channels`, `$frame_time`, `$motion` (a list) | `read_bvh(f)` is a [grasps()] object: `attr(x, "bvh")$joints` (and `$offsets`, `$channels`, `$frame_time`, `$position`), the rotation channels in `x$recordings[[1]]` |
 #' | `as_grasp_confusion(x)` | [grasp_confusion()]`(x)` |
 #' | `distance_table(cl)` | `thesis_table("5.3", classification = cl)` |
 #' | `default_joint_map(dofs)`, `graspdb14_joint_map()`, `hust_joint_map()` | [joint_map()]`(dofs = )`, `joint_map("graspdb14")`, `joint_map("hust")` |

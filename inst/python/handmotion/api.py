@@ -183,8 +183,11 @@ def evaluate_generation(models, held_out, training, n=None, reps=5, seed=1):
             "evaluation": RHandle(res)}
 
 
-def generate(models, grasp=None, n=1, seed=None, as_array=False, limits=None, **kwargs):
+def generate(models, grasp=None, n=1, seed=1, as_array=False, limits=None, **kwargs):
     """Generate new grasps by sampling component scores (thesis eq. 2.5).
+
+    ``seed`` defaults to 1 as in every handmotion verb that draws random numbers (a call
+    repeats itself); ``None`` draws from R's current random stream.
 
     ``limits`` keeps angles inside the hand's joint limits by a smooth map (``None``: on for
     copula models, off for the thesis' model).
