@@ -264,7 +264,8 @@ new_grasp_predictions <- function(df, ids, type, reasons, extra = NULL) {
 
 #' @export
 print.grasp_predictions <- function(x, ..., n = 10L) {
-  type <- attr(x, "type") %||% "class"
+  # (from the columns: a subset keeps the class but not the attributes)
+  type <- if (identical(names(x), ".pred_class")) "class" else if (all(startsWith(names(x), ".dist_"))) "distance" else "prob"
   what <- switch(type, class = "predicted class", prob = "class probabilities",
                  distance = "distances to each class")
   cat(sprintf("<grasp_predictions> %s of %d recording%s%s\n", what, nrow(x), if (nrow(x) == 1L) "" else "s",
@@ -273,6 +274,7 @@ print.grasp_predictions <- function(x, ..., n = 10L) {
                          stringsAsFactors = FALSE)
   cols <- names(shown)
   if (length(cols) > 8L) shown <- shown[, 1:8, drop = FALSE]
+  if (type == "prob") shown[] <- lapply(shown, round, 3)
   print(utils::head(shown, n), digits = 3)
   more <- c(if (nrow(x) > n) sprintf("%d more row%s", nrow(x) - n, if (nrow(x) - n == 1L) "" else "s"),
             if (length(cols) > 8L) sprintf("%d more column%s: %s", length(cols) - 8L,

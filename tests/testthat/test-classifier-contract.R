@@ -59,6 +59,7 @@ test_that("every classifier answers predict() with classes, probabilities and di
     out <- utils::capture.output(print(p))
     expect_lt(length(out), 40L)
     expect_match(paste(out, collapse = "\n"), "more rows")
+    expect_output(print(p[1:3, ]), "class probabilities of 3 recordings")
     expect_output(print(fit))
     s <- summary(fit)
     expect_s3_class(s, "data.frame")
