@@ -146,16 +146,11 @@ check_dots_for <- function(dots, fun, fun_name, exclude = character(), call = rl
   invisible(dots)
 }
 
-# Grasp types asked for by name or id (`grasps = ` of a fit, `grasp = ` of
-# generate()): NULL means all and stays NULL; an empty vector is an error
-# (it would silently select nothing); otherwise the Feix names.
-check_grasp_selection <- function(grasps, arg, call = rlang::caller_env()) {
-  if (is.null(grasps)) return(NULL)
-  if (length(grasps) == 0L) {
-    hm_abort("{.arg {arg}} must name at least one grasp type (or be {.code NULL} for all).",
-             "bad_input", argument = arg, call = call)
-  }
-  as.character(as_feix_grasp(grasps, call = call))
+# Class labels asked for by name (or, for Feix-labelled data, by id):
+# `grasps = ` of a fit, `grasp = ` of generate(). `levels` are the labels the
+# data or models have; see resolve_labels().
+check_grasp_selection <- function(grasps, arg, levels = NULL, call = rlang::caller_env()) {
+  resolve_labels(grasps, levels, arg, call = call)
 }
 
 # The grasp types a fit found in `x` (`types`) must not be none: an empty

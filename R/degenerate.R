@@ -45,7 +45,8 @@ model_degeneracies <- function(model, n_frames) {
       single, length(n_frames), if (single == 1L) "s" else "ve"))
   }
   fb <- model$fallbacks
-  const <- fb$dof[fb$step == "fpca"]
+  # channels flagged stuck when the data were built were said once there
+  const <- setdiff(fb$dof[fb$step == "fpca"], model$stuck)
   if (length(const) == length(model$dofs) && isTRUE(model$warp$constant)) {
     notes <- add_degenerate_note(notes, "identical_recordings",
       "the recordings do not vary: every DoF and the warps are constant, so every generated grasp is the mean")

@@ -17,7 +17,9 @@
 #'   classes: `bad_recording`, `unknown_grasp`, `no_labels`, `bad_markers`,
 #'   `occluded`, `bad_mapping`, `dof_mismatch`, `multiple_grasps`,
 #'   `bad_params`, `bad_skeleton` (a skeleton that does not fit the data),
-#'   `too_few_subjects`.
+#'   `too_few_subjects`, `bad_glove` (a glove profile that cannot be used;
+#'   with `bad_file` when read from a file) and `not_feix_labels` (a thesis
+#'   table asked of labels that are not Feix types).
 #' * `handmotion_error_bad_file`: a file that cannot be read in its format.
 #'   Specific classes: `empty_file`, `bad_field_count`, `truncated_line`,
 #'   `non_numeric`, `bad_value`, `unknown_header`, `unknown_file_name`,
@@ -58,8 +60,12 @@
 #' fewer recordings than PCs), `model_failed` (types whose model failed,
 #' skipped), `projection_failed` (models that could not score the
 #' recordings), `fold_failed` (an evaluation fold that could not be
-#' fitted), `skeleton_default_unit` (a skeleton file without a unit), `note`
-#' and `deprecated`.
+#' fitted), `skeleton_default_unit` (a skeleton file without a unit),
+#' `constant_channels` (channels constant in every recording, left out of
+#' the correlation measures), `no_limits` (no joint limits to keep
+#' generated grasps within), `stuck_channels` (glove channels that never
+#' change), `mixed_labels` (labels of which only some are Feix types),
+#' `note` and `deprecated`.
 #'
 #' From Python the error families are `BadInputError`, `BadFileError` and
 #' `FitFailedError`, all subclasses of `HandmotionError`; warnings arrive as
@@ -83,6 +89,7 @@ error_families <- c(
   no_labels = "bad_input", bad_markers = "bad_input", occluded = "bad_input",
   bad_mapping = "bad_input", dof_mismatch = "bad_input", multiple_grasps = "bad_input",
   bad_params = "bad_input", bad_skeleton = "bad_input", too_few_subjects = "bad_input",
+  bad_glove = "bad_input", not_feix_labels = "bad_input",
   bad_file = "bad_file", empty_file = "bad_file", bad_field_count = "bad_file",
   truncated_line = "bad_file", non_numeric = "bad_file", bad_value = "bad_file",
   unknown_header = "bad_file", unknown_file_name = "bad_file",
@@ -131,6 +138,7 @@ warning_families <- c(
   non_finite = "degenerate", zero_window = "degenerate",
   read_failures = NA, truncated_line = NA, unknown_header = NA, few_recordings = NA,
   model_failed = NA, projection_failed = NA, fold_failed = NA, skeleton_default_unit = NA,
+  constant_channels = NA, no_limits = NA, stuck_channels = NA, mixed_labels = NA,
   note = NA, deprecated = NA
 )
 

@@ -12,17 +12,25 @@
 #' `fractions` of the recording's own length (for comparison with
 #' whole-motion classifiers; a live stream does not know the fraction).
 #' Folds run through `future.apply` (set a `future::plan()` to use several
-#' cores).
+#' cores). The folds are those of [evaluate_loso()]: by subject with two or
+#' more subjects, else stratified folds of recordings (`split`).
 #'
-#' @param x A labelled [grasps()] object with `subject` metadata.
-#' @param ms Times since the recording began, in milliseconds, or `NULL`.
+#' **Recordings that start at rest.** When the recordings are mostly still
+#' (the rule of `fit_grasp_model(motion = "auto")`), time counts from the
+#' motion's onset, as a live stream sees it: an onset detector fitted on
+#' each fold's training recordings (their joint speed; see [find_motion()])
+#' finds it in every held-out recording, so "after 300 ms" means 300 ms of
+#' motion.
+#'
+#' @param x A labelled [grasps()] object.
+#' @param ms Times since the recording (or its motion) began, in
+#'   milliseconds, or `NULL`.
 #' @param fractions Fractions of each recording's length, or `NULL`. Each
 #'   fold fits the recogniser's discriminants only at the horizons these
 #'   need (a few for `ms` alone), the same fits [fit_grasp_recognizer()]
 #'   makes at those horizons.
-#' @param folds `NULL` for one fold per subject, or a number of subject
-#'   groups (as in [evaluate_loso()]).
-#' @param seed Seed for the grouping of subjects into `folds`.
+#' @param folds,seed,split As in [evaluate_loso()]: `folds` `NULL` is one
+#'   fold per subject, or 5 folds of recordings.
 #' @param ... Passed to [fit_grasp_recognizer()] (`at`, `horizon`).
 #' @return A data frame of class `early_recognition` with columns `scale`
 #'   (`"ms"` or `"fraction"`), `value`, `accuracy`, `n` (recordings) and
@@ -36,7 +44,7 @@
 #' er
 #' ggplot2::autoplot(er)
 evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractions = seq(0.1, 1, by = 0.1),
-                                       folds = NULL, seed = 1, ...) {
+                                       folds = NULL, seed = 1, split = c("auto", "subject", "recording"), ...) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   if (!is.null(ms) && (!is.numeric(ms) || !length(ms) || anyNA(ms) || any(ms <= 0))) {
@@ -62,19 +70,19 @@ evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractio
   }
   at <- check_fractions(rec_args$at %||% eval(formals(fit_grasp_recognizer)$at), "at", call = call)
   check_training_labels(x, call = call)
-  subj <- x$meta$subject
-  if (is.null(subj) || anyNA(subj) || length(unique(subj)) < 2L) {
-    hm_abort("{.arg x} needs a subject for every recording and at least two subjects.",
-             "too_few_subjects", argument = "x", call = call)
-  }
   old_rng <- save_rng()
   on.exit(restore_rng(old_rng), add = TRUE)
-  groups <- subject_folds(unique(subj), folds, seed, call = call)
+  groups <- make_folds(x, split, folds, seed, call = call)
   p <- progressr::progressor(steps = length(groups))
   parts <- future.apply::future_lapply(seq_along(groups), function(f) {
-    test <- subj %in% groups[[f]]
+    test <- groups[[f]]
     train <- x[!test]
     te <- x[test]
+    # recordings that rest before the grasp: time counts from the onset the
+    # training recordings' detector finds in each held-out recording
+    det <- if (resolve_motion(train, "auto") == "trim") fit_onset_detector(train)
+    train <- from_onset(train, det)
+    te <- from_onset(te, det)
     # frames seen by every held-out recording at each time and fraction
     views <- c(lapply(ms, function(v) {
       list(scale = "ms", value = v,
@@ -102,13 +110,13 @@ evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractio
   }))
   rownames(agg) <- NULL
   structure(agg, class = c("early_recognition", "data.frame"),
-            scheme = if (is.null(folds)) "leave-one-subject-out" else sprintf("%d subject groups", length(groups)),
+            scheme = attr(groups, "scheme"),
             classes = length(unique(x$meta$grasp)))
 }
 
 #' @export
 print.early_recognition <- function(x, ...) {
-  cat(sprintf("<early_recognition> %d grasp types, held out by subject (%s)\n",
+  cat(sprintf("<early_recognition> %d classes, held out: %s\n",
               attr(x, "classes"), attr(x, "scheme")))
   d <- as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE)
   d$value <- format(d$value, drop0trailing = TRUE, scientific = FALSE)

@@ -56,13 +56,26 @@
 #' give the median over types (pooled shares for `recognised` and
 #' `outside_limits`).
 #'
+#' **Folds.** Given recordings instead of models (`models` a [grasps()]
+#' set, `held_out` and `training` left out), the evaluation makes its own
+#' held-out folds as [evaluate_loso()] does (by subject with two or more
+#' subjects, else stratified by recording; `split`, `folds`, `seed`), fits
+#' each model of `fit` on each fold's training recordings, measures against
+#' its held-out ones, and averages every measure over the folds.
+#'
 #' @param models A `grasp_models` set ([fit_grasp_models()]) or a named list
-#'   of them to compare (e.g. `list(thesis = m1, copula = m2)`).
+#'   of them to compare (e.g. `list(thesis = m1, copula = m2)`); or a
+#'   [grasps()] set of recordings to evaluate by folds (see Folds).
 #' @param held_out A [grasps()] object of held-out recordings of the modelled
 #'   types.
 #' @param training A [grasps()] object of the recordings the models were
 #'   fitted on (the baseline's real recordings and the classifier's training
 #'   data).
+#' @param fit With folds: a named list of argument lists for
+#'   [fit_grasp_models()], one per model compared (default: the thesis'
+#'   independent model and the copula model).
+#' @param split,folds With folds: as in [evaluate_loso()]; `folds` defaults to
+#'   5 (groups of subjects, or folds of recordings).
 #' @param n Generated grasps (and training recordings) per type and
 #'   repetition; by default the number of held-out recordings of each type.
 #' @param reps Repetitions averaged.
@@ -88,9 +101,16 @@
 #' m <- fit_grasp_models(train, seed = 1, dependence = "copula")
 #' ev <- evaluate_generation(m, test, train, reps = 2)
 #' ev
-evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5,
-                                overlong = c(iqr_mult = 3, median_mult = 1.5), seed = 1) {
+#' # by folds, from the recordings
+#' evaluate_generation(g, folds = 2, reps = 1, fit = list(copula = list(dependence = "copula")))
+evaluate_generation <- function(models, held_out = NULL, training = NULL, n = NULL, reps = 5,
+                                overlong = c(iqr_mult = 3, median_mult = 1.5), seed = 1,
+                                fit = list(thesis = list(), copula = list(dependence = "copula")),
+                                split = c("auto", "subject", "recording"), folds = 5) {
   call <- rlang::caller_env()
+  if (inherits(models, "grasps")) {
+    return(evaluate_generation_folds(models, fit, split, folds, n, reps, overlong, seed, call))
+  }
   sets <- if (inherits(models, "grasp_models")) stats::setNames(list(models), model_set_name(models)) else models
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasp_models")) ||
       is.null(names(sets)) || any(!nzchar(names(sets)))) {
@@ -109,6 +129,13 @@ evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5,
   if (length(missing)) {
     hm_abort("{.arg held_out} has no recordings of {.val {missing}}.", "bad_input",
              argument = "held_out", call = call)
+  }
+  # channels that never move (a stuck sensor) have no correlation: they are
+  # left out of the dependence measures, said once here
+  flat <- held_out$dofs[find_stuck(c(held_out$recordings, training$recordings))]
+  if (length(flat)) {
+    hm_warn(c("{cli::qty(length(flat))}Channel{?s} {.val {flat}} {?is/are} constant in every recording: left out of the correlation measures.",
+              i = "{cli::qty(length(flat))}The other measures use {?it/them} as recorded."), "constant_channels", channels = flat)
   }
   with_seed(seed, evaluate_generation_impl(sets, held_out, training, types, n, reps, overlong))
 }
@@ -212,7 +239,7 @@ generation_reference <- function(ho) {
   d <- as.vector(stats::dist(Z))
   list(features = F, centre = centre, spread = spread, Z = Z,
        bandwidth = stats::median(d[d > 0]) %||% 1,
-       posture_cor = stats::cor(final_postures(ho)),
+       posture_cor = varying_cor(final_postures(ho)),
        velocity_cor = velocity_correlation(ho),
        durations = ho$meta$n_frames / ho$rate,
        log_jerk = stats::median(log_jerk(ho)))
@@ -226,7 +253,7 @@ generation_measures <- function(samples, ref, lda, type, limits) {
     Z <- sweep(sweep(F, 2, ref$centre), 2, ref$spread, "/")
     mmd <- mmd_test(Z, ref$Z, ref$bandwidth)
     list(mmd = mmd$mmd, mmd_p = mmd$p,
-         posture_cor_gap = cor_gap(stats::cor(final_postures(x)), ref$posture_cor),
+         posture_cor_gap = cor_gap(varying_cor(final_postures(x)), ref$posture_cor),
          velocity_cor_gap = cor_gap(velocity_correlation(x), ref$velocity_cor),
          recognised = mean(lda_class(lda, F) == type),
          outside_limits = limit_share(x, limits),
@@ -262,7 +289,7 @@ velocity_correlation <- function(x) {
     lo <- floor(pos)
     w <- pos - lo
     prof <- r[lo, , drop = FALSE] * (1 - w) + r[pmin(lo + 1L, nrow(r)), , drop = FALSE] * w
-    C <- suppressWarnings(stats::cor(diff(prof)))
+    C <- varying_cor(diff(prof))
     ok <- is.finite(C)
     acc[ok] <- acc[ok] + C[ok]
     cnt <- cnt + ok
@@ -378,4 +405,58 @@ autoplot.generation_evaluation <- function(object, metric = NULL, ...) {
                   title = "How natural are generated grasps?",
                   subtitle = "one point per grasp type; on the dashed line = as natural as recorded") +
     ggplot2::theme_bw(base_size = 11)
+}
+
+# Correlation matrix of the columns of X, NA for pairs with a column that
+# does not vary (where stats::cor() would warn "the standard deviation is
+# zero" once per call: for a stuck glove channel, at every repetition).
+varying_cor <- function(X) {
+  p <- ncol(X)
+  out <- matrix(NA_real_, p, p, dimnames = list(colnames(X), colnames(X)))
+  v <- apply(X, 2, function(col) length(col) > 1L && stats::var(col) > 0)
+  if (sum(v) >= 2L) out[v, v] <- stats::cor(X[, v, drop = FALSE])
+  out
+}
+
+# evaluate_generation() by folds: fit each model of `fit` on every fold's
+# training part, measure against its held-out part, average the measures.
+evaluate_generation_folds <- function(x, fit, split, folds, n, reps, overlong, seed, call) {
+  if (!is.list(fit) || !length(fit) || is.null(names(fit)) || any(!nzchar(names(fit))) ||
+      !all(vapply(fit, is.list, logical(1)))) {
+    hm_abort("{.arg fit} must be a named list of argument lists for {.fn fit_grasp_models}.",
+             "bad_input", argument = "fit", call = call)
+  }
+  x <- x[!is.na(x$meta$grasp)]
+  groups <- make_folds(x, split, folds, seed, call = call)
+  p <- progressr::progressor(steps = length(groups))
+  parts <- lapply(seq_along(groups), function(f) {
+    tr <- x[!groups[[f]]]
+    ho <- x[groups[[f]]]
+    sets <- lapply(fit, function(a) suppressWarnings(do.call(fit_grasp_models, c(list(tr, seed = seed), a))))
+    res <- withCallingHandlers(
+      evaluate_generation(sets, ho, tr, n = n, reps = reps, overlong = overlong, seed = seed + f),
+      handmotion_warning_constant_channels = function(w) invokeRestart("muffleWarning"))
+    p(sprintf("fold %d of %d", f, length(groups)))
+    res
+  })
+  flat <- x$dofs[find_stuck(x$recordings)]
+  if (length(flat)) {
+    hm_warn("{cli::qty(length(flat))}Channel{?s} {.val {flat}} {?is/are} constant in every recording: left out of the correlation measures.",
+            "constant_channels", channels = flat)
+  }
+  all <- do.call(rbind, lapply(parts, function(d) as.data.frame(unclass(d)[names(d)], stringsAsFactors = FALSE)))
+  keys <- unique(all[c("model", "grasp", "family", "metric", "better")])
+  avg <- function(col) vapply(seq_len(nrow(keys)), function(i) {
+    v <- all[[col]][all$model == keys$model[i] & all$grasp == keys$grasp[i] & all$metric == keys$metric[i]]
+    mean(v, na.rm = TRUE)
+  }, numeric(1))
+  out <- keys
+  out$generated <- avg("generated")
+  out$baseline <- avg("baseline")
+  out$ratio <- out$generated / out$baseline
+  out <- out[c("model", "grasp", "family", "metric", "generated", "baseline", "better", "ratio")]
+  rownames(out) <- NULL
+  excluded <- do.call(rbind, lapply(parts, attr, "excluded"))
+  structure(out, class = c("generation_evaluation", "data.frame"), excluded = excluded,
+            scheme = attr(groups, "scheme"))
 }

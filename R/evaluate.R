@@ -4,9 +4,11 @@
 # models are refitted without it and its recordings classified, so every
 # prediction is for a hand the models never saw. Both numbers are returned.
 
-#' Leave-one-subject-out evaluation of a grasp classifier
+#' Held-out evaluation of a grasp classifier: by subject or by recording
 #'
-#' For each subject, refits the models of `method` on the recordings of all
+#' **Folds for any design.** With recordings of two or more subjects
+#' (`split = "auto"`, the default) each fold holds out whole subjects: for
+#' each subject, refits the models of `method` on the recordings of all
 #' other subjects and classifies the held-out subject's recordings; the pooled
 #' predictions give a held-out confusion matrix. The in-sample figure of the
 #' thesis (fit and classify the same recordings) is computed alongside, so
@@ -22,6 +24,12 @@
 #' held out in turn (leave-one-group-of-subjects-out), so only `k` refits are
 #' needed; it is still subject-independent, slightly pessimistic because each
 #' fit sees fewer subjects.
+#'
+#' With one subject (or `split = "recording"`) the folds hold out
+#' recordings instead: `folds` (default 5) stratified folds, each label's
+#' recordings dealt evenly round them (seeded by `seed`, so repeatable).
+#' The held-out accuracy comes with a 95% Wilson score interval
+#' (`$accuracy_ci`).
 #'
 #' Folds run with `future.apply::future_lapply()` (set your own
 #' `future::plan()`; none is set here) with `future.seed = TRUE`, and report
@@ -43,12 +51,17 @@
 #'   `list(k = 5)` for last-frame PCA: the `...` of [fit_grasp_classifier()]).
 #' @param subjects Subjects to hold out (default: all). Other subjects are
 #'   always in the training set.
-#' @param folds `NULL` for one fold per subject (LOSO), or a number `k` of
-#'   subject groups.
+#' @param folds By subject: `NULL` for one fold per subject (LOSO), or a
+#'   number `k` of subject groups. By recording: the number of folds
+#'   (`NULL`: 5).
 #' @param in_sample Also compute the in-sample (thesis) confusion matrix.
-#' @param seed Seed for the random grouping of subjects into `folds`.
+#' @param seed Seed for the random grouping of subjects or recordings into
+#'   `folds`.
+#' @param split `"auto"` (by subject when `x` has two or more subjects, else
+#'   by recording), `"subject"` or `"recording"`.
 #' @return An object of class `grasp_evaluation`: a list with `method`,
-#'   `scheme`, `confusion` (pooled held-out [grasp_confusion()]), `in_sample`
+#'   `scheme`, `split`, `confusion` (pooled held-out [grasp_confusion()]),
+#'   `accuracy_ci` (95% interval of the held-out accuracy), `in_sample`
 #'   (in-sample `grasp_confusion` or `NULL`), `accuracy` (named: `held_out`,
 #'   `in_sample`), `per_subject` (data frame: `subject`, `fold`, `n`,
 #'   `correct`, `accuracy`), `folds` (data frame: `fold`, `subjects`,
@@ -66,7 +79,7 @@
 #' ev
 #' evaluate_loso(g, method = "last_frame", fit_args = list(k = 2), folds = 3)$accuracy
 evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "weighted_fpca"), fit_args = list(), subjects = NULL,
-                          folds = NULL, in_sample = TRUE, seed = 1) {
+                          folds = NULL, in_sample = TRUE, seed = 1, split = c("auto", "subject", "recording")) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   method <- check_choice(method, arg = "method", call = call)
@@ -86,23 +99,7 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
   }
   x <- x[!unlabelled]
   subj <- x$meta$subject
-  all_subjects <- unique(stats::na.omit(subj))
-  if (is.null(subjects)) subjects <- all_subjects
-  subjects <- unique(as.character(subjects))
-  unknown <- setdiff(subjects, all_subjects)
-  if (length(unknown) > 0L) {
-    hm_abort("Unknown subject{?s} {.val {unknown}}.", "bad_input", argument = "subjects", call = call)
-  }
-  if (length(all_subjects) < 2L || length(subjects) < 1L) {
-    hm_abort(c("Leave-subject-out evaluation needs at least two subjects; {.arg x} has {length(all_subjects)}.",
-               i = "Every fold must keep some subjects for training."),
-             "too_few_subjects", argument = "x", call = call)
-  }
-  groups <- subject_folds(subjects, folds, seed, call = call)
-  if (length(groups) == 1L && setequal(groups[[1]], all_subjects)) {
-    hm_abort("With one fold holding every subject nothing is left for training; use more {.arg folds}.",
-             "too_few_subjects", argument = "folds", call = call)
-  }
+  groups <- make_folds(x, split, folds, seed, subjects = subjects, call = call)
 
   p <- progressr::progressor(steps = length(groups))
   fold_results <- future.apply::future_lapply(seq_along(groups), function(f) {
@@ -118,7 +115,7 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
   }))
   fold_table <- do.call(rbind, lapply(seq_along(fold_results), function(f) {
     r <- fold_results[[f]]
-    data.frame(fold = f, subjects = paste(groups[[f]], collapse = ","), n_train = r$n_train,
+    data.frame(fold = f, subjects = names(groups)[f], n_train = r$n_train,
                n_test = r$n_test, missing_types = paste(r$missing_types, collapse = ","),
                unfitted_types = paste(r$unfitted_types, collapse = ","),
                error = r$error %||% NA_character_, stringsAsFactors = FALSE)
@@ -129,46 +126,33 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
               i = "Their recordings have no prediction; see {.field folds$error}."),
             "fold_failed")
   }
-  lev <- feix_order(unique(as.character(x$meta$grasp)))
+  lev <- label_order(unique(as.character(x$meta$grasp)), levels(x$meta$grasp))
   held <- new_confusion(predictions$truth, predictions$predicted, levels = lev)
   ins <- NULL
   if (in_sample) {
     cl <- classify(fit_classifier(x, method, fit_args), x)
     ins <- new_confusion(cl$predictions$truth, cl$predictions$predicted, levels = lev)
   }
-  structure(list(method = method, scheme = if (is.null(folds)) "leave-one-subject-out"
-                 else sprintf("leave-group-out (%d folds of subjects)", length(groups)),
+  structure(list(method = method, scheme = attr(groups, "scheme"), split = attr(groups, "split"),
                  confusion = held, in_sample = ins,
                  accuracy = c(held_out = confusion_accuracy(held),
                               in_sample = if (is.null(ins)) NA_real_ else confusion_accuracy(ins)),
+                 accuracy_ci = accuracy_interval(sum(diag(held$table)), held$n),
                  per_subject = per_subject_accuracy(predictions),
                  folds = fold_table, predictions = predictions,
-                 n_unlabelled = sum(unlabelled), n_no_subject = sum(is.na(subj))),
+                 n_unlabelled = sum(unlabelled),
+                 n_no_subject = if (attr(groups, "split") == "subject") sum(is.na(subj)) else 0L),
             class = "grasp_evaluation")
-}
-
-# Subjects grouped into folds: one per subject, or `folds` seeded random
-# groups of near-equal size.
-subject_folds <- function(subjects, folds, seed, call = rlang::caller_env()) {
-  if (is.null(folds)) return(as.list(subjects))
-  if (!is.numeric(folds) || length(folds) != 1L || is.na(folds) || folds != round(folds) ||
-      folds < 1 || folds > length(subjects)) {
-    hm_abort("{.arg folds} must be a whole number from 1 to {length(subjects)} (the number of subjects held out), not {.val {format(folds)}}.",
-             "bad_input", argument = "folds", call = call)
-  }
-  shuffled <- with_seed(seed, sample(subjects))
-  unname(split(shuffled, rep_len(seq_len(folds), length(shuffled))))
 }
 
 # Fit without the held-out subjects and classify them; failures are returned,
 # not thrown, so one bad fold does not lose the others.
-run_fold <- function(x, held_subjects, method, fit_args) {
-  test_rows <- !is.na(x$meta$subject) & x$meta$subject %in% held_subjects
+run_fold <- function(x, test_rows, method, fit_args) {
   train <- x[!test_rows]
   test <- x[test_rows]
   missing_types <- setdiff(unique(as.character(test$meta$grasp)), unique(as.character(train$meta$grasp)))
   out <- list(n_train = length(train), n_test = length(test),
-              missing_types = feix_order(missing_types), error = NULL)
+              missing_types = label_order(missing_types, levels(x$meta$grasp)), error = NULL)
   fit <- tryCatch(fit_classifier(train, method, fit_args), error = function(e) e)
   if (inherits(fit, "error")) {
     out$error <- cli::ansi_strip(conditionMessage(fit))
@@ -191,6 +175,7 @@ run_fold <- function(x, held_subjects, method, fit_args) {
 confusion_accuracy <- function(cm) if (cm$n > 0) sum(diag(cm$table)) / cm$n else NA_real_
 
 per_subject_accuracy <- function(pred) {
+  pred$subject[is.na(pred$subject)] <- "(no subject)"
   ok <- !is.na(pred$predicted) & as.character(pred$truth) == as.character(pred$predicted)
   ok[is.na(ok)] <- FALSE
   subj <- unique(pred$subject)
@@ -209,8 +194,10 @@ print.grasp_evaluation <- function(x, ...) {
               switch(x$method, fpca = "FPCA projection-distance", last_frame = "last-frame PCA",
                      discriminant = "shrinkage-LDA", weighted_fpca = "weighted FPCA-distance",
                      x$method), x$scheme))
-  cat(sprintf("  held-out accuracy:  %s (%d recordings, %d subjects)\n", fmt_pct(x$accuracy[["held_out"]]),
-              x$confusion$n, nrow(x$per_subject)))
+  ci <- x$accuracy_ci %||% c(NA_real_, NA_real_)
+  cat(sprintf("  held-out accuracy:  %s (95%% CI %s to %s; %d recordings, %d subject%s)\n",
+              fmt_pct(x$accuracy[["held_out"]]), fmt_pct(ci[1]), fmt_pct(ci[2]),
+              x$confusion$n, nrow(x$per_subject), if (nrow(x$per_subject) == 1) "" else "s"))
   if (!is.null(x$in_sample))
     cat(sprintf("  in-sample accuracy: %s (the thesis' figure: fit and classify the same recordings)\n",
                 fmt_pct(x$accuracy[["in_sample"]])))

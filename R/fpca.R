@@ -417,3 +417,15 @@ print.fpca_fit <- function(x, ...) {
   for (note in x$notes) cat("  note: ", note, "\n", sep = "")
   invisible(x)
 }
+
+# The residual curves of aligned curves `warped` (n x L x p) after each DoF's
+# FPC reconstruction: an n x L x p array.
+fpca_residual_curves <- function(warped, fpca) {
+  out <- warped
+  for (j in seq_along(fpca)) {
+    f <- fpca[[j]]
+    fitted <- sweep(f$scores %*% t(f$components), 2, f$mean, "+")
+    out[, , j] <- warped[, , j] - fitted
+  }
+  out
+}

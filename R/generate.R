@@ -66,6 +66,18 @@ generics::generate
 #' HUST-like data, `ABD1`) and is left alone. [evaluate_generation()]
 #' reports the share of frames outside the limits beside the recordings'.
 #'
+#' **Sensor ranges.** A channel that no skeleton joint limits (a raw-count
+#' sensor, a pressure pad, a channel of your own glove) is kept inside its
+#' sensor's range: the range of the glove profile ([glove_profile()]: `min`,
+#' `max`) narrowed to the training recordings' range, or for a raw channel
+#' without a declared range the training recordings' range.
+#'
+#' **Rest and hold.** A model fitted to recordings trimmed to their motion
+#' (`fit_grasp_model(motion = )`) remembers how long the recordings rested
+#' before and held after it, and how much the hand trembled meanwhile;
+#' generated grasps get a rest and a hold drawn from those (the first and
+#' last posture, with the same tremor), so they look like the recordings.
+#'
 #' @param x A `grasp_model` ([fit_grasp_model()]) or `grasp_models`
 #'   ([fit_grasp_models()]).
 #' @param n Number of grasps to generate (per grasp type for a model set).
@@ -77,10 +89,17 @@ generics::generate
 #'   every call).
 #' @param warp If `TRUE` (default) apply the sampled time warp; if `FALSE`
 #'   return the curves on the model's template grid (`L` frames).
-#' @param limits Keep generated angles inside the hand's joint limits?
-#'   `NULL` (default) means `TRUE` for a model fitted with
-#'   `dependence = "copula"` and `FALSE` for the thesis' independent model
-#'   (which generates exactly as the thesis did). See Joint limits.
+#' @param limits Keep generated values inside their limits? `TRUE`: every
+#'   enforced limit of the model (joint limits of the skeleton, sensor ranges
+#'   of the glove, the training range of raw channels); a warning of class
+#'   `handmotion_warning_no_limits` says when a model has none. `FALSE`:
+#'   none. `NULL` (default): the sensor ranges always (a glove cannot read
+#'   outside them), and the joint limits for a model fitted with
+#'   `dependence = "copula"` (the thesis' independent model generates its
+#'   angles exactly as the thesis did). See Joint limits.
+#' @param phases For a model of recordings trimmed to their motion: add the
+#'   rest before and the hold after each generated motion (`TRUE`, default;
+#'   see Rest and hold), or return the motion alone (`FALSE`).
 #' @param chunk With `callback`, the number of grasps per chunk (per type).
 #' @param callback Optional function `(chunk, i)` called with each chunk (see
 #'   Streaming); its return values are discarded.
@@ -98,25 +117,28 @@ generics::generate
 #' new <- generate(m, n = 5, seed = 2)
 #' new
 generate.grasp_model <- function(x, n = 1, seed = 1, warp = TRUE, limits = NULL, chunk = 10000,
-                                 callback = NULL, ...) {
+                                 callback = NULL, phases = TRUE, ...) {
   # (a misspelt argument would vanish into `...` without a word)
   check_dots_for(list(...), generate.grasp_model, "generate", call = rlang::caller_env())
-  generate_models(list(x), n, seed, warp, limits, chunk, callback, call = rlang::caller_env())
+  phases <- check_flag(phases, "phases", call = rlang::caller_env())
+  generate_models(list(x), n, seed, warp, limits, chunk, callback, call = rlang::caller_env(), phases = phases)
 }
 
 #' @rdname generate.grasp_model
 #' @export
 generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = 1, warp = TRUE,
-                                  limits = NULL, chunk = 10000, callback = NULL, ...) {
+                                  limits = NULL, chunk = 10000, callback = NULL, phases = TRUE, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), generate.grasp_models, "generate", call = call)
-  generate_models(select_models(x, grasp, call), n, seed, warp, limits, chunk, callback, call = call)
+  phases <- check_flag(phases, "phases", call = call)
+  generate_models(select_models(x, grasp, call), n, seed, warp, limits, chunk, callback, call = call,
+                  phases = phases)
 }
 
 # The one generation path of both methods: checks, then one batch (the
 # models draw in turn from one RNG stream, then one assembly), or chunks
 # handed to a callback.
-generate_models <- function(models, n, seed, warp, limits, chunk, callback, call) {
+generate_models <- function(models, n, seed, warp, limits, chunk, callback, call, phases = TRUE) {
   streaming <- !is.null(callback)
   n <- check_whole(n, "n", max = if (streaming) 1e12 else max_grasps_per_call, call = call)
   warp <- check_flag(warp, "warp", call = call)
@@ -124,7 +146,22 @@ generate_models <- function(models, n, seed, warp, limits, chunk, callback, call
   seed <- check_seed(seed, call = call)
   chunk <- check_whole(chunk, "chunk", max = max_grasps_per_call, call = call)
   for (m in models) validate_sampler(m, call)
-  draw <- function(m, n) draw_batch(m, n, warp = warp, limits = limits, call = call)
+  if (isTRUE(limits)) {
+    none <- vapply(models, function(m) !any(m$limits$enforced %||% FALSE), logical(1))
+    if (any(none)) {
+      hm_warn(c("No limits to keep for {.val {vapply(models[none], `[[`, '', 'grasp')}}: generated as drawn.",
+                i = "Limits come from the skeleton's joints, the glove profile's sensor ranges or, for raw channels, the training data's range."),
+              "no_limits")
+    }
+  }
+  draw <- function(m, n) {
+    got <- draw_batch(m, n, warp = warp, limits = limits, call = call)
+    # a model of trimmed recordings puts their rest and hold back around the
+    # motion, so generated grasps look like the recordings (see phases)
+    if (!is.null(m$residuals)) got <- add_residuals(got, m, limits)
+    if (warp && isTRUE(phases) && !is.null(m$phases)) got <- add_still_phases(got, m, limits)
+    hold_flat_limits(got, m, limits)
+  }
   if (!streaming) {
     return(with_seed(seed, assemble_generated(models, lapply(models, draw, n = n))))
   }
@@ -209,7 +246,11 @@ draw_batch <- function(model, n, warp = TRUE, limits = NULL, call = rlang::calle
   smp <- model$sampler %||% build_sampler(model)
   # the copula model draws its scores here, the independent one in the kernel
   scores <- if (identical(model$dependence$type, "copula")) draw_copula_scores(model, n)
-  lim <- generation_limits(model, limits %||% identical(model$dependence$type, "copula"))
+  lim <- generation_limits(model, limits)
+  # a zero-width range (a stuck channel) is held exactly afterwards, not mapped
+  flat <- !is.na(lim$lo) & lim$hi <= lim$lo
+  lim$lo[flat] <- NA_real_
+  lim$hi[flat] <- NA_real_
   B <- model_basis(model)
   W <- warp_basis(model)
   tryCatch(
@@ -224,13 +265,17 @@ draw_batch <- function(model, n, warp = TRUE, limits = NULL, call = rlang::calle
 }
 
 # The per-DoF limits the kernel keeps a model's draws inside: the enforced
-# rows of model$limits (recorded_limits()), NA elsewhere and when off.
+# rows of model$limits (recorded_limits()), NA elsewhere and when off. `on`
+# NULL (the default) keeps the sensor ranges (a glove cannot read outside
+# them) and, for the copula model, the joint limits too.
 generation_limits <- function(model, on) {
   p <- length(model$dofs)
   lo <- hi <- rep(NA_real_, p)
   lim <- model$limits
-  if (isTRUE(on) && !is.null(lim) && nrow(lim)) {
-    lim <- lim[lim$enforced, , drop = FALSE]
+  if (!isFALSE(on) && !is.null(lim) && nrow(lim)) {
+    src <- lim$source %||% rep("skeleton", nrow(lim))
+    keep <- lim$enforced & (isTRUE(on) | src != "skeleton" | identical(model$dependence$type, "copula"))
+    lim <- lim[keep, , drop = FALSE]
     j <- match(lim$dof, model$dofs)
     lo[j] <- lim$lo
     hi[j] <- lim$hi
@@ -324,7 +369,7 @@ assemble_generated <- function(models, parts, first_id = 1) {
     unlist(lapply(parts, `[[`, "recordings"), recursive = FALSE)
   names(recs) <- ids
   n_frames <- unlist(lapply(parts, `[[`, "n_frames"), use.names = FALSE)
-  lev <- feix_levels()
+  lev <- model_levels(first)
   codes <- vapply(models, function(m) match(m$grasp, lev), integer(1))
   meta <- structure(list(id = ids,
                          grasp = structure(rep.int(codes, counts), levels = lev, class = "factor"),
@@ -333,7 +378,7 @@ assemble_generated <- function(models, parts, first_id = 1) {
                          source = rep.int("generated", N),
                          warp_score = unlist(lapply(parts, function(pt) pt$beta[, 1]), use.names = FALSE)),
                     class = "data.frame", row.names = c(NA_integer_, -N))
-  out <- new_grasps(recs, meta, first$dofs, first$rate, first$unit, n_frames = n_frames)
+  out <- new_grasps(recs, meta, first$dofs, first$rate, first$unit, n_frames = n_frames, glove = first$glove)
   attr(out, "scores") <- stack_scores(parts, N, ids, first)
   out
 }
@@ -358,3 +403,66 @@ stack_scores <- function(parts, N, ids, model) {
 
 # One batch from one model as a grasps object.
 
+
+# Rest before and hold after each generated motion: lengths resampled from
+# the training recordings' own, the first and last posture held with the
+# tremor measured in the recordings' still phases, inside the model's limits.
+add_still_phases <- function(got, model, limits) {
+  ph <- model$phases
+  n <- length(got$recordings)
+  rest <- ph$rest[sample.int(length(ph$rest), n, replace = TRUE)]
+  hold <- ph$hold[sample.int(length(ph$hold), n, replace = TRUE)]
+  lim <- generation_limits(model, limits)
+  p <- length(model$dofs)
+  still <- function(row, m) {
+    if (m == 0L) return(NULL)
+    matrix(row, m, p, byrow = TRUE) + sweep(matrix(stats::rnorm(m * p), m, p), 2, ph$tremor, "*")
+  }
+  got$recordings <- lapply(seq_len(n), function(i) {
+    r <- got$recordings[[i]]
+    out <- rbind(still(r[1, ], rest[i]), r, still(r[nrow(r), ], hold[i]))
+    lo <- ifelse(is.na(lim$lo), -Inf, lim$lo)
+    hi <- ifelse(is.na(lim$hi), Inf, lim$hi)
+    out <- sweep(sweep(out, 2, lo, pmax), 2, hi, pmin)
+    colnames(out) <- colnames(r)
+    out
+  })
+  got$n_frames <- got$n_frames + as.integer(rest + hold)
+  got
+}
+
+# Residual resampling (fit_grasp_model(residuals = "resample")): each
+# generated motion gets the residual curves of one training recording drawn
+# at random, stretched to its length, then is kept inside the limits.
+add_residuals <- function(got, model, limits) {
+  res <- model$residuals
+  n <- length(got$recordings)
+  pick <- sample.int(dim(res)[1], n, replace = TRUE)
+  lim <- generation_limits(model, limits)
+  lo <- ifelse(is.na(lim$lo), -Inf, lim$lo)
+  hi <- ifelse(is.na(lim$hi), Inf, lim$hi)
+  L <- dim(res)[2]
+  got$recordings <- lapply(seq_len(n), function(i) {
+    r <- got$recordings[[i]]
+    ix <- fraction_index(L, seq(0, 1, length.out = nrow(r)))
+    e <- res[pick[i], ix$lo, , drop = TRUE] * (1 - ix$w) + res[pick[i], ix$hi, , drop = TRUE] * ix$w
+    out <- r + matrix(e, nrow(r), ncol(r))
+    out <- sweep(sweep(out, 2, lo, pmax), 2, hi, pmin)
+    colnames(out) <- colnames(r)
+    out
+  })
+  got
+}
+
+# Channels whose range has no width (a stuck sensor: every training value the
+# same) read exactly that value in every generated frame.
+hold_flat_limits <- function(got, model, limits) {
+  lim <- generation_limits(model, limits)
+  flat <- which(!is.na(lim$lo) & lim$hi <= lim$lo)
+  if (!length(flat)) return(got)
+  got$recordings <- lapply(got$recordings, function(r) {
+    r[, flat] <- rep(lim$lo[flat], each = nrow(r))
+    r
+  })
+  got
+}

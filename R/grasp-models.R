@@ -74,7 +74,7 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
                           call = rlang::caller_env()) {
   check_grasps(x, call = call)
   present <- levels(droplevels(x$meta$grasp))
-  types <- check_grasp_selection(grasps, "grasps", call = call) %||% present
+  types <- check_grasp_selection(grasps, "grasps", levels = levels(x$meta$grasp), call = call) %||% present
   absent <- setdiff(types, present)
   if (length(absent)) {
     hm_abort("No recordings of grasp type{?s} {.val {absent}} in {.arg x}.",
@@ -91,6 +91,9 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
                i = "Arguments must be named; see {.help handmotion::fit_grasp_model}."),
              "bad_input", argument = "...", call = call)
   }
+  # rest/hold trimming is decided once for the whole set, so every type's
+  # model treats its recordings (and the recordings it classifies) alike
+  args$motion <- resolve_motion(x, args$motion %||% "auto", call = call)
   seed <- check_seed(seed, call = call)
   # future's seeding switches the session to L'Ecuyer-CMRG; give the caller back their RNG
   old_rng <- save_rng()
@@ -221,7 +224,7 @@ validate_grasp_models <- function(x) {
 
 # A type whose fit failed, from the error it raised: the set's null model.
 new_grasp_model_failed <- function(grasp, error) {
-  structure(list(grasp = grasp, grasp_id = match(grasp, feix_levels()),
+  structure(list(grasp = grasp, grasp_id = feix_ids(grasp),
                  message = gsub("\\s*\n\\s*", " ", cli::ansi_strip(conditionMessage(error))),
                  class = class(error)[1]),
             class = "grasp_model_failed")
@@ -251,7 +254,7 @@ failed_types <- function(x) {
 `[.grasp_models` <- function(x, i, ...) {
   if (missing(i)) return(x)
   keep <- if (is.character(i) || is.factor(i)) {
-    as.character(as_feix_grasp(i))
+    resolve_labels(i, model_set_levels(x), "i")
   } else if (is.logical(i)) {
     names(x)[i]
   } else {
@@ -278,7 +281,7 @@ select_models <- function(x, grasp, call) {
     }
     return(fitted_models(x))
   }
-  keep <- check_grasp_selection(grasp, "grasp", call = call)
+  keep <- check_grasp_selection(grasp, "grasp", levels = model_set_levels(x), call = call)
   absent <- setdiff(keep, names(x))
   if (length(absent)) {
     hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input",

@@ -45,8 +45,13 @@ fit_grasp_recognizer <- function(x, at = c(0, 0.25, 0.5, 0.75, 1), horizon = NUL
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   at <- check_fractions(at, "at", call = call)
+  # recordings that rest before the grasp are read from their motion onset
+  det <- if (resolve_motion(x, "auto") == "trim") fit_onset_detector(x)
+  x <- from_onset(x, det)
   y <- check_training_labels(x, call = call)
-  recognizer_fit(x, y, at, recognizer_horizon(x, horizon, call))
+  rec <- recognizer_fit(x, y, at, recognizer_horizon(x, horizon, call))
+  rec$onset <- det
+  rec
 }
 
 # The number of horizons: given, or the 95th percentile of the durations.

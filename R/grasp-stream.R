@@ -40,6 +40,9 @@ start_recognition <- function(recognizer) {
   state$h <- 0L
   state$travel <- numeric(length(recognizer$dofs))
   state$probs <- NULL
+  # a recogniser of recordings that rest first waits for the motion's onset
+  state$waiting <- !is.null(recognizer$onset)
+  state$pending <- matrix(0, 0L, length(recognizer$dofs))
   structure(list(state = state), class = "grasp_stream")
 }
 
@@ -57,6 +60,21 @@ update.grasp_stream <- function(object, frame, ...) {
     hm_abort("{.arg frame} is named but not by the recogniser's DoFs in order.", "bad_input",
              argument = "frame", call = rlang::caller_env())
   }
+  if (isTRUE(st$waiting)) {
+    # keep the last two seconds; once the motion starts, replay it from its onset
+    keep <- max(2L, round(2 * rec$rate))
+    st$pending <- utils::tail(rbind(st$pending, frame), keep)
+    on <- if (nrow(st$pending) >= 3L) detect_onset(st$pending, rec$onset) else NA_integer_
+    if (is.na(on)) {
+      prior <- rep(1 / length(rec$classes), length(rec$classes))
+      return(structure(stats::setNames(prior, rec$classes), frames = 0L, ms = 0, motion = FALSE))
+    }
+    st$waiting <- FALSE
+    replay <- st$pending[on:nrow(st$pending), , drop = FALSE]
+    st$pending <- NULL
+    for (k in seq_len(nrow(replay))) out <- update.grasp_stream(object, replay[k, ])
+    return(out)
+  }
   h <- st$h + 1L
   st$h <- h
   # past the horizon the prediction is that of the first `horizon` frames
@@ -67,7 +85,7 @@ update.grasp_stream <- function(object, frame, ...) {
     st$probs <- softmax_rows(shrunk_lda_scores(rec$fits[[h]], matrix(f, 1L)))[1L, ]
   }
   probs <- st$probs
-  structure(probs, frames = h, ms = 1000 * h / rec$rate)
+  structure(probs, frames = h, ms = 1000 * h / rec$rate, motion = TRUE)
 }
 
 #' @export

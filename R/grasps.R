@@ -7,6 +7,8 @@
 #   dofs        character, the DoF names
 #   rate        sampling rate in Hz
 #   unit        angle unit: "deg", "rad" or "raw" (raw sensor counts)
+#   glove       the glove_profile of the channels (R/glove.R): joints driven,
+#               units, ranges, stuck channels
 
 grasp_units <- c("deg", "rad", "raw")
 
@@ -22,8 +24,10 @@ grasp_units <- c("deg", "rad", "raw")
 #'   matrix for a set of one. Every matrix must have `length(dofs)` columns,
 #'   at least one row and only finite values.
 #' @param meta A data frame with one row per recording. Recognised columns:
-#'   `id` (character, unique), `grasp` (Feix type as name or id 1-33; `NA` for
-#'   unlabelled motion), `subject`, `object`, `trial`, `source`. Missing
+#'   `id` (character, unique), `grasp` (the recording's class label: any
+#'   string or factor level, such as an object, a gesture or a Feix grasp
+#'   type; `NA` for unlabelled motion; see Labels), `subject`, `object`,
+#'   `trial`, `source`. Missing
 #'   columns are filled in (ids `"r1"`, `"r2"`, ...; others `NA`); extra
 #'   columns are kept. `n_frames` is always recomputed.
 #' @param dofs DoF names. Defaults to the column names of the first recording,
@@ -31,6 +35,24 @@ grasp_units <- c("deg", "rad", "raw")
 #'   recordings have 16 columns.
 #' @param rate Sampling rate in Hz (positive number).
 #' @param unit Angle unit: `"deg"`, `"rad"` or `"raw"` (raw sensor counts).
+#'   `NULL` (default): the unit of the `glove`'s channels, else `"deg"`.
+#' @param glove The glove that recorded the data: a [glove_profile()] or the
+#'   name of a shipped one. `NULL` (default) recognises the HUST and
+#'   GraspDB14 channel names and otherwise describes the channels as not
+#'   drawn. Channels that are constant over every recording are flagged as
+#'   stuck (a warning of class `handmotion_warning_stuck_channels`); models
+#'   hold them at their value instead of fitting them.
+#' @section Labels:
+#' A recording's class is whatever you call it. When every label names a
+#' Feix grasp type (by name in any case, with spaces, hyphens or
+#' underscores, or by id 1-33) the labels become a factor over the 33 Feix
+#' types in id order, which the thesis' tables and [reproduce_thesis()]
+#' need. Otherwise the labels are kept as your own classes: a factor keeps
+#' its levels, strings are sorted. When only some labels look like Feix
+#' types a warning of class `handmotion_warning_mixed_labels` says so (a
+#' misspelt type would otherwise become a class of its own). Every verb
+#' (fits, [generate()], classifiers, evaluation, plots) works on the labels
+#' as they are.
 #' @return An object of class `grasps`.
 #' @seealso [simulate_grasps()], [as.data.frame.grasps()], [autoplot.grasps()]
 #' @export
@@ -41,8 +63,16 @@ grasp_units <- c("deg", "rad", "raw")
 #'                                     subject = c("s1", "s2", "s1")))
 #' g
 #' g[g$meta$grasp == "Tripod"]
-grasps <- function(recordings, meta = NULL, dofs = NULL, rate = 50, unit = "deg") {
+#' # your own labels: objects, gestures, ...
+#' h <- grasps(recs, meta = data.frame(grasp = c("bottle", "mug", "bottle")))
+#' levels(h$meta$grasp)
+grasps <- function(recordings, meta = NULL, dofs = NULL, rate = 50, unit = NULL, glove = NULL) {
   call <- rlang::caller_env()
+  if (!is.null(glove)) glove <- glove_profile(glove)
+  if (is.null(unit)) {
+    u <- unique(glove$channels$unit)
+    unit <- if (length(u) == 1L) u else if (length(u) > 1L) "raw" else "deg"
+  }
   if (is.matrix(recordings) || is.data.frame(recordings)) recordings <- list(recordings)
   if (!is.list(recordings)) {
     hm_abort("{.arg recordings} must be a list of numeric matrices, not {.obj_type_friendly {recordings}}.",
@@ -85,18 +115,19 @@ grasps <- function(recordings, meta = NULL, dofs = NULL, rate = 50, unit = "deg"
   }
   meta <- build_meta(meta, recordings, ids, call = call)
   names(recordings) <- meta$id
-  new_grasps(recordings, meta, dofs, rate, unit)
+  glove <- match_glove(glove, dofs, unit, call = call)
+  flag_stuck(new_grasps(recordings, meta, dofs, rate, unit, glove = glove), call = call)
 }
 
 # Low-level constructor: no validation, for internal use by code that already
 # guarantees the invariants (subsetting, generators). A generator that
 # already knows the frame counts passes `n_frames` (saves a per-recording R
 # call, which dominates large generated batches).
-new_grasps <- function(recordings, meta, dofs, rate, unit, n_frames = NULL) {
+new_grasps <- function(recordings, meta, dofs, rate, unit, n_frames = NULL, glove = NULL) {
   meta$n_frames <- if (is.null(n_frames)) vapply(recordings, nrow, integer(1)) else as.integer(n_frames)
   rownames(meta) <- NULL
   structure(list(recordings = recordings, meta = meta, dofs = dofs,
-                 rate = rate, unit = unit), class = "grasps")
+                 rate = rate, unit = unit, glove = glove %||% guess_glove(dofs, unit)), class = "grasps")
 }
 
 check_rate <- function(rate, call = rlang::caller_env()) {
@@ -188,8 +219,8 @@ build_meta <- function(meta, recordings, ids, call = rlang::caller_env()) {
     hm_abort("Recording ids must be unique; duplicated: {.val {unique(ids[duplicated(ids)])}}.",
              "bad_input", argument = "meta", call = call)
   }
-  meta$grasp <- as_feix_grasp(if ("grasp" %in% names(meta)) meta$grasp else rep(NA, n),
-                              ids = ids, call = call)
+  meta$grasp <- as_grasp_label(if ("grasp" %in% names(meta)) meta$grasp else rep(NA, n),
+                               ids = ids, call = call)
   meta$subject <- if ("subject" %in% names(meta)) as.character(meta$subject) else NA_character_
   meta$object <- if ("object" %in% names(meta)) as.character(meta$object) else NA_character_
   meta$trial <- if ("trial" %in% names(meta)) as.integer(meta$trial) else NA_integer_
@@ -197,45 +228,6 @@ build_meta <- function(meta, recordings, ids, call = rlang::caller_env()) {
   meta$n_frames <- vapply(recordings, nrow, integer(1))
   core <- c("id", "grasp", "subject", "object", "trial", "n_frames", "source")
   meta[c(core, setdiff(names(meta), core))]
-}
-
-#' Feix grasp type names, in id order 1-33
-#' @noRd
-feix_levels <- function() handmotion::feix_taxonomy$name
-
-#' Convert grasp ids or names to a factor over the 33 Feix types
-#'
-#' Accepts integer ids (1-33), names in any case with spaces, hyphens or
-#' underscores ("power sphere", "Sphere-4-Finger"), an existing factor, or NA.
-#' @noRd
-as_feix_grasp <- function(x, ids = NULL, call = rlang::caller_env()) {
-  lev <- feix_levels()
-  if (is.factor(x)) x <- as.character(x)
-  out <- rep(NA_integer_, length(x))
-  if (is.numeric(x)) {
-    ok <- !is.na(x) & x %in% seq_along(lev)
-    out[ok] <- as.integer(x[ok])
-    bad <- !is.na(x) & !ok
-  } else {
-    key <- function(s) gsub("[^a-z0-9]", "", tolower(s))
-    num <- suppressWarnings(as.integer(x))
-    by_id <- !is.na(num) & num %in% seq_along(lev)
-    out[by_id] <- num[by_id]
-    m <- match(key(x), key(lev))
-    out[!by_id] <- m[!by_id]
-    # the thesis prints type 33 as "Inferrior Pincer"
-    out[!by_id & key(x) == "inferriorpincer"] <- 33L
-    bad <- !is.na(x) & is.na(out)
-  }
-  if (any(bad)) {
-    # character, so cli pluralises on its length rather than reading a number as a count
-    where <- as.character(if (!is.null(ids)) ids[bad] else which(bad))
-    hm_abort(c("Unknown grasp type{?s} {.val {unique(as.character(x[bad]))}}.",
-               i = if (!is.null(ids)) "In recording{?s} {.val {where}}." else "At position{?s} {.val {where}}.",
-               i = "Use a Feix type name (see {.code feix_taxonomy$name}) or an id from 1 to 33."),
-             "unknown_grasp", recording = where, call = call)
-  }
-  factor(lev[out], levels = lev)
 }
 
 #' Access the recordings and metadata of a grasps set
@@ -314,7 +306,7 @@ length.grasps <- function(x) length(x$recordings)
     if (anyNA(idx)) hm_abort("Index out of range (the set has {n} recording{?s}).", "bad_input", argument = "i")
   }
   meta <- x$meta[idx, , drop = FALSE]
-  new_grasps(x$recordings[idx], meta, x$dofs, x$rate, x$unit)
+  new_grasps(x$recordings[idx], meta, x$dofs, x$rate, x$unit, glove = x$glove)
 }
 
 #' @export
@@ -334,6 +326,7 @@ print.grasps <- function(x, ...) {
     cat("  DoFs: ", paste(utils::head(x$dofs, 16), collapse = " "),
         if (length(x$dofs) > 16) " ..." else "", "\n", sep = "")
   }
+  print_glove_line(x)
   invisible(x)
 }
 
@@ -358,7 +351,8 @@ summary.grasps <- function(object, ...) {
   out <- do.call(rbind, rows)
   rownames(out) <- NULL
   structure(out, class = c("summary_grasps", "data.frame"),
-            rate = object$rate, unit = object$unit, dofs = object$dofs)
+            rate = object$rate, unit = object$unit, dofs = object$dofs,
+            glove = object$glove$name %||% NA_character_, stuck = stuck_channels(object))
 }
 
 #' @export
@@ -366,6 +360,8 @@ print.summary_grasps <- function(x, ...) {
   cat(sprintf("Grasps by type (%d DoFs at %g Hz, %s)\n", length(attr(x, "dofs")),
               attr(x, "rate"), attr(x, "unit")))
   print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
+  stuck <- attr(x, "stuck")
+  if (length(stuck)) cat(sprintf("Stuck channels (constant, left out of models): %s\n", paste(stuck, collapse = " ")))
   invisible(x)
 }
 
@@ -538,4 +534,16 @@ plot_grasp_curves <- function(object, colour, dofs, max_recordings, call) {
 # Draw `k` of `n` indices with a fixed seed without disturbing the caller's RNG.
 sample_seeded <- function(n, k, seed) {
   with_seed(seed, sample.int(n, k))
+}
+
+# The glove line of print.grasps(): the profile, channels not drawn, stuck ones.
+print_glove_line <- function(x) {
+  g <- x$glove
+  if (is.null(g)) return(invisible())
+  ch <- g$channels
+  undrawn <- ch$channel[is.na(ch$axis)]
+  cat(sprintf("  glove: %s%s\n", g$name,
+              if (length(undrawn)) sprintf("; not drawn: %s", paste(utils::head(undrawn, 6), collapse = " ")) else ""))
+  if (any(ch$stuck)) cat(sprintf("  stuck channels (constant, left out of models): %s\n", paste(ch$channel[ch$stuck], collapse = " ")))
+  invisible()
 }

@@ -101,7 +101,7 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
   palette <- c("#4477aa", "#cc6677", "#228833", "#aa3377", "#66ccee", "#ccbb44", "#ee6677", "#bbbbbb")
   recs <- lapply(seq_along(hands), function(i) {
     h <- hands[[i]]
-    pos <- forward_kinematics(h$angles, skeleton, unit = h$unit, ...)
+    pos <- fk_mapped(h$angles, skeleton, h$unit, h$mapping, ...)
     pos <- pos[, joints$name, , drop = FALSE]
     list(label = h$label, n = dim(pos)[1],
          colour = if (layout == "overlay" && i > 1L) palette[(i - 2L) %% length(palette) + 1L] else NULL,
@@ -148,7 +148,8 @@ hand_3d_inputs <- function(x, recording, rate, call) {
       m <- g$meta[i, ]
       lab <- paste0(m$id, if (!is.null(m$grasp) && !is.na(m$grasp)) paste0(" (", m$grasp, ")") else "")
       if (!is.null(label_prefix)) lab <- paste0(label_prefix, ": ", lab)
-      list(angles = g$recordings[[i]], unit = g$unit, rate = g$rate, label = lab)
+      v <- glove_recording(g, i)   # degrees and joints through the set's glove
+      list(angles = v$angles, unit = v$unit, mapping = v$mapping, rate = g$rate, label = lab)
     })
   }
   from_matrix <- function(m, label) {
@@ -192,7 +193,7 @@ resolve_recordings <- function(g, pick, call) {
 joint_limit_flags <- function(h, joint_names, skeleton) {
   dofs <- colnames(h$angles)
   factor <- if (identical(h$unit, "rad")) 180 / pi else 1
-  lim <- tryCatch(dof_limits(dofs, factor, skeleton), handmotion_error = function(e) NULL)
+  lim <- tryCatch(dof_limits(dofs, factor, skeleton, h$mapping), handmotion_error = function(e) NULL)
   n <- nrow(h$angles)
   out <- matrix(0L, length(joint_names), n)
   if (is.null(lim) || !nrow(lim)) return(as.vector(out))

@@ -93,17 +93,49 @@ limit_enforce_max_outside <- 0.1
 # is enforced (that share at most limit_enforce_max_outside). DoFs no default
 # mapping knows give an empty table and a note.
 recorded_limits <- function(x, dofs) {
-  lim <- tryCatch(dof_limits(dofs, if (identical(x$unit, "rad")) 180 / pi else 1),
-                  handmotion_error = function(e) NULL)
-  if (is.null(lim) || !x$unit %in% c("deg", "rad")) {
-    return(data.frame(dof = character(), col = integer(), lo = numeric(), hi = numeric(),
-                      recorded_outside = numeric(), enforced = logical()))
+  empty <- data.frame(dof = character(), col = integer(), lo = numeric(), hi = numeric(),
+                      joint = character(), recorded_outside = numeric(), enforced = logical(),
+                      source = character(), stringsAsFactors = FALSE)
+  lim <- if (x$unit %in% c("deg", "rad")) {
+    tryCatch(dof_limits(dofs, if (identical(x$unit, "rad")) 180 / pi else 1,
+                        mapping = if (!is.null(x$glove)) glove_mapping(match_glove(x$glove, dofs, x$unit))),
+             handmotion_error = function(e) NULL)
   }
-  X <- do.call(rbind, x$recordings)[, lim$col, drop = FALSE]
-  outside <- colMeans(sweep(X, 2, lim$lo, "<") | sweep(X, 2, lim$hi, ">"))
-  lim$recorded_outside <- unname(outside)
-  lim$enforced <- lim$recorded_outside <= limit_enforce_max_outside
-  lim
+  if (is.null(lim) || !nrow(lim)) lim <- empty[c("dof", "col", "lo", "hi", "joint")]
+  X <- do.call(rbind, x$recordings)
+  if (nrow(lim)) {
+    Xl <- X[, lim$col, drop = FALSE]
+    lim$recorded_outside <- unname(colMeans(sweep(Xl, 2, lim$lo, "<") | sweep(Xl, 2, lim$hi, ">")))
+    lim$enforced <- lim$recorded_outside <= limit_enforce_max_outside
+    lim$source <- rep("skeleton", nrow(lim))
+  } else {
+    lim <- empty
+  }
+  rbind(lim, sensor_limits(x, dofs, X, exclude = lim$dof))
+}
+
+# Limits of a glove's channels that the skeleton does not limit: the
+# sensor's range from the profile, narrowed to the training data's range,
+# or, for raw channels without a declared range, the training data's range
+# (documented under generate()). A sensor cannot read outside its range, so
+# these are enforced whenever generation keeps limits at all.
+sensor_limits <- function(x, dofs, X, exclude) {
+  ch <- if (!is.null(x$glove)) match_glove(x$glove, dofs, x$unit)$channels else NULL
+  rows <- lapply(seq_along(dofs), function(j) {
+    if (dofs[j] %in% exclude || is.null(ch)) return(NULL)
+    declared <- !is.na(ch$min[j]) && !is.na(ch$max[j]) && ch$unit[j] == x$unit
+    if (!declared && ch$unit[j] != "raw") return(NULL)
+    lo <- min(X[, j])
+    hi <- max(X[, j])
+    if (declared) {
+      lo <- max(lo, ch$min[j])
+      hi <- min(hi, ch$max[j])
+    }
+    data.frame(dof = dofs[j], col = j, lo = lo, hi = hi, joint = ch$joint[j], recorded_outside = 0,
+               enforced = hi >= lo, source = if (declared) "glove" else "training", stringsAsFactors = FALSE)
+  })
+  out <- do.call(rbind, rows)
+  if (is.null(out)) NULL else out
 }
 
 # Share of frames of a grasps object outside the limits of `lim` (a

@@ -264,7 +264,7 @@ forward_kinematics <- function(x, skeleton = hand_skeleton(), mapping = NULL,
   mode <- check_choice(mode, arg = "mode", call = rlang::current_env())
   check_skeleton(skeleton, call = call)
   input <- fk_input(x, unit, call)
-  plan <- fk_plan(input$dofs, skeleton, mapping, mode, deactivate, call)
+  plan <- fk_plan(input$dofs, skeleton, mapping %||% input$mapping, mode, deactivate, call)
   out <- lapply(names(input$recordings), function(id) {
     rec <- input$recordings[[id]]
     rec <- rec[fk_frames(frames, nrow(rec), id, call), , drop = FALSE]
@@ -277,10 +277,25 @@ forward_kinematics <- function(x, skeleton = hand_skeleton(), mapping = NULL,
 }
 
 fk_input <- function(x, unit, call) {
+  mapping <- NULL
   if (inherits(x, "grasps")) {
     recs <- x$recordings
     unit <- x$unit
     dofs <- x$dofs
+    if (!is.null(x$glove)) {
+      # the glove says what each channel measures: its angles in degrees
+      # (raw counts through the profile's map) and the joints it drives
+      glove <- match_glove(x$glove, dofs, unit, call = call)
+      mapping <- glove_mapping(glove)
+      if (!nrow(mapping)) {
+        hm_abort(c("No channel of the glove {.val {glove$name}} drives a joint of the hand, so it cannot be drawn.",
+                   i = "Describe the channels with {.fn glove_profile} (joint, axis, and for raw counts a map to degrees) and pass it as {.arg glove} to {.fn grasps}."),
+                 "bad_mapping", argument = "x", call = call)
+      }
+      for (id in names(recs)) if (anyNA(recs[[id]]) || any(is.infinite(recs[[id]]))) as_recording_matrix(recs[[id]], id, call)
+      recs <- glove_degrees(recs, glove)
+      return(list(recordings = recs, dofs = dofs, factor = 1, mapping = mapping))
+    }
   } else {
     if (is.data.frame(x)) x <- as.matrix(x)
     if (!is.matrix(x) || !is.numeric(x)) {
@@ -318,7 +333,7 @@ fk_input <- function(x, unit, call) {
   # a NaN angle would pose the hand at NaN (an empty picture, a page of NaN):
   # refuse it here, naming the recording, frame and DoF
   for (id in names(recs)) if (anyNA(recs[[id]]) || any(is.infinite(recs[[id]]))) as_recording_matrix(recs[[id]], id, call)
-  list(recordings = recs, dofs = dofs, factor = if (unit == "rad") 180 / pi else 1)
+  list(recordings = recs, dofs = dofs, factor = if (unit == "rad") 180 / pi else 1, mapping = mapping)
 }
 
 fk_frames <- function(frames, n, id, call) {

@@ -17,7 +17,8 @@ hand_pose <- function(x, frame = "last", skeleton = hand_skeleton(), ..., call =
     arrays <- lapply(seq_along(x), function(i) {
       rec <- as_recording_matrix(x$recordings[[i]], x$meta$id[i], call)  # names the recording
       fr <- fk_frames(frame, nrow(rec), x$meta$id[i], call)
-      a <- forward_kinematics(rec, skeleton, frames = fr, unit = x$unit, ...)
+      v <- glove_recording(x, i)   # degrees and joints through the set's glove
+      a <- fk_mapped(v$angles, skeleton, v$unit, v$mapping, frames = fr, ...)
       attr(a, "frames") <- fr
       a
     })

@@ -110,7 +110,7 @@ thesis_plot_types <- function(x, grasp, call) {
     }
     return(present)
   }
-  types <- as.character(as_feix_grasp(grasp, call = call))
+  types <- resolve_labels(grasp, levels(x$meta$grasp), "grasp", call = call)
   absent <- setdiff(types, present)
   if (length(absent)) {
     hm_abort("No recordings of grasp type{?s} {.val {absent}} in {.arg x}.", "too_few_recordings",

@@ -116,7 +116,8 @@ predict.weighted_fpca <- function(object, new_data, type = c("class", "prob", "d
 predict.grasp_recognizer <- function(object, new_data, type = c("class", "prob", "distance"),
                                      frames = NULL, ms = NULL, fraction = NULL, ...) {
   call <- rlang::caller_env()
-  check_grasps(new_data, arg = "new_data", call = call)
+  check_trained_dofs(new_data, object$dofs, "recogniser", call = call)
+  new_data <- from_onset(new_data, object$onset)   # time counts from the motion's onset
   seen <- seen_frames(new_data, frames, ms, fraction, call)
   predict_classifier(object, new_data, type, list(...), call, seen = seen)
 }
@@ -176,7 +177,7 @@ prefixed_frame <- function(m, prefix) {
 # The levels of the predicted class: those of the training labels (stored
 # by the fit), or the classes themselves for an object built without them.
 classifier_levels <- function(object, classes) {
-  lv <- if (inherits(object, "grasp_models")) attr(object, "levels") else object$levels
+  lv <- if (inherits(object, "grasp_models")) attr(object, "levels") %||% model_set_levels(object) else object$levels
   lv %||% classes
 }
 

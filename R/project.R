@@ -106,6 +106,10 @@ project_models <- function(models, newdata, arg, details, call, keep = identity,
     hm_abort("{.arg {arg}} holds no fitted grasp models.", "bad_input", argument = arg, call = call)
   }
   stacks <- list()
+  # recordings projected on models fitted to trimmed motion are trimmed alike
+  if (any(vapply(models, function(m) identical(m$settings$motion, "trim"), logical(1)))) {
+    newdata <- trim_motion(newdata)
+  }
   one <- function(m) {
     validate_projection_model(m, call)  # before the native kernel
     check_projection_dofs(m, newdata, call)

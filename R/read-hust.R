@@ -14,7 +14,8 @@ hust_manifest_name <- "manifest.csv"
 #' Where the metadata comes from, in order:
 #' 1. `manifest`: a data frame, or the path of a CSV file, with a column
 #'    `file` (file name or path, relative to the manifest's folder or to
-#'    `path`) and any of `grasp` (Feix name or id 1-33), `subject`, `object`,
+#'    `path`) and any of `grasp` (the label: any string, e.g. a Feix type or
+#'    an object), `subject`, `object`,
 #'    `trial`, `id`, `rate`, `unit` and further columns (kept as metadata).
 #' 2. `pattern`: a Perl regular expression with named groups (`grasp`,
 #'    `subject`, `object`, `trial`, `id`) matched against each file name
@@ -46,6 +47,10 @@ hust_manifest_name <- "manifest.csv"
 #' @param recursive Look into sub-directories.
 #' @param truncated `"error"` or `"drop"` a truncated last line (fewer
 #'   fields than DoFs); see [read_graspdb14()].
+#' @param glove `NULL` for the 16 HUST DoFs, or the [glove_profile()] (or a
+#'   shipped profile's name) of the glove that wrote the files: its channels
+#'   are the columns (matched to a header by name, else in the profile's
+#'   order), and `unit` defaults to the profile's. See [read_glove()].
 #' @return A `grasps` object with the 16 HUST DoFs. Attribute `"failures"`
 #'   lists every file that could not be read (see [read_failures()]): bad
 #'   content (classed errors as in [read_graspdb14()]), a file name the
@@ -64,7 +69,7 @@ hust_manifest_name <- "manifest.csv"
 #' g$meta
 read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = NA,
                       rate = NULL, unit = NULL, file_pattern = "\\.(csv|txt)$",
-                      recursive = FALSE, truncated = c("error", "drop")) {
+                      recursive = FALSE, truncated = c("error", "drop"), glove = NULL) {
   call <- rlang::caller_env()
   truncated <- check_choice(truncated, arg = "truncated", call = call)
   if (!is.null(manifest) && !is.null(pattern)) {
@@ -79,7 +84,8 @@ read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = 
   }
   plan <- hust_read_plan(input$files, manifest, pattern, base_dir,
                          from_dir = any(dir.exists(path)), call = call)
-  dofs <- handmotion::hust_dofs$name
+  if (!is.null(glove)) glove <- glove_profile(glove)
+  dofs <- if (is.null(glove)) handmotion::hust_dofs$name else glove$channels$channel
   reader <- function(k) {
     pre <- plan$errors[[k]]
     if (!is.null(pre)) stop(pre)
@@ -108,11 +114,12 @@ read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = 
   # only a "drop" read can drop lines; record which files lost one
   if (truncated == "drop") meta$dropped_last_line <- vapply(recs, `[[`, logical(1), "dropped")
   if (is.null(rate)) rate <- manifest_single(meta, "rate", 50, call = call)
-  if (is.null(unit)) unit <- manifest_single(meta, "unit", "deg", call = call)
+  if (is.null(unit)) unit <- manifest_single(meta, "unit", NA, call = call)
+  if (is.na(unit)) unit <- NULL   # the glove's unit, else degrees
   meta$rate <- NULL
   meta$unit <- NULL
   out <- grasps(lapply(recs, `[[`, "values"), meta = meta, dofs = dofs, rate = as.numeric(rate),
-                unit = unit)
+                unit = unit, glove = glove)
   attr(out, "failures") <- failures
   out
 }
@@ -172,20 +179,8 @@ hust_read_plan <- function(files, manifest, pattern, base_dir, from_dir, call = 
         return(hm_condition("Manifest row {k}: file {.file {listed[k]}} does not exist.",
                             c("file_not_found", "bad_file"), file = listed[k], line = NA_integer_))
       }
-      g <- meta$grasp[k]
-      if (!is.null(g) && !is.na(g)) {
-        bad <- tryCatch({ as_feix_grasp(g); NULL }, handmotion_error = function(e) e)
-        if (!is.null(bad)) {
-          return(hm_condition("Manifest row {k}: unknown grasp type {.val {as.character(g)}} for {.file {listed[k]}}.",
-                              c("unknown_grasp", "bad_file"), file = listed[k], line = NA_integer_))
-        }
-      }
       NULL
     })
-    if ("grasp" %in% names(meta)) {
-      meta$grasp <- as.character(meta$grasp)
-      meta$grasp[!vapply(errors, is.null, logical(1))] <- NA
-    }
     return(list(files = listed, meta = meta, errors = errors, unlisted = unlisted))
   }
   files <- files[basename(files) != hust_manifest_name]
@@ -208,18 +203,6 @@ hust_read_plan <- function(files, manifest, pattern, base_dir, from_dir, call = 
     for (k in which(vapply(groups, is.null, logical(1)))) {
       errors[[k]] <- hm_condition("File name {.file {basename(files[k])}} does not match {.arg pattern}.",
                                   c("unknown_file_name", "bad_file"), file = files[k], line = NA_integer_)
-    }
-    if ("grasp" %in% names(meta)) {
-      for (k in seq_along(files)) {
-        g <- meta$grasp[k]
-        if (is.na(g)) next
-        ok <- tryCatch({ as_feix_grasp(g); TRUE }, handmotion_error = function(e) FALSE)
-        if (!ok) {
-          errors[[k]] <- hm_condition("File {.file {basename(files[k])}}: unknown grasp type {.val {g}}.",
-                                      c("unknown_grasp", "bad_file"), file = files[k], line = NA_integer_)
-          meta$grasp[k] <- NA
-        }
-      }
     }
     if ("trial" %in% names(meta)) meta$trial <- suppressWarnings(as.integer(meta$trial))
   }
@@ -329,4 +312,43 @@ detect_separator <- function(line) {
   if (grepl(",", line, fixed = TRUE)) return(",")
   if (grepl("\t", line, fixed = TRUE)) return("\t")
   " "
+}
+
+#' Read recordings of any data glove
+#'
+#' Reads delimited text files of a data glove's channels, one file per
+#' recording and one row per frame, with labels from the file names
+#' (`pattern`) or a manifest: [read_hust()] with the columns and units of
+#' the `glove` profile. Every file that cannot be read is reported (attribute
+#' `"failures"`, see [read_failures()]), never dropped silently.
+#'
+#' @param path A directory, or one or more files.
+#' @param glove The [glove_profile()] of the glove (or a shipped profile's
+#'   name).
+#' @param rate Sampling rate in Hz.
+#' @param ... Further arguments of [read_hust()]: `manifest`, `pattern`,
+#'   `header`, `sep`, `unit`, `file_pattern`, `recursive`, `truncated`.
+#' @return A [grasps()] object carrying `glove`.
+#' @seealso [glove_profile()], [calibrate()], [trim_motion()]
+#' @export
+#' @examples
+#' raw <- simulate_grasps(subjects = 1, grasps = c(bottle = 3, pen = 20), objects = 1,
+#'                        trials = 2, glove = "resistive", rest = 1, hold = 1, seed = 1)
+#' dir <- tempfile("glove")
+#' dir.create(dir)
+#' for (i in seq_along(raw)) {
+#'   f <- file.path(dir, sprintf("%s_%d.csv", raw$meta$grasp[i], i))
+#'   write.csv(raw$recordings[[i]], f, row.names = FALSE)
+#' }
+#' g <- read_glove(dir, glove = "resistive", rate = 50,
+#'                 pattern = "^(?<grasp>[a-z]+)_(?<trial>\\d+)$")
+#' g
+read_glove <- function(path, glove, rate = 50, ...) {
+  call <- rlang::caller_env()
+  if (missing(glove)) {
+    hm_abort("{.arg glove} is needed: the profile that says what each column measures.",
+             "bad_input", argument = "glove", call = call)
+  }
+  check_dots_for(list(...), read_hust, "read_glove", exclude = c("glove", "rate", "path"), call = call)
+  read_hust(path, glove = glove, rate = rate, ...)
 }

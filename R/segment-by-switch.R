@@ -126,7 +126,7 @@ segment_by_switch <- function(x, keep = c("all", "on", "off"), min_frames = 1L, 
              "no_segments", call = call)
   }
   meta <- do.call(rbind, metas)
-  out <- new_grasps(unlist(pieces, recursive = FALSE), meta, x$dofs, x$rate, x$unit)
+  out <- new_grasps(unlist(pieces, recursive = FALSE), meta, x$dofs, x$rate, x$unit, glove = x$glove)
   names(out$recordings) <- out$meta$id
   attr(out, "dropped") <- if (is.null(drop_tab)) NULL else {
     rownames(drop_tab) <- NULL

@@ -54,7 +54,9 @@
 #'
 #' @param subjects Number of subjects (a positive whole number).
 #' @param grasps Grasp types to simulate: Feix ids (1-33) or names (see
-#'   [feix_taxonomy]), without duplicates.
+#'   [feix_taxonomy]), without duplicates. Named, the names become the
+#'   recordings' labels, e.g. `c(bottle = "Medium Wrap", card = "Lateral")`
+#'   for a study of objects (see Your own glove).
 #' @param objects Number of objects per type, of increasing size.
 #' @param trials Number of trials per subject and object.
 #' @param rate Sampling rate in Hz (at least 10).
@@ -62,6 +64,25 @@
 #' @param overlong Plant the over-long recordings (`TRUE`) or not.
 #' @param params `NULL` for the calibrated defaults, or a named list of
 #'   simulator parameters to replace (see Simulator parameters).
+#' @param glove `NULL` (the HUST joint angles in degrees) or a
+#'   [glove_profile()] (or a shipped profile's name) to record through (see
+#'   Your own glove).
+#' @param rest,hold Seconds of rest before and of holding after the motion
+#'   (each drawn from 0.7 to 1.3 times the value per recording); 0 for
+#'   recordings cut to the motion, as HUST's are.
+#' @param stuck Channels of `glove` that are stuck at one value throughout.
+#' @param session_sd Standard deviation, in counts, of each subject's
+#'   (session's) offset of a raw channel.
+#' @section Your own glove:
+#' With `glove`, `rest` or `hold` the recordings look like those of a data
+#' glove in a lab: each channel of the profile reads the angle of the joint
+#' axis it drives (channels no HUST DoF drives, such as finger spread, follow
+#' the hand's closing), raw channels convert degrees to counts through the
+#' profile's nominal map with a per-session offset and gain, noise of about
+#' one count, rounding and clipping to the sensor's range; `stuck` channels
+#' read one value throughout; the motion is framed by rest and hold phases,
+#' whose true ends are kept as metadata columns `motion_start` and
+#' `motion_end` (frames). Named `grasps` give the labels.
 #' @return A [grasps()] object in degrees. Metadata columns: `id`, `grasp`,
 #'   `subject` (`"S01"`, ...), `object` (`"small"`, `"medium"`, `"large"` for
 #'   three objects), `trial`, `n_frames`, `source` (`"simulated"`),
@@ -74,8 +95,14 @@
 #' g
 #' summary(g)
 #' head(g$meta)
+#' # a raw-count glove, one person, objects as labels, rest and hold phases
+#' raw <- simulate_grasps(subjects = 1, grasps = c(bottle = "Medium Wrap", pen = "Tripod"),
+#'                        objects = 1, trials = 5, rate = 100, glove = "resistive",
+#'                        rest = 1, hold = 1, stuck = "thumb_cross", seed = 1)
+#' raw
 simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 3, rate = 50, seed = 1,
-                            overlong = TRUE, params = NULL) {
+                            overlong = TRUE, params = NULL, glove = NULL, rest = 0, hold = 0,
+                            stuck = NULL, session_sd = 20) {
   call <- rlang::caller_env()
   subjects <- check_whole(subjects, "subjects", max = 1e5, call = call)
   objects <- check_whole(objects, "objects", max = 1e5, call = call)
@@ -110,10 +137,31 @@ simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 
   })
   recs <- unlist(lapply(parts, `[[`, "recordings"), recursive = FALSE)
   meta <- do.call(rbind, lapply(parts, `[[`, "meta"))
-  new_grasps(recs, meta, handmotion::hust_dofs$name, rate, "deg")
+  if (!is.null(names(grasps)) && all(nzchar(names(grasps)))) {
+    # the user's labels for the simulated types
+    meta$feix_type <- as.character(meta$grasp)
+    lab <- names(grasps)[match(meta$grasp, as_feix_grasp(grasps))]
+    meta$grasp <- factor(lab, levels = unique(names(grasps)))
+  }
+  out <- new_grasps(recs, meta, handmotion::hust_dofs$name, rate, "deg")
+  if (is.null(glove) && rest == 0 && hold == 0) return(out)
+  rest <- check_number(rest, "rest", min = 0, max = 60, call = call)
+  hold <- check_number(hold, "hold", min = 0, max = 60, call = call)
+  session_sd <- check_number(session_sd, "session_sd", min = 0, max = 1e6, call = call)
+  glove <- glove_profile(glove %||% "hust")
+  if (length(stuck) && !all(stuck %in% glove$channels$channel)) {
+    hm_abort("{.arg stuck} names {.val {setdiff(stuck, glove$channels$channel)}}, not channels of the glove.",
+             "bad_input", argument = "stuck", call = call)
+  }
+  sim_glove_protocol(out, glove, rest, hold, as.character(stuck), session_sd,
+                     seed = (abs(seed) * 7919L + 101L) %% .Machine$integer.max)
 }
 
 sim_check_types <- function(grasps, call) {
+  if (!is.null(names(grasps)) && (any(!nzchar(names(grasps))) || anyDuplicated(names(grasps)))) {
+    hm_abort("Names of {.arg grasps} are the labels: give every type a name, once.",
+             "bad_input", argument = "grasps", call = call)
+  }
   if (length(grasps) == 0L || anyNA(grasps) || !(is.numeric(grasps) || is.character(grasps) || is.factor(grasps))) {
     hm_abort("{.arg grasps} must be Feix grasp ids (1-33) or names, without missing values.",
              "bad_input", argument = "grasps", call = call)

@@ -64,7 +64,23 @@ thesis_table <- function(id = c("5.1", "5.2", "5.3", "5.3 claims", "5.6", "5.7",
                x = "Got: {.val {names(args) %||% rep('(unnamed)', length(args))}}."),
              "bad_input", argument = "...", call = call)
   }
+  # the thesis' tables are per Feix type: say so for other labels
+  for (a in names(args)) {
+    lab <- thesis_input_labels(args[[a]])
+    if (!is.null(lab) && length(lab) && !all(lab %in% feix_levels())) {
+      check_feix_labels(factor(lab), sprintf("Table %s of the thesis", id), arg = a, call = call)
+    }
+  }
   do.call(build, args)
+}
+
+# The class labels an input of a thesis table holds (NULL when it has none).
+thesis_input_labels <- function(x) {
+  if (inherits(x, "grasp_models")) return(names(x))
+  if (inherits(x, "grasp_classification")) return(colnames(x$distances))
+  if (inherits(x, "grasp_confusion")) return(rownames(x$table))
+  if (inherits(x, "grasps")) return(as.character(unique(stats::na.omit(x$meta$grasp))))
+  NULL
 }
 
 thesis_table_5_1 <- function(models) {

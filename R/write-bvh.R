@@ -59,8 +59,10 @@ write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate 
       return(write_bvh_parts(parts, x$rate, file, call))
     }
     rate <- x$rate
-    unit <- x$unit
-    x <- x$recordings[[recording]]
+    v <- glove_recording(x, recording)   # degrees and joints through the set's glove
+    unit <- v$unit
+    if (is.null(dots$mapping)) dots$mapping <- v$mapping
+    x <- v$angles
   } else {
     unit <- if (is.null(dots$unit)) "deg" else dots$unit
   }

@@ -10,7 +10,8 @@ results are identical to R's for the same seed.
 >>> x = hm.generate(m, grasp="Power Sphere", n=10, seed=2)
 """
 
-from .api import (classify, evaluate_early_recognition, evaluate_generation, evaluate_loso, fit_grasp_classifier,
+from .api import (calibrate, calibration_pose_angles, cut_motion, find_motion, glove_profile, read_glove,
+                  trim_motion, classify, evaluate_early_recognition, evaluate_generation, evaluate_loso, fit_grasp_classifier,
                   fit_grasp_models, fit_grasp_recognizer, fit_last_frame_pca, fit_weighted_fpca, fit_handover, forward_kinematics, generate,
                   hand_skeleton, joint_names, rank_markers, read_graspdb14, read_hust,
                   read_skeleton, reconstruct, select_markers, simulate_grasps, table_5_1, thesis_table,
@@ -38,4 +39,6 @@ __all__ = [
     "thesis_table", "table_5_1", "table_5_2", "table_5_3", "table_5_6", "table_5_7", "table_5_8",
     "select_markers", "fit_handover", "reconstruct",
     "hand_3d", "HandView",
+    "glove_profile", "read_glove", "calibrate", "calibration_pose_angles", "find_motion", "trim_motion",
+    "cut_motion",
 ]

@@ -37,15 +37,20 @@ local({
     for (nm in names(meta)) if (is.factor(meta[[nm]])) meta[[nm]] <- as.character(meta[[nm]])
     list(values = as.double(unlist(lapply(x$recordings, as.vector), use.names = FALSE)),
          n_frames = as.integer(x$meta$n_frames), meta = meta, dofs = x$dofs,
-         rate = x$rate, unit = x$unit)
+         rate = x$rate, unit = x$unit, levels = levels(x$meta$grasp),
+         glove_name = x$glove$name, glove = x$glove$channels)
   }
-  env$grasps_in <- function(values, n_frames, meta, dofs, rate, unit) {
+  env$grasps_in <- function(values, n_frames, meta, dofs, rate, unit, levels = NULL, glove = NULL,
+                            glove_name = NULL) {
+    # the labels keep the order of their levels across the bridge
+    if (!is.null(levels) && "grasp" %in% names(meta)) meta$grasp <- factor(meta$grasp, levels = levels)
+    if (is.data.frame(glove)) glove <- handmotion::glove_profile(glove, name = glove_name)
     p <- length(dofs)
     ends <- cumsum(n_frames * p)
     starts <- ends - n_frames * p + 1
     recs <- lapply(seq_along(n_frames), function(i)
       matrix(values[seq.int(starts[i], length.out = n_frames[i] * p)], n_frames[i], p))
-    handmotion::grasps(recs, meta = meta, dofs = dofs, rate = rate, unit = unit)
+    handmotion::grasps(recs, meta = meta, dofs = dofs, rate = rate, unit = unit, glove = glove)
   }
   env
 })

@@ -32,6 +32,15 @@ def _check_seed(seed):
 
 
 def _grasps_arg(grasps):
+    if isinstance(grasps, dict):
+        # {label: Feix type}: the labels of the simulated recordings
+        from ._bridge import r
+        ro = r()
+        vals = list(grasps.values())
+        vec = ro.IntVector([int(v) for v in vals]) if all(isinstance(v, (int, np.integer)) for v in vals) \
+            else ro.StrVector([str(v) for v in vals])
+        vec.names = ro.StrVector([str(k) for k in grasps])
+        return vec
     """Grasp types as R expects them: names (str) or ids (int); None means all."""
     if grasps is None:
         return None
@@ -158,7 +167,7 @@ def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", **kwargs)
                             dependence=dependence, **kwargs))
 
 
-def evaluate_generation(models, held_out, training, n=None, reps=5, seed=1):
+def evaluate_generation(models, held_out=None, training=None, n=None, reps=5, seed=1, **kwargs):
     """How natural generated grasps are, against a real-vs-real baseline (R's ``evaluate_generation()``).
 
     ``models`` is a :class:`GraspModels` or a dict of them by name (e.g.
@@ -169,6 +178,16 @@ def evaluate_generation(models, held_out, training, n=None, reps=5, seed=1):
     plotting in R).
     """
     ro = r()
+    if held_out is None and training is None:
+        # by folds, from the recordings (``fit``, ``split``, ``folds`` as in R)
+        fit = kwargs.pop("fit", None)
+        if fit is not None:
+            kwargs["fit"] = ro.r["list"](**{str(k): ro.r["list"](**v) for k, v in fit.items()})
+        res = call("evaluate_generation", _as_grasps(models), n=None if n is None else _check_count(n, "n", 5),
+                   reps=_check_count(reps, "reps"), seed=_check_seed(seed), **kwargs)
+        table = r_to_py(ro.r["as.data.frame"](res))
+        return {"table": table, "overall": table[table["grasp"] == "overall"].reset_index(drop=True),
+                "evaluation": RHandle(res)}
     if isinstance(models, GraspModels):
         rmodels = models.robj
     elif isinstance(models, dict) and models and all(isinstance(v, GraspModels) for v in models.values()):
@@ -251,12 +270,18 @@ def classify(models, x, method=None, **kwargs):
             "metrics": summ}
 
 
-def evaluate_loso(x, method="fpca", folds=None, seed=1, **kwargs):
-    """Leave-one-subject-out (or ``folds`` groups of subjects) evaluation of a classifier.
+def evaluate_loso(x, method="fpca", folds=None, seed=1, split="auto", **kwargs):
+    """Held-out evaluation of a classifier: by subject (leave-one-subject-out, or ``folds``
+    groups of subjects) with two or more subjects, else ``folds`` (default 5) stratified folds of
+    recordings; ``split`` is ``"auto"``, ``"subject"`` or ``"recording"``.
 
-    Returns a dict with ``accuracy`` (held-out and in-sample), ``confusion`` (held-out,
-    DataFrame) and ``evaluation`` (a handle on the R result).
+    Returns a dict with ``accuracy`` (held-out and in-sample), ``accuracy_ci`` (95% interval of
+    the held-out accuracy), ``confusion`` (held-out, DataFrame) and ``evaluation`` (a handle on
+    the R result).
     """
+    if split not in ("auto", "subject", "recording"):
+        raise BadInputError(f"split must be 'auto', 'subject' or 'recording', not {split!r}")
+    kwargs["split"] = split
     if method not in _CLASSIFY_METHODS:
         raise BadInputError(f"method must be one of {_CLASSIFY_METHODS}, not {method!r}")
     ro = r()
@@ -265,7 +290,9 @@ def evaluate_loso(x, method="fpca", folds=None, seed=1, **kwargs):
                **kwargs)
     acc = res.rx2("accuracy")
     table = ro.r["as.data.frame.matrix"](ro.r["unclass"](res.rx2("confusion").rx2("table")))
+    ci = res.rx2("accuracy_ci")
     return {"accuracy": {str(k): float(v) for k, v in zip(ro.r["names"](acc), acc)},
+            "accuracy_ci": {str(k): float(v) for k, v in zip(ro.r["names"](ci), ci)},
             "confusion": r_to_py(table).set_axis(list(ro.r["rownames"](table)), axis=0),
             "evaluation": RHandle(res)}
 
@@ -406,3 +433,84 @@ def reconstruct(model, query, **kwargs):
         raise BadInputError("model must come from fit_handover()")
     q = query if isinstance(query, np.ndarray) and query.ndim == 2 else _as_grasps(query, "query")
     return r_to_py(call(r().r["predict"], model, q, **kwargs))
+
+
+# ---------------------------------------------------------------- your own glove
+
+
+def glove_profile(x="hust", name=None, unit="deg"):
+    """A glove profile as a DataFrame of channels (R's ``glove_profile()``).
+
+    ``x`` is a shipped profile's name (``"hust"``, ``"graspdb14"``, ``"cyberglove18"``,
+    ``"cyberglove22"``, ``"resistive"``), a DataFrame of channels or a CSV path. The result
+    (columns ``channel``, ``joint``, ``axis``, ``sign``, ``scale``, ``frame``, ``unit``,
+    ``min``, ``max``, ``angle_min``, ``angle_max``, ``stuck``) can be passed as ``glove=``
+    to :class:`Grasps`, :func:`read_glove` or :func:`simulate_grasps`.
+    """
+    import pandas as pd
+    if isinstance(x, pd.DataFrame):
+        from ._bridge import df_to_r
+        x = df_to_r(x)
+    res = call("glove_profile", x, name=name, unit=unit)
+    out = r_to_py(r().r["getElement"](res, "channels"))
+    out.attrs["name"] = str(r().r["getElement"](res, "name")[0])
+    return out
+
+
+def _glove_arg(glove):
+    import pandas as pd
+    if isinstance(glove, pd.DataFrame):
+        from ._bridge import df_to_r
+        return call("glove_profile", df_to_r(glove), name=glove.attrs.get("name", "custom"))
+    return glove
+
+
+def read_glove(path, glove, rate=50, **kwargs):
+    """Read any glove's delimited files (one per recording) with the channels of ``glove``
+    (a profile name or DataFrame); labels from ``pattern`` or ``manifest`` (R's ``read_glove()``)."""
+    return r_to_py(call("read_glove", path, glove=_glove_arg(glove), rate=float(rate), **kwargs))
+
+
+def calibrate(x, poses=None, angles=None, ranges=None):
+    """Raw counts to degrees per channel: from calibration ``poses`` (a dict of name -> frames x
+    channels arrays or Grasps; ``"flat"`` and ``"fist"`` are built in), ``ranges`` (a DataFrame
+    with channel, min, max[, angle_min, angle_max]) or the profile's nominal map. Returns a
+    :class:`Grasps` in degrees whose ``calibration`` attribute is a DataFrame (channel, gain,
+    offset, source)."""
+    ro = r()
+    args = {}
+    if poses is not None:
+        if not isinstance(poses, dict):
+            raise BadInputError("poses must be a dict of pose name -> recordings")
+        args["poses"] = ro.r["list"](**{str(k): (_as_grasps(v).to_r() if isinstance(v, Grasps)
+                                                 else np.asarray(v, dtype=float)) for k, v in poses.items()})
+    if angles is not None:
+        args["angles"] = ro.r["list"](**{str(k): np.asarray(v, dtype=float) for k, v in angles.items()})
+    if ranges is not None:
+        args["ranges"] = ranges
+    res = call("calibrate", _as_grasps(x), **args)
+    out = r_to_py(res)
+    out.calibration = r_to_py(ro.r["attr"](res, "calibration"))
+    return out
+
+
+def find_motion(x, **kwargs):
+    """Where the grasping motion starts and ends in each recording (R's ``find_motion()``): a
+    DataFrame with id, start, end, n_frames, rest, hold, found."""
+    return r_to_py(call("find_motion", _as_grasps(x), **kwargs))
+
+
+def trim_motion(x, **kwargs):
+    """Each recording cut to its motion, without the rest before and the hold after it."""
+    return r_to_py(call("trim_motion", _as_grasps(x), **kwargs))
+
+
+def cut_motion(x, **kwargs):
+    """A continuous stream cut into one recording per motion."""
+    return r_to_py(call("cut_motion", _as_grasps(x), **kwargs))
+
+
+def calibration_pose_angles(glove, pose="flat"):
+    """The built-in angles of the ``"flat"`` and ``"fist"`` calibration poses, one per channel."""
+    res = call("calibration_pose_angles", _glove_arg(glove), pose=pose)
+    return r_to_py(res)

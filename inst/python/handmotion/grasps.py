@@ -67,7 +67,7 @@ class Grasps:
     (2, [40, 42])
     """
 
-    def __init__(self, recordings, meta=None, dofs=None, rate=50.0, unit="deg"):
+    def __init__(self, recordings, meta=None, dofs=None, rate=50.0, unit="deg", glove=None):
         recs = _check_recordings(recordings)
         n = len(recs)
         if meta is None:
@@ -104,6 +104,13 @@ class Grasps:
         self.dofs = dofs
         self.rate = float(rate)
         self.unit = unit
+        # the glove profile: None (recognised from the DoF names in R), the name of a
+        # shipped profile, or a DataFrame of channels (see R's glove_profile())
+        if glove is not None and not isinstance(glove, (str, pd.DataFrame)):
+            raise BadInputError("glove must be a shipped profile's name or a DataFrame of channels")
+        self.glove = glove
+        self.glove_name = glove if isinstance(glove, str) else None
+        self.levels = None
 
     # ------------------------------------------------------------ container protocol
     def __len__(self):
@@ -138,6 +145,9 @@ class Grasps:
         out.recordings = [self.recordings[i] for i in idx]
         out.meta = self.meta.iloc[idx].reset_index(drop=True)
         out.dofs, out.rate, out.unit = list(self.dofs), self.rate, self.unit
+        out.glove = getattr(self, "glove", None)
+        out.glove_name = getattr(self, "glove_name", None)
+        out.levels = getattr(self, "levels", None)
         return out
 
     def __repr__(self):
@@ -204,9 +214,17 @@ class Grasps:
 
         values = np.concatenate([rec.ravel(order="F") for rec in self.recordings])
         meta = self.meta.drop(columns=["n_frames"])
+        glove = getattr(self, "glove", None)
+        extra = {}
+        if isinstance(glove, pd.DataFrame):
+            extra = dict(glove=df_to_r(glove), glove_name=getattr(self, "glove_name", None) or "custom")
+        elif isinstance(glove, str):
+            extra = dict(glove=glove)
+        if getattr(self, "levels", None):
+            extra["levels"] = list(self.levels)
         res = call(helpers()["grasps_in"], values=values,
                    n_frames=np.asarray(self.meta["n_frames"], dtype=np.int64),
-                   meta=df_to_r(meta), dofs=list(self.dofs), rate=self.rate, unit=self.unit)
+                   meta=df_to_r(meta), dofs=list(self.dofs), rate=self.rate, unit=self.unit, **extra)
         return res
 
     @classmethod
@@ -227,7 +245,16 @@ class Grasps:
         out.dofs = dofs
         out.rate = float(flat.rx2("rate")[0])
         out.unit = str(flat.rx2("unit")[0])
+        lv = flat.rx2("levels")
+        out.levels = None if lv is None or lv == ro_null() else [str(v) for v in lv]
+        out.glove = df_to_py(flat.rx2("glove"))
+        out.glove_name = str(flat.rx2("glove_name")[0])
         return out
+
+
+def ro_null():
+    from ._bridge import r
+    return r().NULL
 
 
 def _default_dofs(p):
