@@ -3,7 +3,7 @@
 #   fpca        every recording is fed to every grasp model: warped into the
 #               model's time by the model's mean warping function, projected on
 #               its FPCs, and scored by the L2 distance to that projection
-#               (eq. 4.4; computed by predict()). Closest model wins.
+#               (eq. 4.4; computed by project()). Closest model wins.
 #   last_frame  the same idea on the last frame only, with one ordinary PCA per
 #               type (R/last-frame-pca.R).
 # The distance matrix (recordings x models) is kept, so Table 5.3
@@ -17,9 +17,9 @@
 #' * `"fpca"` (Table 5.6): each recording is warped into each model's time by
 #'   the model's mean warping function, projected on the model's FPCs, and
 #'   scored by the L2 distance between the warped recording and its projection
-#'   (eq. 4.4, over all DoFs; see [predict.grasp_model()]), measured as the
+#'   (eq. 4.4, over all DoFs; see [project()]), measured as the
 #'   thesis measured it: on a grid of frame numbers `1..T_i` (fda.usc's default
-#'   for a matrix of curves), so model *i*'s distance is `predict()`'s, which
+#'   for a matrix of curves), so model *i*'s distance is `project()`'s, which
 #'   integrates over \[0, 1\], times `sqrt(T_i - 1)`. A longer model thus has
 #'   larger distances, which is why the thesis' shortest model (Palmar Pinch)
 #'   draws many recordings; the weighted FPCA distance does not have this
@@ -33,6 +33,12 @@
 #' * `"discriminant"` (beyond the thesis): `models` is a
 #'   `fit_grasp_classifier(method = "discriminant")` result; the "distance"
 #'   to a type is minus the log of its posterior probability.
+#'
+#' `classify()` is a thin wrapper over `predict(models, x, type =
+#' "distance")` ([predict.grasp_models()], the contract every classifier
+#' answers): it keeps the whole distance matrix with the recordings' true
+#' types, ready for [grasp_confusion()] and Table 5.3. For class labels or
+#' probabilities alone call `predict()`.
 #'
 #' The recording goes to the model with the smallest distance. The method
 #' follows from the class of `models`; nothing is fitted here (the thesis
@@ -86,8 +92,11 @@ classify <- function(models, x, method = c("fpca", "last_frame", "discriminant",
              "bad_input", argument = "models", call = call)
   }
   method <- resolve_method(models, method, missing(method), call = call)
-  res <- classifier_distances(models, x, method, call = call)
-  new_classification(res$distances, x$meta, method, res$target_length, res$failures)
+  # the distances predict() gives, kept whole for the confusion matrix and Table 5.3
+  d <- predict_classifier(models, x, "distance", list(), call)
+  dist <- as.matrix(as.data.frame(unclass(d)[names(d)], check.names = FALSE))
+  dimnames(dist) <- list(x$meta$id, sub("^\\.dist_", "", names(d)))
+  new_classification(dist, x$meta, method, attr(d, "target_length"), attr(d, "failures") %||% no_failures())
 }
 
 resolve_method <- function(models, method, defaulted, call = rlang::caller_env()) {
@@ -108,32 +117,37 @@ resolve_method <- function(models, method, defaulted, call = rlang::caller_env()
   method
 }
 
-# Fit the models a method needs on a training set.
+# Fit the models a method needs on a training set (evaluate_loso()).
 fit_classifier <- function(train, method, fit_args) {
   if (method != "fpca") return(do.call(fit_grasp_classifier, c(list(train, method = method), fit_args)))
   # The FPCA distance reads only each model's mean curves and FPCs, never
   # its score mixtures; one Gaussian (k = 1, closed form) instead of the EM
   # for two components halves the refit without changing one prediction.
+  # Held-out classification needs no probabilities, so no temperature.
   if (is.null(fit_args$k)) fit_args$k <- 1L
-  do.call(fit_grasp_models, c(list(train), fit_args))
+  do.call(fit_model_set, c(list(train), fit_args, calibrate = FALSE))
 }
 
-classifier_distances <- function(models, x, method, call = rlang::caller_env()) {
-  if (method == "last_frame") {
-    return(list(distances = last_frame_distances(models, x, call = call),
-                target_length = NULL, failures = no_failures()))
+# The distances of every recording of x to every class of a fitted
+# classifier (recordings x classes, smaller is closer), with the FPCA set's
+# target lengths and failed models: what predict() and classify() rank.
+classifier_distances <- function(models, x, call = rlang::caller_env(), seen = NULL) {
+  none <- list(target_length = NULL, failures = no_failures())
+  if (inherits(models, "grasp_models")) return(fpca_distances(models, x, call = call))
+  if (inherits(models, "last_frame_pca")) return(c(list(distances = last_frame_distances(models, x, call = call)), none))
+  if (inherits(models, "weighted_fpca")) {
+    return(c(list(distances = weighted_fpca_distances(models, x, call = call)), none))
   }
-  if (method == "weighted_fpca") {
-    return(list(distances = weighted_fpca_distances(models, x, call = call), target_length = NULL,
-                failures = no_failures()))
+  if (inherits(models, "grasp_classifier")) {
+    return(c(list(distances = neg_log_posterior(classifier_log_posterior(models, x, call = call))), none))
   }
-  if (method == "discriminant") {
-    # the "distance" to a type is minus its log posterior probability
-    p <- softmax_rows(classifier_log_posterior(models, x, call = call))
-    return(list(distances = -log(pmax(p, .Machine$double.xmin)), target_length = NULL,
-                failures = no_failures()))
+  if (inherits(models, "grasp_recognizer")) {
+    check_trained_dofs(x, models$dofs, "recogniser", call = call)
+    seen <- seen %||% x$meta$n_frames
+    return(c(list(distances = neg_log_posterior(recognizer_scores(models, x, seen))), none))
   }
-  fpca_distances(models, x, call = call)
+  hm_abort("{.arg object} must be a fitted grasp classifier, not {.obj_type_friendly {models}}.",
+           "bad_input", argument = "object", call = call)
 }
 
 no_failures <- function() data.frame(model = character(0), message = character(0))

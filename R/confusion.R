@@ -114,13 +114,6 @@ as_grasp_confusion <- function(x, ..., call = rlang::caller_env()) {
   UseMethod("as_grasp_confusion")
 }
 
-#' @noRd
-#' @export
-as_grasp_confusion.default <- function(x, ...) {
-  hm_abort("{.arg x} must be a {.fn classify} result, a data frame with {.field truth} and {.field predicted}, or a square table, not {describe_value(x)}.",
-           "bad_input", argument = "x", call = rlang::caller_env())
-}
-
 #' @export
 as_grasp_confusion.default <- function(x, ..., call = rlang::caller_env()) {
   hm_abort(c("{.arg truth} alone must be a classification, a data frame or a table, not {.obj_type_friendly {x}}.",

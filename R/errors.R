@@ -17,9 +17,9 @@
 #'   classes: `bad_recording`, `unknown_grasp`, `no_labels`, `bad_markers`,
 #'   `occluded`, `bad_mapping`, `dof_mismatch`, `multiple_grasps`,
 #'   `bad_params`, `bad_skeleton` (a skeleton that does not fit the data),
-#'   `too_few_subjects`, `bad_glove` (a glove profile that does not
-#'   validate or does not match the data's channels), `not_feix_labels`
-#'   (the thesis' tables asked of data labelled otherwise than by Feix type).
+#'   `too_few_subjects`, `bad_glove` (a glove profile that cannot be used;
+#'   with `bad_file` when read from a file) and `not_feix_labels` (a thesis
+#'   table asked of labels that are not Feix types).
 #' * `handmotion_error_bad_file`: a file that cannot be read in its format.
 #'   Specific classes: `empty_file`, `bad_field_count`, `truncated_line`,
 #'   `non_numeric`, `bad_value`, `unknown_header`, `unknown_file_name`,
@@ -29,10 +29,14 @@
 #'   file), `unwritable_file` (a path a writer cannot write), and
 #'   `bad_skeleton`
 #'   raised while reading an `.xmlskel` file.
-#' * `handmotion_error_fit_failed`: data that cannot be fitted.
+#' * `handmotion_error_fit_failed`: data that cannot be fitted, or a fitted
+#'   object that cannot be used.
 #'   Specific classes: `too_few_recordings`, `reference_too_small`,
 #'   `model_failed` (a grasp type whose model could not be fitted, asked for
-#'   by name).
+#'   by name), `alignment_failed` (dynamic time warping failed),
+#'   `engine_failed` (a reference engine such as fda.usc failed) and
+#'   `bad_model` (a fitted model whose parts were changed after fitting, or
+#'   that lacks what was asked of it, e.g. a temperature for probabilities).
 #' * `handmotion_error_missing_dependency`: a suggested package that a
 #'   function needs is not installed (no family).
 #'
@@ -51,12 +55,17 @@
 #' `zero_window` (a DTW window that leaves only the diagonal path). One
 #' warning carries every class that applies, and the rows in its field
 #' `degenerate_data` (`class`, `message`). Other warnings: `read_failures`
-#' (files a directory read skipped), `stuck_channels` (channels constant
-#' over every recording, said once where the data are built),
-#' `constant_channels` (the same, said once by [evaluate_generation()]),
-#' `mixed_labels` (some labels are Feix types, others not), `no_limits`
-#' (`generate(limits = TRUE)` for a model without limits), `note` and
-#' `deprecated`.
+#' (files a directory read skipped), `truncated_line` and `unknown_header`
+#' (a file read with a fallback), `few_recordings` (a last-frame type with
+#' fewer recordings than PCs), `model_failed` (types whose model failed,
+#' skipped), `projection_failed` (models that could not score the
+#' recordings), `fold_failed` (an evaluation fold that could not be
+#' fitted), `skeleton_default_unit` (a skeleton file without a unit),
+#' `constant_channels` (channels constant in every recording, left out of
+#' the correlation measures), `no_limits` (no joint limits to keep
+#' generated grasps within), `stuck_channels` (glove channels that never
+#' change), `mixed_labels` (labels of which only some are Feix types),
+#' `note` and `deprecated`.
 #'
 #' From Python the error families are `BadInputError`, `BadFileError` and
 #' `FitFailedError`, all subclasses of `HandmotionError`; warnings arrive as
@@ -71,9 +80,16 @@
 #' inherits(cnd, "handmotion_error_bad_input")
 NULL
 
-# Specific class -> family. A class not listed belongs to "bad_input" (the
-# common case: a bad argument) unless another class given with it is listed.
+# Specific class -> family: every class the package raises is listed (a
+# test scans R/ for them). A class given with "bad_file" or "fit_failed"
+# (abort_bad_file() adds "bad_file") takes that family over "bad_input"; a
+# class not listed would fall back to "bad_input".
 error_families <- c(
+  bad_input = "bad_input", bad_recording = "bad_input", unknown_grasp = "bad_input",
+  no_labels = "bad_input", bad_markers = "bad_input", occluded = "bad_input",
+  bad_mapping = "bad_input", dof_mismatch = "bad_input", multiple_grasps = "bad_input",
+  bad_params = "bad_input", bad_skeleton = "bad_input", too_few_subjects = "bad_input",
+  bad_glove = "bad_input", not_feix_labels = "bad_input",
   bad_file = "bad_file", empty_file = "bad_file", bad_field_count = "bad_file",
   truncated_line = "bad_file", non_numeric = "bad_file", bad_value = "bad_file",
   unknown_header = "bad_file", unknown_file_name = "bad_file",
@@ -83,6 +99,7 @@ error_families <- c(
   unreadable_file = "bad_file", not_text = "bad_file", unwritable_file = "bad_file",
   fit_failed = "fit_failed", too_few_recordings = "fit_failed",
   reference_too_small = "fit_failed", model_failed = "fit_failed",
+  alignment_failed = "fit_failed", engine_failed = "fit_failed", bad_model = "fit_failed",
   missing_dependency = NA_character_
 )
 
@@ -90,7 +107,8 @@ error_families <- c(
 # family, then the root.
 error_classes <- function(class) {
   listed <- class %in% names(error_families)
-  family <- if (any(listed)) unname(error_families[class[listed]]) else "bad_input"
+  family <- if (any(listed)) unique(unname(error_families[class[listed]])) else "bad_input"
+  if (length(family) > 1L) family <- setdiff(family, "bad_input")
   family <- family[!is.na(family)]
   c(paste0("handmotion_error_", unique(c(class, family))), "handmotion_error")
 }
@@ -112,17 +130,22 @@ hm_abort <- function(message, class = "bad_input", ..., call = rlang::caller_env
   cli::cli_abort(message, class = error_classes(class), ..., call = call, .envir = .envir)
 }
 
-# Specific warning class -> family, as error_families does for errors. A
-# class not listed has no family.
+# Specific warning class -> family, as error_families does for errors
+# (NA: no family). Every warning class the package raises is listed.
 warning_families <- c(
   one_frame = "degenerate", identical_recordings = "degenerate", constant_dofs = "degenerate",
   rank_deficient = "degenerate", small_mixture = "degenerate", linear_fallback = "degenerate",
-  non_finite = "degenerate", zero_window = "degenerate"
+  non_finite = "degenerate", zero_window = "degenerate",
+  read_failures = NA, truncated_line = NA, unknown_header = NA, few_recordings = NA,
+  model_failed = NA, projection_failed = NA, fold_failed = NA, skeleton_default_unit = NA,
+  constant_channels = NA, no_limits = NA, stuck_channels = NA, mixed_labels = NA,
+  note = NA, deprecated = NA
 )
 
 # The class vector of a handmotion warning: specific classes, family, root.
 warning_classes <- function(class) {
   family <- unname(warning_families[class[class %in% names(warning_families)]])
+  family <- family[!is.na(family)]
   c(paste0("handmotion_warning_", unique(c(class, family))), "handmotion_warning")
 }
 

@@ -159,7 +159,7 @@ evaluate_generation_impl <- function(sets, held_out, training, types, n, reps, o
     base$log_jerk <- ref$log_jerk
     for (nm in names(sets)) {
       m <- sets[[nm]][[ty]]
-      gen <- generate(m, n = n_ty * reps)
+      gen <- generate(m, n = n_ty * reps, seed = NULL)   # the evaluation's seeded stream
       gen <- lapply(seq_len(reps), function(r) gen[(r - 1L) * n_ty + seq_len(n_ty)])
       got <- generation_measures(gen, ref, lda, ty, m$limits)
       rows[[length(rows) + 1L]] <- generation_rows(nm, ty, got, base)

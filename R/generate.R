@@ -83,8 +83,10 @@ generics::generate
 #' @param n Number of grasps to generate (per grasp type for a model set).
 #' @param grasp For a model set: the grasp types to generate (names or ids
 #'   1-33); all fitted types by default.
-#' @param seed Optional seed; the global RNG is restored afterwards. With
-#'   `NULL` the current RNG stream is used.
+#' @param seed Seed of the draws (default 1: like every handmotion verb
+#'   that draws random numbers, a call repeats itself); the global RNG is
+#'   restored afterwards. `NULL` uses the current RNG stream (a new draw on
+#'   every call).
 #' @param warp If `TRUE` (default) apply the sampled time warp; if `FALSE`
 #'   return the curves on the model's template grid (`L` frames).
 #' @param limits Keep generated values inside their limits? `TRUE`: every
@@ -114,7 +116,7 @@ generics::generate
 #' m <- fit_grasp_model(g, seed = 1)
 #' new <- generate(m, n = 5, seed = 2)
 #' new
-generate.grasp_model <- function(x, n = 1, seed = NULL, warp = TRUE, limits = NULL, chunk = 10000,
+generate.grasp_model <- function(x, n = 1, seed = 1, warp = TRUE, limits = NULL, chunk = 10000,
                                  callback = NULL, phases = TRUE, ...) {
   # (a misspelt argument would vanish into `...` without a word)
   check_dots_for(list(...), generate.grasp_model, "generate", call = rlang::caller_env())
@@ -124,7 +126,7 @@ generate.grasp_model <- function(x, n = 1, seed = NULL, warp = TRUE, limits = NU
 
 #' @rdname generate.grasp_model
 #' @export
-generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = NULL, warp = TRUE,
+generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = 1, warp = TRUE,
                                   limits = NULL, chunk = 10000, callback = NULL, phases = TRUE, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), generate.grasp_models, "generate", call = call)
@@ -186,7 +188,8 @@ generate_models <- function(models, n, seed, warp, limits, chunk, callback, call
 #'
 #' @param object A `grasp_model` or `grasp_models`.
 #' @param nsim Number of grasps (per type for a model set).
-#' @param seed Optional seed (the global RNG is restored afterwards).
+#' @param seed Seed of the draws (default 1, as in [generate()]; `NULL`
+#'   uses the current RNG stream); the global RNG is restored afterwards.
 #' @param ... Passed to [generate.grasp_model()] (e.g. `warp`, or `grasp` for
 #'   a model set).
 #' @return A [grasps()] object.
@@ -196,13 +199,13 @@ generate_models <- function(models, n, seed, warp, limits, chunk, callback, call
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
 #' m <- fit_grasp_model(g, seed = 1)
 #' simulate(m, nsim = 3, seed = 1)
-simulate.grasp_model <- function(object, nsim = 1, seed = NULL, ...) {
+simulate.grasp_model <- function(object, nsim = 1, seed = 1, ...) {
   generate.grasp_model(object, n = nsim, seed = seed, ...)
 }
 
 #' @rdname simulate.grasp_model
 #' @export
-simulate.grasp_models <- function(object, nsim = 1, seed = NULL, ...) {
+simulate.grasp_models <- function(object, nsim = 1, seed = 1, ...) {
   generate.grasp_models(object, n = nsim, seed = seed, ...)
 }
 

@@ -156,7 +156,7 @@ grasp_levels <- function(x) {
 
 new_grasp_classifier <- function(fit, at, dofs, rate, prior, levels) {
   structure(list(classes = fit$classes, levels = levels, at = at, dofs = dofs, rate = rate, prior = prior,
-                 fit = fit, n = stats::setNames(fit$n, fit$classes)),
+                 fit = fit, n = stats::setNames(fit$n, fit$classes), temperature = 1),
             class = "grasp_classifier")
 }
 
@@ -172,11 +172,11 @@ check_fractions <- function(at, arg, call = rlang::caller_env()) {
 # New recordings for a fitted classifier or recogniser: a grasps object with
 # exactly the DoFs it was trained on, in that order.
 check_trained_dofs <- function(x, dofs, what, call = rlang::caller_env()) {
-  check_grasps(x, arg = "newdata", call = call)
+  check_grasps(x, arg = "new_data", call = call)
   if (!identical(x$dofs, dofs)) {
-    hm_abort(c("{.arg newdata} has other DoFs than the {what} was trained on.",
+    hm_abort(c("{.arg new_data} has other DoFs than the {what} was trained on.",
                i = "Trained on: {.val {dofs}}.", x = "Given: {.val {x$dofs}}."),
-             "bad_input", argument = "newdata", call = call)
+             "bad_input", argument = "new_data", call = call)
   }
   invisible(x)
 }
@@ -204,29 +204,6 @@ check_training_labels <- function(x, call = rlang::caller_env()) {
   y
 }
 
-#' Predict grasp types with a discriminant classifier
-#'
-#' @param object A [fit_grasp_classifier()] result (`method = "discriminant"`).
-#' @param newdata A [grasps()] object with the classifier's DoFs.
-#' @param type `"class"` (a factor of predicted types) or `"prob"` (a
-#'   matrix of class probabilities, recordings x types, rows summing to 1).
-#' @param ... Not used.
-#' @return A factor (with the levels of the training labels, so it compares
-#'   with `newdata$meta$grasp`) or a probability matrix
-#'   with the recordings' ids as row names.
-#' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 4, grasps = 1:3, objects = 2, trials = 2, seed = 1)
-#' cl <- fit_grasp_classifier(g)
-#' table(predict(cl, g), g$meta$grasp)
-predict.grasp_classifier <- function(object, newdata, type = c("class", "prob"), ...) {
-  call <- rlang::caller_env()
-  type <- check_choice(type, arg = "type", call = call)
-  s <- classifier_log_posterior(object, newdata, call = call)
-  if (type == "prob") return(softmax_rows(s))
-  factor(top_class(object$classes, s), levels = object$levels)
-}
-
 # Log posteriors (rows: recordings of x, columns: types), after checking
 # that x is what the classifier was trained on.
 classifier_log_posterior <- function(object, x, call = rlang::caller_env()) {
@@ -244,4 +221,29 @@ print.grasp_classifier <- function(x, ...) {
               length(x$dofs), length(x$at), paste(signif(x$at, 3), collapse = ", ")))
   cat(sprintf("  correlation shrinkage %.3f; %s priors\n", x$fit$shrinkage, x$prior))
   invisible(x)
+}
+
+#' Summaries of the fitted grasp classifiers
+#'
+#' One row per class the classifier was trained on. Every classifier also has
+#' a `print()` method and answers [predict()][predict.grasp_models()].
+#'
+#' @param object A [fit_grasp_classifier()] or [fit_grasp_recognizer()]
+#'   result.
+#' @param ... Unused.
+#' @return A data frame with columns `class` and `n` (training recordings),
+#'   and by classifier: `"discriminant"` and the recogniser `log_prior`;
+#'   `"last_frame"` `k_used` (PCs used) and `var_explained` (the fraction of
+#'   the type's last-frame variance they explain); `"weighted_fpca"`
+#'   `top_dofs` (the two DoFs it weighs most for the type) and `weight_range`
+#'   (largest over smallest DoF weight).
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 4, grasps = 1:3, objects = 2, trials = 2, seed = 1)
+#' summary(fit_grasp_classifier(g))
+#' summary(fit_grasp_classifier(g, method = "last_frame", k = 2))
+#' summary(fit_grasp_recognizer(g))
+summary.grasp_classifier <- function(object, ...) {
+  data.frame(class = object$classes, n = as.integer(object$n[object$classes]),
+             log_prior = object$fit$log_prior, stringsAsFactors = FALSE)
 }

@@ -108,8 +108,9 @@
 #' @param max_stall Largest share of template frames a warp may spend on one
 #'   original frame before the recording counts as degenerately warped (step
 #'   2 of the description).
-#' @param seed Optional seed for the mixture fits (the global RNG is restored
-#'   afterwards). With `NULL` the current RNG stream is used.
+#' @param seed Seed of the mixture fits (default 1: like every handmotion
+#'   verb that draws random numbers, a call repeats itself); the global RNG
+#'   is restored afterwards. `NULL` uses the current RNG stream.
 #' @param keep_data Keep the alignment (warped curves, warping functions,
 #'   frame counts and degenerate warps) in the model, needed by
 #'   [autoplot.grasp_model()] for the data layers and the alignment picture.
@@ -188,7 +189,7 @@
 #' mc
 fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k = NULL,
                             engine = c("fast", "reference"), overlong = c(iqr_mult = 3, median_mult = 1.5),
-                            warping = NULL, max_stall = 0.25, seed = NULL,
+                            warping = NULL, max_stall = 0.25, seed = 1,
                             keep_data = TRUE, dependence = c("independent", "copula"),
                             mixture_guard = NULL, fpc_scores = NULL, motion = c("auto", "trim", "as_recorded"),
                             residuals = NULL) {

@@ -14,7 +14,7 @@
 #' usable recordings) stays in the set as a failed model (class
 #' `grasp_model_failed`, with the error's message and class), like a null
 #' model in a fable, instead of stopping the others: `print()` and `summary()`
-#' list it, [generate()] and [classify()] skip it (saying so), and asking for
+#' list it, [generate()], `predict()` and [classify()] skip it (saying so), and asking for
 #' it by name (`generate(ms, grasp = )`) is an error of class
 #' `handmotion_error_model_failed`. A bad argument or recording
 #' (`handmotion_error_bad_input`) stops the call.
@@ -51,9 +51,12 @@
 #' @return An object of class `grasp_models`: a list named by grasp type,
 #'   one `grasp_model` per fitted type and one `grasp_model_failed` (a list
 #'   with `grasp`, `grasp_id`, `message` and `class`) per type whose fit
-#'   failed; attribute `seed`.
+#'   failed; attributes `seed`, `levels` (of the training labels) and
+#'   `temperature` (of the class probabilities, fitted on the training
+#'   recordings: see [predict.grasp_models()]).
 #' @seealso [summary.grasp_models()] (Tables 5.1 and 5.2), [generate()],
-#'   [predict.grasp_model()], [classify()].
+#'   [predict.grasp_models()] (classes and probabilities), [project()],
+#'   [classify()].
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 1:2, objects = 2, trials = 2, seed = 1)
@@ -61,7 +64,14 @@
 #' ms
 #' summary(ms)
 fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
-  call <- rlang::caller_env()
+  fit_model_set(x, grasps, ..., seed = seed, cache = cache, call = rlang::caller_env())
+}
+
+# fit_grasp_models(); evaluate_loso() and the weighted FPCA classifier skip
+# the temperature (calibrate = FALSE): they never ask the set for
+# probabilities, and it costs one in-sample classification.
+fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibrate = TRUE,
+                          call = rlang::caller_env()) {
   check_grasps(x, call = call)
   present <- levels(droplevels(x$meta$grasp))
   types <- check_grasp_selection(grasps, "grasps", levels = levels(x$meta$grasp), call = call) %||% present
@@ -113,7 +123,8 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
   bad_input <- which(vapply(fits, inherits, logical(1), what = "handmotion_error_bad_input"))
   if (length(bad_input)) stop(fits[[bad_input[1]]])
   fits[failed] <- mapply(new_grasp_model_failed, types[failed], fits[failed], SIMPLIFY = FALSE)
-  out <- new_grasp_models(fits, seed = seed)
+  out <- new_grasp_models(fits, seed = seed, levels = grasp_levels(x))
+  if (calibrate) attr(out, "temperature") <- models_temperature(out, x, call)
   dg <- models_degeneracies(out)
   n_dg <- length(unique(sub(": .*", "", dg$message)))
   warn_degenerate(dg, sprintf("%d of the %d grasp type models rest%s on degenerate data:", n_dg,
@@ -138,7 +149,8 @@ models_degeneracies <- function(models) {
 fit_one_type <- function(part, save_to, args, progress) {
   # (degenerate data is recorded in each model and said once for the set by
   # fit_grasp_models(), not once per type)
-  res <- tryCatch(withCallingHandlers(do.call(fit_grasp_model, c(list(part), args)),
+  # (seed = NULL: the type's own stream, set by future.seed, not fit_grasp_model()'s default)
+  res <- tryCatch(withCallingHandlers(do.call(fit_grasp_model, c(list(part), args, seed = list(NULL))),
                                       handmotion_warning_degenerate = function(w) invokeRestart("muffleWarning")),
                   handmotion_error = function(e) e)
   # saved at once (not after the whole set), so an interrupted fit keeps it;
@@ -172,10 +184,28 @@ cache_paths <- function(cache, parts, args, streams, call) {
   file.path(cache, paste0(gsub("[^A-Za-z0-9]+", "-", names(parts)), "-", keys, ".rds"))
 }
 
+# The temperature of the set's class probabilities (see ?predict.grasp_models):
+# fitted by maximum likelihood on the in-sample distances of the training
+# recordings of the fitted types. NULL (no probabilities) when the training
+# recordings cannot be projected.
+models_temperature <- function(models, x, call) {
+  types <- names(fitted_models(models))
+  if (length(types) < 2L) return(1)
+  own <- x[!is.na(x$meta$grasp) & as.character(x$meta$grasp) %in% types]
+  d <- tryCatch(withCallingHandlers(fpca_distances(models, own, call = call)$distances,
+                                    handmotion_warning_projection_failed = function(w) invokeRestart("muffleWarning")),
+                handmotion_error = function(e) NULL)
+  if (is.null(d)) return(NULL)
+  fit_temperature(d, own$meta$grasp)
+}
+
 # The one constructor of class "grasp_models": a list named by grasp type of
-# fitted models and failed ones.
-new_grasp_models <- function(models, seed = NULL) {
-  validate_grasp_models(structure(models, class = "grasp_models", seed = seed))
+# fitted models and failed ones; attributes `seed`, `levels` (of the training
+# labels: the levels predictions carry) and `temperature` (of the class
+# probabilities).
+new_grasp_models <- function(models, seed = NULL, levels = NULL, temperature = NULL) {
+  validate_grasp_models(structure(models, class = "grasp_models", seed = seed, levels = levels,
+                                  temperature = temperature))
 }
 
 # Every element a model or a failure, named by its own type, once; the fitted
@@ -210,7 +240,7 @@ print.grasp_model_failed <- function(x, ...) {
 # data frame: grasp, message, class).
 fitted_models <- function(x) {
   m <- unclass(x)
-  attr(m, "seed") <- NULL
+  attributes(m) <- list(names = names(m))
   m[vapply(m, inherits, logical(1), "grasp_model")]
 }
 
@@ -234,7 +264,8 @@ failed_types <- function(x) {
   if (length(absent)) {
     hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input", argument = "i")
   }
-  new_grasp_models(unclass(x)[keep], seed = attr(x, "seed"))
+  new_grasp_models(unclass(x)[keep], seed = attr(x, "seed"), levels = attr(x, "levels"),
+                   temperature = attr(x, "temperature"))
 }
 
 # Fitted models chosen by grasp name or id, for generate(): every fitted one
@@ -293,6 +324,9 @@ print.grasp_models <- function(x, ...) {
     types <- unique(sub(": .*", "", dg$message))
     cat(sprintf("  degenerate data in %d type%s: %s (see each model's print())\n", length(types),
                 if (length(types) == 1L) "" else "s", name_list(types, 5L)))
+  }
+  if (!is.null(attr(x, "temperature")) && nrow(s) > 1L) {
+    cat(sprintf("  class probabilities: softmax(-distance / %.3g) (see ?predict.grasp_models)\n", attr(x, "temperature")))
   }
   if (nrow(f)) cat(sprintf("  failed: %s\n", paste0(f$grasp, " (", f$message, ")", collapse = "; ")))
   invisible(x)

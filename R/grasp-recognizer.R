@@ -18,7 +18,7 @@
 #' Nothing about a recording's final length is used, so the recogniser can
 #' classify a live stream: [start_recognition()] makes a stream to
 #' `update()` frame by frame, and [predict.grasp_recognizer()] classifies
-#' whole sets from their first frames. After `horizon` frames (by default
+#' whole sets, from their first frames or whole. After `horizon` frames (by default
 #' 95% of the training grasps have ended by then) the prediction stays that
 #' of the first `horizon` frames: what follows is mostly a hand at rest.
 #'
@@ -39,7 +39,8 @@
 #' rec
 #' test <- g[g$meta$subject == "S05"]
 #' # from the first 300 ms of every held-out recording
-#' mean(predict(rec, test, ms = 300) == test$meta$grasp)
+#' mean(predict(rec, test, ms = 300)$.pred_class == test$meta$grasp)
+#' summary(rec)
 fit_grasp_recognizer <- function(x, at = c(0, 0.25, 0.5, 0.75, 1), horizon = NULL) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
@@ -69,7 +70,7 @@ recognizer_fit <- function(x, y, at, H, horizons = seq_len(H)) {
   fits[horizons] <- lapply(horizons, function(h) fit_shrunk_lda(prefix_features(prefix, h, at), y))
   first <- fits[[horizons[1]]]
   structure(list(classes = first$classes, levels = grasp_levels(x), at = at, dofs = x$dofs, rate = x$rate,
-                 horizon = H, fits = fits, n = stats::setNames(first$n, first$classes)),
+                 horizon = H, fits = fits, n = stats::setNames(first$n, first$classes), temperature = 1),
             class = "grasp_recognizer")
 }
 
@@ -112,42 +113,16 @@ stream_features <- function(buf, h, at, travel) {
   c(buf[ix$lo, , drop = FALSE] * (1 - ix$w) + buf[ix$hi, , drop = FALSE] * ix$w, log1p(travel))
 }
 
-#' Classify recordings from their first frames
-#'
-#' @param object A [fit_grasp_recognizer()] result.
-#' @param newdata A [grasps()] object with the recogniser's DoFs.
-#' @param frames,ms,fraction How much of each recording is seen: a number of
-#'   frames, a time since the recording began in milliseconds (at the data's
-#'   rate), or a fraction of each recording's own length (for evaluation:
-#'   a live stream does not know its length). Give exactly one.
-#' @param type `"class"` or `"prob"` (recordings x types).
-#' @param ... Not used.
-#' @return A factor of predicted types or a probability matrix.
-#' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 4, grasps = 1:3, objects = 2, trials = 2, seed = 1)
-#' rec <- fit_grasp_recognizer(g)
-#' table(predict(rec, g, fraction = 0.5), g$meta$grasp)
-predict.grasp_recognizer <- function(object, newdata, frames = NULL, ms = NULL, fraction = NULL,
-                                     type = c("class", "prob"), ...) {
-  call <- rlang::caller_env()
-  type <- check_choice(type, arg = "type", call = call)
-  check_trained_dofs(newdata, object$dofs, "recogniser", call = call)
-  newdata <- from_onset(newdata, object$onset)   # time counts from the motion's onset
-  seen <- seen_frames(newdata, frames, ms, fraction, call)
-  s <- recognizer_scores(object, newdata, seen)
-  if (type == "prob") return(softmax_rows(s))
-  factor(top_class(object$classes, s), levels = object$levels)
-}
-
-# Frames seen of each recording of x (at least 1).
+# Frames seen of each recording of x (at least 1): the whole recording
+# unless one of frames, ms and fraction says otherwise.
 seen_frames <- function(x, frames, ms, fraction, call) {
   given <- !c(is.null(frames), is.null(ms), is.null(fraction))
-  if (sum(given) != 1L) {
-    hm_abort("Give exactly one of {.arg frames}, {.arg ms} and {.arg fraction}.", "bad_input",
-             argument = "frames", call = call)
+  if (sum(given) > 1L) {
+    hm_abort("Give at most one of {.arg frames}, {.arg ms} and {.arg fraction} (none: the whole recording).",
+             "bad_input", argument = "frames", call = call)
   }
   n <- length(x$recordings)
+  if (!any(given)) return(as.integer(x$meta$n_frames))
   if (given[1]) return(rep(check_whole(frames, "frames", max = 1e6, call = call), n))
   if (given[2]) {
     ms <- check_number(ms, "ms", min = 0, min_open = TRUE, call = call)
@@ -178,4 +153,12 @@ print.grasp_recognizer <- function(x, ...) {
   cat(sprintf("  features: postures at %s of the frames seen + travel per DoF; shrinkage LDA per horizon\n",
               paste(signif(x$at, 3), collapse = ", ")))
   invisible(x)
+}
+
+#' @rdname summary.grasp_classifier
+#' @export
+summary.grasp_recognizer <- function(object, ...) {
+  last <- object$fits[[object$horizon]]
+  data.frame(class = object$classes, n = as.integer(object$n[object$classes]),
+             log_prior = last$log_prior, stringsAsFactors = FALSE)
 }

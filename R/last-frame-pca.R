@@ -26,9 +26,36 @@ fit_last_frame_pca <- function(x, k = 5, grasps = NULL, call = rlang::caller_env
               i = "Using n - 1 components instead (see {.field k_used})."),
             "few_recordings")
   }
-  structure(list(models = models, k = k, k_used = k_used, dofs = x$dofs,
-                 n_unlabelled = sum(is.na(x$meta$grasp))),
-            class = "last_frame_pca")
+  fit <- structure(list(models = models, k = k, k_used = k_used, dofs = x$dofs,
+                        n_unlabelled = sum(is.na(x$meta$grasp)), levels = grasp_levels(x)),
+                   class = "last_frame_pca")
+  # the temperature of its probabilities, on held-out distances
+  fit$temperature <- fit_temperature(last_frame_heldout_distances(fit, x, last), x$meta$grasp)
+  fit
+}
+
+# The training recordings' distances to every type from PCAs fitted without
+# them: held out by subject when the recordings name two or more subjects
+# (as a new user's recordings would be), else one recording at a time. A
+# type left with no recordings gives NA.
+last_frame_heldout_distances <- function(fit, x, last) {
+  subj <- x$meta$subject
+  group <- if (!is.null(subj) && !anyNA(subj) && length(unique(subj)) > 1L) as.character(subj) else seq_along(x$recordings)
+  lab <- as.character(x$meta$grasp)
+  types <- names(fit$models)
+  d <- matrix(NA_real_, nrow(last), length(types), dimnames = list(rownames(last), types))
+  for (g in unique(group)) {
+    out <- group == g
+    for (type in types) {
+      rows <- which(!out & lab %in% type)
+      if (!length(rows)) next
+      m <- pca_of_frames(last[rows, , drop = FALSE])
+      centred <- sweep(last[out, , drop = FALSE], 2L, m$mean)
+      v <- m$rotation[, seq_len(min(fit$k_used[[type]], ncol(m$rotation))), drop = FALSE]
+      d[out, type] <- sqrt(rowSums((centred - (centred %*% v) %*% t(v))^2))
+    }
+  }
+  d
 }
 
 # Grasp types to model: the requested ones (validated) or all labelled types
@@ -101,36 +128,12 @@ cumulative_variance <- function(fit) {
   out
 }
 
-#' Classify recordings with last-frame PCA models
-#'
-#' @param object A [fit_grasp_classifier()] result with `method = "last_frame"`.
-#' @param newdata A [grasps()] object with the same DoFs.
-#' @param type `"class"` for the predicted grasp type (factor over the fitted
-#'   types), `"distance"` for the n x types matrix of Euclidean distances
-#'   between each last frame and its projection on each type's first `k` PCs.
-#' @param ... Unused.
-#' @return A factor or a numeric matrix (rows = recording ids, columns = types).
-#' @export
-#' @examples
-#' set.seed(1)
-#' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
-#' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' fit <- fit_grasp_classifier(g, method = "last_frame", k = 2)
-#' table(predict(fit, g), g$meta$grasp, dnn = c("predicted", "truth"))
-predict.last_frame_pca <- function(object, newdata, type = c("class", "distance"), ...) {
-  call <- rlang::caller_env()
-  type <- check_choice(type, arg = "type", call = rlang::current_env())
-  d <- last_frame_distances(object, newdata, call = call)
-  if (type == "distance") return(d)
-  nearest_type(d)
-}
-
 last_frame_distances <- function(fit, x, call = rlang::caller_env()) {
-  check_grasps(x, arg = "newdata", call = call)
+  check_grasps(x, arg = "new_data", call = call)
   if (!identical(x$dofs, fit$dofs)) {
-    hm_abort(c("{.arg newdata} has DoFs {.val {x$dofs}}, the model was fitted on {.val {fit$dofs}}.",
+    hm_abort(c("{.arg new_data} has DoFs {.val {x$dofs}}, the model was fitted on {.val {fit$dofs}}.",
                i = "Both must have the same DoFs in the same order."),
-             "dof_mismatch", argument = "newdata", call = call)
+             "dof_mismatch", argument = "new_data", call = call)
   }
   last <- last_frame_matrix(x)
   d <- vapply(names(fit$models), function(type) {
@@ -141,12 +144,6 @@ last_frame_distances <- function(fit, x, call = rlang::caller_env()) {
     sqrt(rowSums(resid^2))
   }, numeric(nrow(last)))
   matrix(d, nrow(last), length(fit$models), dimnames = list(x$meta$id, names(fit$models)))
-}
-
-# Column name of the row minimum; NA when a row has no finite distance.
-nearest_type <- function(d) {
-  best <- apply(d, 1L, function(r) if (all(is.na(r))) NA_integer_ else which.min(r))
-  factor(colnames(d)[best], levels = colnames(d))
 }
 
 #' @export
@@ -162,4 +159,14 @@ print.last_frame_pca <- function(x, ...) {
     cat(sprintf("  fewer than %d PCs (too few recordings): %s\n", x$k, paste(short, collapse = ", ")))
   if (x$n_unlabelled > 0) cat(sprintf("  ignored %d unlabelled recording(s)\n", x$n_unlabelled))
   invisible(x)
+}
+
+#' @rdname summary.grasp_classifier
+#' @export
+summary.last_frame_pca <- function(object, ...) {
+  n <- vapply(object$models, function(m) m$n, integer(1))
+  data.frame(class = names(object$models), n = unname(n), k_used = unname(object$k_used[names(object$models)]),
+             var_explained = unname(vapply(names(object$models), function(ty) {
+               object$models[[ty]]$cumvar[max(object$k_used[[ty]], 1L)]
+             }, numeric(1))), stringsAsFactors = FALSE)
 }

@@ -166,7 +166,7 @@ plot_model_projection <- function(object, dofs, recording, newdata) {
     id <- ids[i]
   } else {
     check_grasps(newdata, arg = "newdata")
-    pr <- stats::predict(object, newdata[recording])
+    pr <- project(object, newdata[recording])
     warped <- pr$warped[[1]]
     S <- matrix(pr$scores[1, , ], length(object$dofs))
     id <- pr$ids[1]

@@ -7,8 +7,9 @@
 
 #' Project recordings onto a grasp model
 #'
-#' `predict()` on a fitted model projects recordings onto it. Each recording
-#' of `newdata` (any length) is warped to the model's template time by the
+#' `project()` projects recordings onto a fitted model (or every model of a
+#' set). Each recording
+#' of `new_data` (any length) is warped to the model's template time by the
 #' model's mean warping function `w_bar`, normalised to \[0, 1\] and
 #' mapped onto the recording's frames `1..n`, and evaluated there by linear
 #' interpolation. Each DoF is then projected onto the model's FPCs; the
@@ -16,7 +17,8 @@
 #' projection, and `distance` is the square root of the sum over DoFs of the
 #' squared residual norms (eq. 4.4 over the whole hand) over a \[0, 1\] time
 #' axis; the FPCA classifier ranks it times `sqrt(target_length - 1)`, the
-#' thesis' frame axis (see [classify()]).
+#' thesis' frame axis (see [classify()]; [predict.grasp_models()] gives
+#' the classes it implies).
 #'
 #' The projection is of the recording minus the model's mean function, and
 #' the fitted curve is the mean plus the FPCs times the scores. Eq. 4.4 as
@@ -31,7 +33,7 @@
 #'
 #' @param object A `grasp_model` ([fit_grasp_model()]) or a `grasp_models`
 #'   set ([fit_grasp_models()]).
-#' @param newdata A [grasps()] object with the model's DoFs.
+#' @param new_data A [grasps()] object with the model's DoFs.
 #' @param details Keep the warped and fitted curves (`TRUE` by default for one
 #'   model, `FALSE` for a model set, where they would take
 #'   recordings x models x frames x DoFs of memory).
@@ -42,29 +44,51 @@
 #'   model's type), `target_length` and, with `details`, `warped` and `fitted`
 #'   (lists of L x DoF matrices). For a model set, a named list of such
 #'   projections, one per fitted model (failed types have none).
-#' @seealso [classify()] ranks the distances of every model.
+#' @seealso [classify()] and [predict.grasp_models()] rank the distances of
+#'   every model.
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
 #' m <- fit_grasp_model(g, seed = 1)
-#' pr <- predict(m, g[1:3])
+#' pr <- project(m, g[1:3])
 #' pr$distance
-predict.grasp_model <- function(object, newdata, details = TRUE, ...) {
-  call <- rlang::caller_env()
-  check_dots_for(list(...), predict.grasp_model, "predict.grasp_model", call = call)
-  check_grasps(newdata, "newdata", call = call)
-  validate_projection_model(object, call)
-  check_projection_dofs(object, newdata, call)
-  project_stacked(object, stack_recordings(newdata, object$dofs), details = details)
+project <- function(object, new_data, ...) {
+  UseMethod("project")
 }
 
-#' @rdname predict.grasp_model
+#' @rdname project
 #' @export
-predict.grasp_models <- function(object, newdata, details = FALSE, ...) {
+project.grasp_model <- function(object, new_data, details = TRUE, ...) {
   call <- rlang::caller_env()
-  check_dots_for(list(...), predict.grasp_models, "predict.grasp_models", call = call)
-  check_grasps(newdata, "newdata", call = call)
-  project_models(object, newdata, "object", details = details, call = call)
+  check_dots_for(list(...), project.grasp_model, "project", call = call)
+  check_grasps(new_data, "new_data", call = call)
+  validate_projection_model(object, call)
+  check_projection_dofs(object, new_data, call)
+  project_stacked(object, stack_recordings(new_data, object$dofs), details = details)
+}
+
+#' @rdname project
+#' @export
+project.grasp_models <- function(object, new_data, details = FALSE, ...) {
+  call <- rlang::caller_env()
+  check_dots_for(list(...), project.grasp_models, "project", call = call)
+  check_grasps(new_data, "new_data", call = call)
+  project_models(object, new_data, "object", details = details, call = call)
+}
+
+# A single model is not a classifier: its predict() was the projection,
+# now project() (see ?handmotion-renamed).
+#' @export
+predict.grasp_model <- function(object, ...) {
+  hm_abort(c("A single {.cls grasp_model} is not a classifier, so it has no {.fn predict}.",
+             i = "Project recordings onto it with {.code project(model, new_data)}; classify with a {.fn fit_grasp_models} set."),
+           "bad_input", argument = "object", call = rlang::caller_env())
+}
+
+#' @export
+project.default <- function(object, new_data, ...) {
+  hm_abort("{.fn project} needs a {.cls grasp_model} or {.cls grasp_models} fit, not {.obj_type_friendly {object}}.",
+           "bad_input", argument = "object", call = rlang::caller_env())
 }
 
 # Every fitted model of a set projects `newdata`: each model is validated
@@ -121,9 +145,9 @@ validate_projection_model <- function(model, call) {
 check_projection_dofs <- function(model, x, call) {
   missing <- setdiff(model$dofs, x$dofs)
   if (length(missing)) {
-    hm_abort(c("{.arg newdata} lacks the model's DoF{?s} {.val {missing}}.",
+    hm_abort(c("{.arg new_data} lacks the model's DoF{?s} {.val {missing}}.",
                i = "The model of {.val {model$grasp}} was fitted on {.val {model$dofs}}."),
-             "bad_input", argument = "newdata", call = call)
+             "bad_input", argument = "new_data", call = call)
   }
 }
 

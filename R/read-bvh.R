@@ -4,22 +4,59 @@
 
 #' Read a BVH file
 #'
-#' A small parser for the BVH files [write_bvh()] writes (and most others):
-#' the joint tree with offsets and channels, and the motion table.
+#' A small parser for the BVH files [write_bvh()] writes (and most others).
+#' The motion comes back as a one-recording [grasps()] object whose DoFs are
+#' the joints' rotation channels (`<joint>:<channel>`, in degrees) at the
+#' file's frame rate, so every verb that takes recordings takes it; the
+#' hierarchy stays with it, and [write_bvh()] writes it back unchanged.
 #'
 #' @param file Path to a `.bvh` file.
-#' @return A list: `joints` (data frame `name`, `parent`, `end_site`; end
-#'   sites are named `<parent>_End`), `offsets` (matrix, one row per joint),
-#'   `channels` (list of channel names per joint), `frames` (number of
-#'   frames), `frame_time` (seconds) and `motion` (frames x channels matrix,
-#'   columns named `joint:channel`).
+#' @return A [grasps()] object with one recording (id: the file name without
+#'   extension, no grasp label) and the attribute `bvh`: a list with
+#'   `joints` (data frame `name`, `parent`, `end_site`; end sites are named
+#'   `<parent>_End`), `offsets` (matrix, one row per joint), `channels` (list
+#'   of channel names per joint), `frame_time` (seconds) and `position` (the
+#'   root's position channels, frames x 3, in the file's length unit).
 #' @export
 #' @examples
 #' rec <- matrix(0, 3, 16, dimnames = list(NULL, hust_dofs$name))
+#' rec[, "PIP2"] <- c(0, 45, 90)
 #' f <- write_bvh(rec, tempfile(fileext = ".bvh"))
-#' str(read_bvh(f)$joints)
+#' b <- read_bvh(f)
+#' b
+#' b$recordings[[1]][, "if-pip:Xrotation"]
+#' str(attr(b, "bvh")$joints)
 read_bvh <- function(file) {
   call <- rlang::caller_env()
+  parts <- parse_bvh(file, call)
+  rot <- grepl("rotation$", colnames(parts$motion))
+  rec <- parts$motion[, rot, drop = FALSE]
+  id <- sub("\\.[^.]*$", "", basename(file))
+  x <- grasps(list(rec), meta = data.frame(id = id, stringsAsFactors = FALSE), dofs = colnames(rec),
+              rate = 1 / parts$frame_time)
+  attr(x, "bvh") <- list(joints = parts$joints, offsets = parts$offsets, channels = parts$channels,
+                         frame_time = parts$frame_time, position = parts$motion[, !rot, drop = FALSE])
+  x
+}
+
+# The parts of a BVH read back (joints, offsets, channels, motion with every
+# channel in file order, `position`: which motion columns are lengths), for
+# write_bvh() and bvh_positions().
+bvh_parts <- function(x, recording = 1L) {
+  b <- attr(x, "bvh")
+  cols <- unlist(Map(function(n, ch) if (length(ch)) paste0(n, ":", ch) else character(0),
+                     b$joints$name, b$channels), use.names = FALSE)
+  rec <- x$recordings[[recording]]
+  motion <- matrix(0, nrow(rec), length(cols), dimnames = list(NULL, cols))
+  motion[, colnames(rec)] <- rec
+  motion[, colnames(b$position)] <- b$position
+  list(joints = b$joints, offsets = b$offsets, channels = b$channels, motion = motion,
+       position = colnames(b$position), frames = nrow(rec))
+}
+
+# The BVH file as its parts: joints, offsets, channels, frames, frame_time,
+# motion (frames x channels, columns `joint:channel`).
+parse_bvh <- function(file, call) {
   file <- check_string(file, "file", call = call)
   if (!file.exists(file) && !is_symlink(file)) {
     hm_abort("BVH file {.file {file}} does not exist.", "file_not_found", file = file,
@@ -69,7 +106,7 @@ read_bvh <- function(file) {
       i <- i + 4L
     } else if (t == "CHANNELS") {
       k <- suppressWarnings(as.integer(tok[i + 1L]))
-      if (is.na(k) || !length(stack)) bad("CHANNELS needs a count inside a joint.", tline[i])
+      if (is.na(k) || k < 0L || !length(stack)) bad("CHANNELS needs a count (0 or more) inside a joint.", tline[i])
       channels[[stack[length(stack)]]] <- tok[i + 1L + seq_len(k)]
       i <- i + 2L + k
     } else if (t == "}") {
@@ -89,6 +126,8 @@ read_bvh <- function(file) {
   ft <- suppressWarnings(as.numeric(sub("^\\s*Frame Time:\\s*", "", lines[ft_line])))
   if (is.na(nfr) || !grepl("Frames:", lines[frames_line])) bad("Expected {.val Frames: n}.", frames_line)
   if (is.na(ft) || !grepl("Frame Time:", lines[ft_line])) bad("Expected {.val Frame Time: t}.", ft_line)
+  if (!is.finite(ft) || ft <= 0) bad("The frame time must be a positive number of seconds, not {ft}.", ft_line)
+  if (nfr < 1L) bad("The MOTION section has no frames.", frames_line)
   body <- lines[-seq_len(ft_line)]
   body <- body[nzchar(trimws(body))]
   nch <- sum(lengths(channels))
@@ -107,9 +146,10 @@ read_bvh <- function(file) {
        offsets = off, channels = channels, frames = nfr, frame_time = ft, motion = motion)
 }
 
-# World positions of every BVH joint over the frames (frames x joints x 3),
-# for checking an export against forward_kinematics().
-bvh_positions <- function(bvh) {
+# World positions of every BVH joint over the frames (frames x joints x 3)
+# of a read_bvh() result, for checking an export against forward_kinematics().
+bvh_positions <- function(x) {
+  bvh <- bvh_parts(x)
   j <- bvh$joints
   n <- bvh$frames
   pidx <- match(j$parent, j$name)

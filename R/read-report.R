@@ -144,6 +144,20 @@ create_output_dir <- function(dir, call = rlang::caller_env()) {
   dir
 }
 
+# Every writer refuses to replace files unless told to: a classed error
+# (file_exists, with the files in `file`) naming them, before anything is
+# written.
+check_overwrite <- function(paths, overwrite, call = rlang::caller_env()) {
+  overwrite <- check_flag(overwrite, "overwrite", call = call)
+  exists <- file.exists(paths) & !dir.exists(paths)
+  if (!overwrite && any(exists)) {
+    hm_abort(c("{sum(exists)} file{?s} already exist{?s/}: {.file {utils::head(paths[exists], 3)}}.",
+               i = "Use {.code overwrite = TRUE} to replace existing files."),
+             "file_exists", file = paths[exists], argument = "overwrite", call = call)
+  }
+  invisible(paths)
+}
+
 # Write lines to `file`, or a classed error naming the file when it cannot be
 # written (a folder, a missing folder, no permission): R's own is "cannot
 # open the connection".

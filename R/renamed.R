@@ -18,7 +18,10 @@
 #' | `plot_marker_sets(sets)` | `autoplot(hand_skeleton(), markers = sets)` ([autoplot.hand_skeleton()]) |
 #' | `plot_handover_components(model, truth, recs)` | `autoplot(model, truth, recs)` ([autoplot.handover_model()]) |
 #' | `animate_hand(x, "f.html")` | [write_hand_animation()]`(x, "f.html")` |
-#' | `project(model, x)` | `predict(model, x)` ([predict.grasp_model()]) |
+#' | `predict(model, x)`, `predict(models, x)` (FPC projections) | [project()]`(model, x)`, `project(models, x)` |
+#' | `predict(classifier, newdata = )` (a factor or a probability matrix) | `predict(classifier, new_data = )$.pred_class`; `type = "prob"` gives a data frame with columns `.pred_<class>` ([predict.grasp_models()]) |
+#' | `predict(recognizer, x, frames = )` (one of `frames`, `ms`, `fraction` required) | `predict(recognizer, x)` sees the whole recording by default |
+#' | `read_bvh(f)$joints`, `$offsets`, `$channels`, `$frame_time`, `$motion` (a list) | `read_bvh(f)` is a [grasps()] object: `attr(x, "bvh")$joints` (and `$offsets`, `$channels`, `$frame_time`, `$position`), the rotation channels in `x$recordings[[1]]` |
 #' | `as_grasp_confusion(x)` | [grasp_confusion()]`(x)` |
 #' | `distance_table(cl)` | `thesis_table("5.3", classification = cl)` |
 #' | `default_joint_map(dofs)`, `graspdb14_joint_map()`, `hust_joint_map()` | [joint_map()]`(dofs = )`, `joint_map("graspdb14")`, `joint_map("hust")` |
@@ -41,7 +44,7 @@
 #' @name handmotion-renamed
 #' @aliases table_5_1 table_5_2 table_5_3 table_5_3_claims table_5_6 table_5_7 table_5_8
 #'   plot_pose_grid plot_frame_strip plot_frame_counts plot_marker_sets plot_handover_components
-#'   animate_hand project as_grasp_confusion distance_table default_joint_map graspdb14_joint_map
+#'   animate_hand as_grasp_confusion distance_table default_joint_map graspdb14_joint_map
 #'   hust_joint_map clamp_to_limits markers_from_angles hand_marker_set handpicked_markers
 #'   search_markers handover_pca_error align_recordings overlong_rule find_overlong simulator_params
 #'   calibration_report fit_frame_pca_model fit_last_frame_pca fit_weighted_fpca rank_markers

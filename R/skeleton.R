@@ -435,16 +435,20 @@ autoplot.hand_skeleton <- function(object, view = "back", labels = TRUE, markers
 #' @param skeleton A [hand_skeleton()].
 #' @param file Output path.
 #' @param comment Optional text for an XML comment at the top (e.g. sources).
+#' @param overwrite Replace existing file? By default an existing file is
+#'   an error of class `handmotion_error_file_exists` naming it, and nothing
+#'   is written.
 #' @return `file`, invisibly.
 #' @export
 #' @examples
 #' f <- tempfile(fileext = ".xmlskel")
 #' write_skeleton(hand_skeleton(), f)
 #' nrow(read_skeleton(f)$joints)
-write_skeleton <- function(skeleton, file, comment = NULL) {
+write_skeleton <- function(skeleton, file, comment = NULL, overwrite = FALSE) {
   call <- rlang::caller_env()
   check_skeleton(skeleton, call = call)
   file <- check_string(file, "file", call = call)
+  check_overwrite(file, overwrite, call = call)
   j <- skeleton$joints
   pos <- skeleton_rest_positions(skeleton)
   pidx <- skeleton_parent_index(skeleton)

@@ -20,7 +20,8 @@ fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ...,
   if (is.null(models)) {
     args <- list(...)
     if (is.null(args$k)) args$k <- 1L
-    models <- do.call(fit_grasp_models, c(list(x), args))
+    # (its own distance is a log-likelihood: the set needs no temperature)
+    models <- do.call(fit_model_set, c(list(x), args, calibrate = FALSE))
   }
   if (!inherits(models, "grasp_models")) {
     hm_abort("{.arg models} must be a {.cls grasp_models} fit, not {.obj_type_friendly {models}}.",
@@ -44,8 +45,11 @@ fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ...,
     pmax(s2, 1e-6 * max(mean(s2), 1e-12))
   }, numeric(length(models[[1]]$dofs))))
   dimnames(scale) <- list(types, models[[1]]$dofs)
+  # the distance is minus twice the log-likelihood: temperature 2 gives the
+  # models' posterior with equal priors
   structure(list(models = models, time = time, scale = scale,
-                 n = table(factor(as.character(x$meta$grasp), levels = types))),
+                 n = table(factor(as.character(x$meta$grasp), levels = types)),
+                 levels = grasp_levels(x), temperature = 2),
             class = "weighted_fpca")
 }
 
@@ -95,4 +99,14 @@ print.weighted_fpca <- function(x, ...) {
   cat(sprintf("  most weighted DoFs: %s\n",
               paste(utils::head(sprintf("%s (%s)", names(top), top), 4), collapse = "; ")))
   invisible(x)
+}
+
+#' @rdname summary.grasp_classifier
+#' @export
+summary.weighted_fpca <- function(object, ...) {
+  w <- 1 / object$scale
+  data.frame(class = rownames(w), n = as.integer(object$n[rownames(w)]),
+             top_dofs = apply(w, 1L, function(v) paste(names(sort(v, decreasing = TRUE))[1:min(2L, length(v))],
+                                                       collapse = "+")),
+             weight_range = apply(w, 1L, function(v) max(v) / min(v)), stringsAsFactors = FALSE, row.names = NULL)
 }

@@ -10,7 +10,8 @@
 #'
 #' @param x A recording (numeric frames x DoF matrix with DoF column names)
 #'   or a [grasps()] object (see `recording`); a generated grasp is a
-#'   `grasps` too.
+#'   `grasps` too. A `grasps` read by [read_bvh()] is written back with its
+#'   own hierarchy (`skeleton` and `...` are then not used).
 #' @param file Output path (`.bvh`).
 #' @param skeleton A [hand_skeleton()].
 #' @param recording For a `grasps` with several recordings: which one
@@ -18,6 +19,8 @@
 #' @param rate Frames per second of a matrix `x` (a `grasps` has its own).
 #' @param scale Factor applied to lengths (the skeleton is in mm; `0.001`
 #'   writes metres).
+#' @param overwrite Replace an existing `file`? By default an existing file
+#'   is an error of class `handmotion_error_file_exists` naming it.
 #' @param ... Passed to [forward_kinematics()]'s angle handling: `mapping`,
 #'   `mode`, `deactivate`, `unit`.
 #' @return `file`, invisibly.
@@ -29,12 +32,13 @@
 #' f <- tempfile(fileext = ".bvh")
 #' write_bvh(rec, f)
 #' b <- read_bvh(f)
-#' b$frames
-#' nrow(b$joints)
+#' b
+#' nrow(attr(b, "bvh")$joints)
 write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate = 50,
-                      scale = 1, ...) {
+                      scale = 1, overwrite = FALSE, ...) {
   call <- rlang::caller_env()
   file <- check_string(file, "file", call = call)
+  check_overwrite(file, overwrite, call = call)
   check_skeleton(skeleton, call = call)
   scale <- check_number(scale, "scale", min = 0, min_open = TRUE, call = call)
   # (checked even for a grasps object, which brings its own rate: a bad
@@ -46,6 +50,13 @@ write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate 
     if (length(recording) != 1L || is.na(recording) || recording < 1L || recording > length(x)) {
       hm_abort("{.arg recording} must pick one of the {length(x)} recording{?s} by index or id, not {describe_value(recording)}.",
                "bad_input", argument = "recording", call = call)
+    }
+    # a BVH read back: its own hierarchy and channels
+    if (!is.null(attr(x, "bvh"))) {
+      parts <- bvh_parts(x, recording)
+      parts$offsets <- parts$offsets * scale
+      parts$motion[, parts$position] <- parts$motion[, parts$position] * scale
+      return(write_bvh_parts(parts, x$rate, file, call))
     }
     rate <- x$rate
     v <- glove_recording(x, recording)   # degrees and joints through the set's glove
@@ -63,38 +74,63 @@ write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate 
   ang <- fk_angles(plan, rec, input$factor)
   n <- nrow(rec)
 
+  # the skeleton's tree in depth-first order: joints with children carry
+  # channels (the root also its position), leaves become End Sites
   j <- skeleton$joints
   pidx <- skeleton_parent_index(skeleton)
   kids <- lapply(seq_len(nrow(j)), function(i) which(pidx == i))
   off <- as.matrix(j[c("x", "y", "z")]) * scale
-  num <- function(v) paste(format(round(v, 5), trim = TRUE, scientific = FALSE), collapse = " ")
-  hier <- character(0)
-  order <- integer(0)
-  emit <- function(i, depth) {
-    pad <- strrep("  ", depth)
+  rows <- list()
+  walk <- function(i) {
+    root <- is.na(pidx[i])
     if (!length(kids[[i]])) {
-      hier <<- c(hier, paste0(pad, "End Site"), paste0(pad, "{"),
-                 paste0(pad, "  OFFSET ", num(off[i, ])), paste0(pad, "}"))
+      rows[[length(rows) + 1L]] <<- list(name = paste0(j$name[pidx[i]], "_End"), parent = j$name[pidx[i]],
+                                          end_site = TRUE, offset = off[i, ], channels = character(0), joint = i)
       return(invisible())
     }
-    root <- is.na(pidx[i])
-    hier <<- c(hier, paste0(pad, if (root) "ROOT " else "JOINT ", j$name[i]), paste0(pad, "{"),
-               paste0(pad, "  OFFSET ", num(if (root) c(0, 0, 0) else off[i, ])),
-               paste0(pad, "  CHANNELS ", if (root) "6 Xposition Yposition Zposition " else "3 ",
-                      "Zrotation Xrotation Yrotation"))
-    order <<- c(order, i)
-    for (k in kids[[i]]) emit(k, depth + 1L)
+    rows[[length(rows) + 1L]] <<- list(name = j$name[i], parent = if (root) NA_character_ else j$name[pidx[i]],
+                                        end_site = FALSE, offset = if (root) c(0, 0, 0) else off[i, ],
+                                        channels = c(if (root) c("Xposition", "Yposition", "Zposition"),
+                                                     "Zrotation", "Xrotation", "Yrotation"), joint = i)
+    for (k in kids[[i]]) walk(k)
+  }
+  walk(which(is.na(pidx)))
+  # the motion: the wrist stays put, every joint turns by its local rotation
+  motion <- lapply(rows[!vapply(rows, `[[`, TRUE, "end_site")], function(r) {
+    L <- fk_local(plan, ang, r$joint)
+    rot <- if (is.null(L)) matrix(0, n, 3) else euler_zxy(L)
+    if (is.na(r$parent)) cbind(matrix(0, n, 3), rot) else rot
+  })
+  parts <- list(joints = data.frame(name = vapply(rows, `[[`, "", "name"), parent = vapply(rows, `[[`, "", "parent"),
+                                    end_site = vapply(rows, `[[`, TRUE, "end_site"), stringsAsFactors = FALSE),
+                offsets = do.call(rbind, lapply(rows, `[[`, "offset")),
+                channels = lapply(rows, `[[`, "channels"), motion = do.call(cbind, motion))
+  write_bvh_parts(parts, rate, file, call)
+}
+
+# The one BVH writer: the hierarchy of `parts` (joints in depth-first order,
+# their offsets and channels) and its motion (frames x channels).
+write_bvh_parts <- function(parts, rate, file, call) {
+  j <- parts$joints
+  num <- function(v) paste(format(round(v, 5), trim = TRUE, scientific = FALSE), collapse = " ")
+  hier <- character(0)
+  emit <- function(i, depth) {
+    pad <- strrep("  ", depth)
+    if (j$end_site[i]) {
+      hier <<- c(hier, paste0(pad, "End Site"), paste0(pad, "{"),
+                 paste0(pad, "  OFFSET ", num(parts$offsets[i, ])), paste0(pad, "}"))
+      return(invisible())
+    }
+    ch <- parts$channels[[i]]
+    hier <<- c(hier, paste0(pad, if (is.na(j$parent[i])) "ROOT " else "JOINT ", j$name[i]), paste0(pad, "{"),
+               paste0(pad, "  OFFSET ", num(parts$offsets[i, ])),
+               paste0(pad, "  CHANNELS ", length(ch), " ", paste(ch, collapse = " ")))
+    for (k in which(j$parent %in% j$name[i] & seq_len(nrow(j)) > i)) emit(k, depth + 1L)
     hier <<- c(hier, paste0(pad, "}"))
   }
-  emit(which(is.na(pidx)), 0L)
-
-  motion <- matrix(0, n, 3 + 3 * length(order))
-  for (k in seq_along(order)) {
-    L <- fk_local(plan, ang, order[k])
-    if (!is.null(L)) motion[, 3 + 3 * (k - 1) + 1:3] <- euler_zxy(L)
-  }
-  body <- apply(round(motion, 5), 1, function(r) paste(format(r, trim = TRUE, scientific = FALSE), collapse = " "))
-  write_text_file(c("HIERARCHY", hier, "MOTION", paste("Frames:", n),
+  emit(which(is.na(j$parent))[1], 0L)
+  body <- apply(round(parts$motion, 5), 1, function(r) paste(format(r, trim = TRUE, scientific = FALSE), collapse = " "))
+  write_text_file(c("HIERARCHY", hier, "MOTION", paste("Frames:", nrow(parts$motion)),
                     paste("Frame Time:", format(1 / rate, digits = 10)), body), file, call = call)
   invisible(file)
 }

@@ -24,7 +24,9 @@
 #'   `"YYYY-MM-DD hh:mm:ss"`, UTC) for recordings without a `start_time`
 #'   metadata column.
 #' @param digits Decimals written for radians (the format uses 5).
-#' @param overwrite Replace existing files?
+#' @param overwrite Replace existing files? By default an existing file is
+#'   an error of class `handmotion_error_file_exists` naming it, and nothing
+#'   is written.
 #' @return The paths written, invisibly.
 #' @details Time stamps are the recording's `"time"` attribute (elapsed
 #'   seconds, as read) when present, otherwise frames spaced `1 / x$rate`
@@ -63,12 +65,7 @@ write_graspdb14 <- function(x, dir, file_names = NULL, start_time = "2014-01-01 
   }
   dir <- create_output_dir(dir, call = call)
   paths <- file.path(dir, file_names)
-  exists <- file.exists(paths)
-  if (!overwrite && any(exists)) {
-    hm_abort(c("{sum(exists)} file{?s} already exist{?s/}: {.file {paths[exists]}}.",
-               i = "Use {.code overwrite = TRUE} to replace existing files."),
-             "file_exists", file = paths[exists], call = call)
-  }
+  check_overwrite(paths, overwrite, call = call)
   starts <- if ("start_time" %in% names(x$meta) && inherits(x$meta$start_time, "POSIXct"))
     as.numeric(x$meta$start_time) else rep(NA_real_, length(x))
   starts[is.na(starts)] <- as.numeric(start)

@@ -23,7 +23,9 @@
 #'   for none. Columns: `file`, `id`, `grasp` (Feix name),
 #'   `subject`, `object`, `trial`, `rate`, `unit`, then every other atomic
 #'   metadata column except `n_frames` and `source`.
-#' @param overwrite Replace existing files?
+#' @param overwrite Replace existing files? By default an existing file is
+#'   an error of class `handmotion_error_file_exists` naming it, and nothing
+#'   is written.
 #' @return The paths of the data files, invisibly (the manifest path is
 #'   attribute `"manifest"`).
 #' @seealso [read_hust()]
@@ -65,12 +67,7 @@ write_hust <- function(x, dir, file_names = NULL, sep = ",", header = FALSE, dig
   dir <- create_output_dir(dir, call = call)
   paths <- file.path(dir, file_names)
   targets <- c(paths, if (!is.null(manifest)) file.path(dir, manifest))
-  exists <- file.exists(targets)
-  if (!overwrite && any(exists)) {
-    hm_abort(c("{sum(exists)} file{?s} already exist{?s/}: {.file {utils::head(targets[exists], 3)}}.",
-               i = "Use {.code overwrite = TRUE} to replace existing files."),
-             "file_exists", file = targets[exists], call = call)
-  }
+  check_overwrite(targets, overwrite, call = call)
   fmt <- paste0("%.", digits, "g")
   for (i in seq_along(paths)) {
     rec <- x$recordings[[i]][, dofs, drop = FALSE]

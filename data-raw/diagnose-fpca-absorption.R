@@ -79,7 +79,7 @@ others_mean <- function(M) (colSums(M) - diag(M)) / (ncol(M) - 1L)
 for (s in seeds) {
   g <- simulate_grasps(seed = s)
   models <- fit_grasp_models(g, seed = s)
-  pr <- stats::predict(models, g)
+  pr <- project(models, g)
   truth <- as.character(g$meta$grasp)
   types <- names(pr)
   resid2 <- vapply(pr, function(p) rowSums(p$residual^2), numeric(length(truth)))
@@ -96,7 +96,7 @@ for (s in seeds) {
   A <- distance_effects(distance_table(classify(models, g, method = "fpca"))[types, types])$model
   gv <- p0$grasp_variability[types]
   # the model's centrality: log mean squared distance of the other types'
-  # recordings to its mean function (on predict()'s [0, 1] time axis)
+  # recordings to its mean function (on project()'s [0, 1] time axis)
   centre <- log(others_mean(tot))
   T_i <- vapply(pr, function(p) p$target_length, numeric(1))
   fit <- stats::lm(A ~ log(1 - others) + centre + log(T_i))

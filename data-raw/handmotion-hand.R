@@ -111,7 +111,7 @@ joints <- data.frame(id = j$id, name = j$name, parent = j$parent,
 skel <- new_hand_skeleton(joints, list(angle = "deg", length = "mm"))
 stopifnot(nrow(joints) == 25L)
 
-write_skeleton(skel, "inst/extdata/handmotion-hand.xmlskel", comment = c(
+write_skeleton(skel, "inst/extdata/handmotion-hand.xmlskel", overwrite = TRUE, comment = c(
   " handmotion default hand skeleton (GraspDB14 .xmlskel layout; positions are",
   " rest positions relative to the root, in mm). Right hand, flat, fingers",
   " along -y, thumb towards +x, palm facing -z; +rotx = flexion.",

@@ -91,10 +91,10 @@ test_that("FPCA classification is near 100% on planted well-separated types", {
   expect_equal(unname(cl$target_length), vapply(unclass(ms), function(m) m$target_length, numeric(1)),
                ignore_attr = TRUE)
   expect_gte(mean(as.character(cl$predictions$predicted) == as.character(g$meta$grasp)), 0.95)
-  # the thesis' norm on frames 1..T_i: predict()'s [0, 1] distance times
+  # the thesis' norm on frames 1..T_i: project()'s [0, 1] distance times
   # sqrt(T_i - 1), model by model
   tl <- cl$target_length
-  pr <- predict(ms, g)
+  pr <- project(ms, g)
   for (type in names(ms)) {
     expect_equal(unname(cl$distances[, type]), unname(pr[[type]]$distance) * sqrt(tl[[type]] - 1),
                  tolerance = 1e-12)

@@ -200,7 +200,7 @@ test_that("a model whose sampler was altered gets a classed error, not a crash",
   expect_error(generate(bad, n = 3, seed = 1), class = "handmotion_error_bad_model")
   bad <- m
   bad$fpca[[1]]$components <- bad$fpca[[1]]$components[, 1]
-  expect_error(generate(bad, n = 3, seed = 1), class = "handmotion_error_bad_input")
+  expect_error(generate(bad, n = 3, seed = 1), class = "handmotion_error_bad_model")
   # the kernel checks on its own too (a sampler that bypasses the R check)
   smp <- m$sampler
   smp$dofs$k <- smp$dofs$k + 1L

@@ -3,15 +3,19 @@ test_that("BVH output re-parses with the right joints, frames and motion", {
   rec <- matrix(runif(30 * 16, -10, 80), 30, 16, dimnames = list(NULL, hust_dofs$name))
   f <- withr::local_tempfile(fileext = ".bvh")
   write_bvh(rec, f, rate = 60)
-  b <- read_bvh(f)
+  x <- read_bvh(f)
+  expect_s3_class(x, "grasps")
+  b <- attr(x, "bvh")
   expect_equal(nrow(b$joints), 25L)             # 20 joints + 5 end sites (the fingertips)
   expect_equal(sum(b$joints$end_site), 5L)
-  expect_equal(b$frames, 30L)
+  expect_equal(x$meta$n_frames, 30L)
   expect_equal(b$frame_time, 1 / 60, tolerance = 1e-8)
-  expect_equal(ncol(b$motion), 6L + 3L * 19L)
+  expect_equal(x$rate, 60, tolerance = 1e-6)
+  expect_equal(length(x$dofs), 3L * 20L)        # every joint's three rotations, the root's too
+  expect_equal(dim(b$position), c(30L, 3L))
   expect_equal(b$channels$root[1:3], c("Xposition", "Yposition", "Zposition"))
   # the animation in the file poses the hand exactly as forward_kinematics() does
-  pb <- bvh_positions(b)
+  pb <- bvh_positions(x)
   pf <- forward_kinematics(rec)
   inner <- b$joints$name[!b$joints$end_site]
   expect_equal(pb[, inner, ], pf[, inner, ], tolerance = 1e-4, ignore_attr = TRUE)
@@ -26,11 +30,11 @@ test_that("a real GraspDB14 recording with wrist motion exports exactly", {
   colnames(a) <- joint_map("graspdb14")$dof
   f <- withr::local_tempfile(fileext = ".bvh")
   write_bvh(a, f, s, unit = "rad", mode = "full")
-  b <- read_bvh(f)
-  expect_equal(b$frames, 60L)
+  x <- read_bvh(f)
+  expect_equal(x$meta$n_frames, 60L)
   pf <- forward_kinematics(a, s, unit = "rad", mode = "full")
-  pb <- bvh_positions(b)
-  expect_equal(unname(pb[, b$joints$end_site, ]), unname(pf[, grep("tip", dimnames(pf)[[2]]), ]),
+  pb <- bvh_positions(x)
+  expect_equal(unname(pb[, attr(x, "bvh")$joints$end_site, ]), unname(pf[, grep("tip", dimnames(pf)[[2]]), ]),
                tolerance = 1e-4)
 })
 
@@ -39,10 +43,10 @@ test_that("grasps export, scaling and bad files", {
   f <- withr::local_tempfile(fileext = ".bvh")
   write_bvh(g, f, recording = 2, scale = 0.001)
   b <- read_bvh(f)
-  expect_equal(b$frames, 7L)
-  expect_equal(b$frame_time, 0.04)
-  expect_equal(unname(b$offsets["th-tmc", ]), c(20, -8, 0) / 1000)
-  expect_error(write_bvh(g, f, recording = "nope"), class = "handmotion_error_bad_input")
+  expect_equal(b$meta$n_frames, 7L)
+  expect_equal(attr(b, "bvh")$frame_time, 0.04)
+  expect_equal(unname(attr(b, "bvh")$offsets["th-tmc", ]), c(20, -8, 0) / 1000)
+  expect_error(write_bvh(g, f, recording = "nope", overwrite = TRUE), class = "handmotion_error_bad_input")
   writeLines(c("HIERARCHY", "ROOT r", "{", "OFFSET 0 0", "}", "MOTION", "Frames: 1", "Frame Time: 0.1", "0"), f)
   err <- expect_error(read_bvh(f), class = "handmotion_error_bad_file")
   expect_equal(err$line, 4L)
@@ -50,4 +54,59 @@ test_that("grasps export, scaling and bad files", {
                "Frames: 2", "Frame Time: 0.1", "0"), f)
   expect_error(read_bvh(f), class = "handmotion_error_bad_file")
   expect_error(read_bvh(tempfile()), class = "handmotion_error_bad_file")
+  # a frame time of 0 and a negative channel count are named, with their line
+  good <- c("HIERARCHY", "ROOT r", "{", "OFFSET 0 0 0", "CHANNELS 1 Zrotation", "End Site", "{", "OFFSET 0 1 0",
+            "}", "}", "MOTION", "Frames: 2", "Frame Time: 0.1", "0", "5")
+  writeLines(good, f)
+  expect_equal(unname(read_bvh(f)$recordings[[1]][, 1]), c(0, 5))
+  writeLines(replace(good, 13, "Frame Time: 0"), f)
+  err <- expect_error(read_bvh(f), "positive", class = "handmotion_error_bad_file")
+  expect_equal(err$line, 13L)
+  writeLines(replace(good, 5, "CHANNELS -2 Zrotation"), f)
+  err <- expect_error(read_bvh(f), class = "handmotion_error_bad_file")
+  expect_equal(err$line, 5L)
+})
+
+test_that("a BVH read back is written back unchanged, and its angles are the recording's", {
+  set.seed(7)
+  rec <- matrix(runif(12 * 16, -10, 80), 12, 16, dimnames = list(NULL, hust_dofs$name))
+  f <- withr::local_tempfile(fileext = ".bvh")
+  write_bvh(rec, f, rate = 30)
+  x <- read_bvh(f)
+  f2 <- withr::local_tempfile(fileext = ".bvh")
+  write_bvh(x, f2)
+  expect_identical(readLines(f2), readLines(f))
+  expect_identical(x$meta$id, sub("\\.bvh$", "", basename(f)))
+  # an edited recording is written with its new angles, the hierarchy kept
+  y <- x
+  y$recordings[[1]][, "if-pip:Xrotation"] <- 10
+  write_bvh(y, f2, overwrite = TRUE)
+  z <- read_bvh(f2)
+  expect_equal(unname(z$recordings[[1]][, "if-pip:Xrotation"]), rep(10, 12))
+  expect_identical(attr(z, "bvh")$joints, attr(x, "bvh")$joints)
+})
+
+test_that("every writer refuses to replace a file without overwrite = TRUE, naming it", {
+  rec <- matrix(0, 3, 16, dimnames = list(NULL, hust_dofs$name))
+  g <- grasps(list(rec, rec + 1), meta = data.frame(grasp = c(1, 2), subject = "S01"))
+  dir <- withr::local_tempdir()
+  bvh <- file.path(dir, "a.bvh")
+  skel <- file.path(dir, "a.xmlskel")
+  write_bvh(rec, bvh)
+  write_skeleton(hand_skeleton(), skel)
+  write_hust(g, file.path(dir, "hust"))
+  gdb <- graspdb14_fixture_grasps()
+  write_graspdb14(gdb, file.path(dir, "gdb"))
+  before <- tools::md5sum(c(bvh, skel))
+  for (attempt in list(quote(write_bvh(rec + 5, bvh)), quote(write_skeleton(hand_skeleton(), skel)),
+                       quote(write_hust(g, file.path(dir, "hust"))),
+                       quote(write_graspdb14(gdb, file.path(dir, "gdb"))))) {
+    err <- expect_error(eval(attempt), class = "handmotion_error_file_exists")
+    expect_true(length(err$file) >= 1L && all(file.exists(err$file)))
+    expect_match(cli::ansi_strip(conditionMessage(err)), basename(err$file[1]), fixed = TRUE)
+  }
+  expect_identical(tools::md5sum(c(bvh, skel)), before)   # nothing was written
+  write_bvh(rec + 5, bvh, overwrite = TRUE)
+  expect_false(identical(tools::md5sum(bvh), before[1]))
+  expect_silent(write_skeleton(hand_skeleton(), skel, overwrite = TRUE))
 })

@@ -202,8 +202,11 @@ def evaluate_generation(models, held_out=None, training=None, n=None, reps=5, se
             "evaluation": RHandle(res)}
 
 
-def generate(models, grasp=None, n=1, seed=None, as_array=False, limits=None, **kwargs):
+def generate(models, grasp=None, n=1, seed=1, as_array=False, limits=None, **kwargs):
     """Generate new grasps by sampling component scores (thesis eq. 2.5).
+
+    ``seed`` defaults to 1 as in every handmotion verb that draws random numbers (a call
+    repeats itself); ``None`` draws from R's current random stream.
 
     ``limits`` keeps angles inside the hand's joint limits by a smooth map (``None``: on for
     copula models, off for the thesis' model).
@@ -235,9 +238,9 @@ def classify(models, x, method=None, **kwargs):
     """Classify recordings with fitted models; the method follows from ``models``.
 
     ``models`` are fitted models: a :class:`GraspModels` from :func:`fit_grasp_models`
-    (``"fpca"``, the thesis' distance) or what :func:`fit_grasp_classifier` returns
-    (a :class:`GraspClassifier` for ``"discriminant"``, a handle for ``"last_frame"`` and
-    ``"weighted_fpca"``).
+    (``"fpca"``, the thesis' distance) or a :class:`GraspClassifier` from
+    :func:`fit_grasp_classifier`. It is R's ``classify()``, a thin wrapper over
+    ``predict(type="distance")`` that keeps the true types for the confusion matrix.
     Nothing is fitted here: a :class:`Grasps` is refused (fit first; for a held-out
     estimate use :func:`evaluate_loso`).
 
@@ -304,16 +307,18 @@ def fit_grasp_classifier(x, method="discriminant", **kwargs):
     * ``"discriminant"``: shrinkage LDA on postures at fractions of the motion, duration and
       travel per DoF (``at``, ``prior``); a :class:`GraspClassifier`;
     * ``"last_frame"``: per-type PCA of the recordings' last frames, the thesis' baseline
-      (``k``, ``grasps``); a handle, also for :func:`thesis_table`;
+      (``k``, ``grasps``), also for :func:`thesis_table`;
     * ``"weighted_fpca"``: the thesis' FPCA distance with per-type DoF weights (``models``, a
-      :class:`GraspModels` or None; ``time``, ``"uniform"`` or ``"end"``); a handle.
+      :class:`GraspModels` or None; ``time``, ``"uniform"`` or ``"end"``).
+
+    Every method gives a :class:`GraspClassifier`, whose ``predict()`` answers as R's.
     """
     if "models" in kwargs and kwargs["models"] is not None:
         if not isinstance(kwargs["models"], GraspModels):
             raise BadInputError("models must be a GraspModels from fit_grasp_models(), or None")
         kwargs["models"] = kwargs["models"].robj
     fit = call("fit_grasp_classifier", _as_grasps(x), method=method, **kwargs)
-    return GraspClassifier(fit) if method == "discriminant" else RHandle(fit)
+    return GraspClassifier(fit)
 
 
 def _deprecated_classifier(name, method):

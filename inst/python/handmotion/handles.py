@@ -26,11 +26,36 @@ class RHandle:
         return list(r().r["class"](self.robj))
 
 
-class GraspModels(RHandle):
+_PREDICT_TYPES = ("class", "prob", "distance")
+
+
+class Classifier(RHandle):
+    """A fitted classifier: every one answers :meth:`predict` alike (R's ``predict()``,
+    ``?predict.grasp_models``)."""
+
+    def predict(self, x, type="class", **kwargs):
+        """One row per recording of ``x`` (index: the recording ids), as R returns it:
+        ``type="class"`` a column ``.pred_class`` (None where a recording could not be
+        classified), ``"prob"`` a column ``.pred_<class>`` per class (rows sum to 1),
+        ``"distance"`` a column ``.dist_<class>`` per class (smaller is closer)."""
+        from .errors import BadInputError
+        if type not in _PREDICT_TYPES:
+            raise BadInputError(f"type must be one of {_PREDICT_TYPES}, not {type!r}")
+        out = call(r().r["predict"], self.robj, _as_grasps(x), type=type, **kwargs)
+        df = r_to_py(out)
+        df.index = [str(v) for v in r().r["rownames"](out)]
+        return df
+
+    def summary(self):
+        """R's ``summary()`` of the classifier as a pandas DataFrame (one row per class)."""
+        return r_to_py(call(r().r["summary"], self.robj))
+
+
+class GraspModels(Classifier):
     """Fitted per-type grasp models (R class ``grasp_models``).
 
-    Use :meth:`summary` for a per-type table and pass the handle to
-    :func:`handmotion.generate` or :func:`handmotion.classify`.
+    Use :meth:`summary` for a per-type table, :meth:`predict` to classify, and pass the
+    handle to :func:`handmotion.generate` or :func:`handmotion.classify`.
     """
 
     def summary(self):
@@ -83,38 +108,24 @@ def _labelled_matrix(mat):
                         columns=[str(v) for v in ro.r["colnames"](mat)])
 
 
-class GraspClassifier(RHandle):
-    """A discriminant grasp classifier (R class ``grasp_classifier``)."""
-
-    def predict(self, x, type="class"):
-        """Predicted grasp types (a list of str) or, with ``type="prob"``, a DataFrame of class
-        probabilities (recordings x types)."""
-        from .errors import BadInputError
-        if type not in ("class", "prob"):
-            raise BadInputError(f"type must be 'class' or 'prob', not {type!r}")
-        out = call(r().r["predict"], self.robj, _as_grasps(x), type=type)
-        if type == "prob":
-            return _labelled_matrix(out)
-        return [str(v) for v in r().r["as.character"](out)]
+class GraspClassifier(Classifier):
+    """A fitted grasp classifier (R classes ``grasp_classifier``, ``last_frame_pca`` and
+    ``weighted_fpca``, from :func:`handmotion.fit_grasp_classifier`)."""
 
 
-class GraspRecognizer(RHandle):
+class GraspRecognizer(Classifier):
     """An early grasp recogniser (R class ``grasp_recognizer``): classify from the first
     frames, or open a :class:`RecognitionStream` for a live loop."""
 
-    def predict(self, x, frames=None, ms=None, fraction=None, type="class"):
-        """Classify every recording of ``x`` from its first frames (give exactly one of
-        ``frames``, ``ms`` or ``fraction``)."""
+    def predict(self, x, type="class", frames=None, ms=None, fraction=None):
+        """Classify every recording of ``x`` from its first frames: at most one of ``frames``,
+        ``ms`` or ``fraction`` (none: the whole recording); the result as
+        :meth:`Classifier.predict`."""
         from .errors import BadInputError
-        if type not in ("class", "prob"):
-            raise BadInputError(f"type must be 'class' or 'prob', not {type!r}")
         given = {k: v for k, v in dict(frames=frames, ms=ms, fraction=fraction).items() if v is not None}
-        if len(given) != 1:
-            raise BadInputError("give exactly one of frames, ms and fraction")
-        out = call(r().r["predict"], self.robj, _as_grasps(x), type=type, **given)
-        if type == "prob":
-            return _labelled_matrix(out)
-        return [str(v) for v in r().r["as.character"](out)]
+        if len(given) > 1:
+            raise BadInputError("give at most one of frames, ms and fraction (none: the whole recording)")
+        return super().predict(x, type=type, **given)
 
     def stream(self):
         """A new live stream (R's ``start_recognition()``)."""

@@ -15,11 +15,13 @@ def test_discriminant_classifier_matches_r(hm, ro, split):
     train, test = split
     cl = hm.fit_grasp_classifier(train)
     pred = cl.predict(test)
-    r_pred = ro.r("function(c, x) as.character(predict(c, x))")(cl.robj, test.to_r())
-    assert pred == [str(v) for v in r_pred]
+    r_pred = ro.r("function(c, x) as.character(predict(c, x)$.pred_class)")(cl.robj, test.to_r())
+    assert list(pred[".pred_class"]) == [str(v) for v in r_pred]
+    assert list(pred.index) == list(test.meta["id"])
     prob = cl.predict(test, type="prob")
     np.testing.assert_allclose(prob.sum(axis=1).values, 1.0)
     assert list(prob.index) == list(test.meta["id"])
+    assert all(c.startswith(".pred_") for c in prob.columns)
     res = hm.classify(cl, test)
     assert 0.5 < res["accuracy"] <= 1
     ev = hm.evaluate_loso(train, method="discriminant", folds=2)
@@ -43,6 +45,23 @@ def test_weighted_fpca_from_python(hm, split):
     assert "last_frame_pca" in repr(lf)
 
 
+def test_every_classifier_answers_predict_alike(hm, split):
+    train, test = split
+    fits = [hm.fit_grasp_models(train, seed=1, k=1), hm.fit_grasp_classifier(train),
+            hm.fit_grasp_classifier(train, method="last_frame", k=2),
+            hm.fit_grasp_classifier(train, method="weighted_fpca", seed=1), hm.fit_grasp_recognizer(train)]
+    for fit in fits:
+        cls = fit.predict(test)
+        assert list(cls.columns) == [".pred_class"] and len(cls) == len(test.meta)
+        prob = fit.predict(test, type="prob")
+        np.testing.assert_allclose(prob.sum(axis=1).values, 1.0)
+        top = [c[len(".pred_"):] for c in prob.idxmax(axis=1)]
+        assert top == list(cls[".pred_class"])
+        dist = fit.predict(test, type="distance")
+        assert all(c.startswith(".dist_") for c in dist.columns)
+        assert len(fit.summary()) == 3
+
+
 def test_stream_gives_the_batch_probabilities(hm, split):
     train, test = split
     rec = hm.fit_grasp_recognizer(train, horizon=20)
@@ -52,7 +71,7 @@ def test_stream_gives_the_batch_probabilities(hm, split):
         p = stream.update(r[t])
     batch = rec.predict(test[[0]], frames=12, type="prob")
     for k, v in p.items():
-        assert v == pytest.approx(batch.loc[batch.index[0], k], abs=1e-10)
+        assert v == pytest.approx(batch.loc[batch.index[0], ".pred_" + k], abs=1e-10)
     assert sum(p.values()) == pytest.approx(1.0)
     with pytest.raises(hm.BadInputError):
         stream.update([1.0, 2.0])
