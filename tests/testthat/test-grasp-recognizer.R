@@ -80,18 +80,22 @@ test_that("early recognition is evaluated held out by subject, against time and 
   expect_lt(er$accuracy[er$scale == "fraction" & er$value == 0.25], 0.8)
   expect_gt(er$accuracy[er$scale == "ms" & er$value == 800], 0.9)
   expect_equal(attr(er, "scheme"), "leave-one-subject-out")
-  expect_output(print(er), "held out by subject")
+  expect_output(print(er), "held out: leave-one-subject-out")
   expect_s3_class(ggplot2::autoplot(er), "ggplot")
   grouped <- evaluate_early_recognition(g, ms = 400, fractions = 1, folds = 3)
-  expect_equal(attr(grouped, "scheme"), "3 subject groups")
+  expect_equal(attr(grouped, "scheme"), "leave-group-out (3 folds of subjects)")
   expect_error(evaluate_early_recognition(g, ms = -1), class = "handmotion_error_bad_input")
   expect_error(evaluate_early_recognition(g, fractions = 0), class = "handmotion_error_bad_input")
   expect_error(evaluate_early_recognition(g, ms = NULL, fractions = NULL), class = "handmotion_error_bad_input")
   expect_error(evaluate_early_recognition(g, ms = 100, horizont = 5), "horizont",
                class = "handmotion_error_bad_input")
+  # without subjects the folds hold out recordings; folds by subject are refused
   nosub <- g
   nosub$meta$subject <- NA
-  expect_error(evaluate_early_recognition(nosub), class = "handmotion_error_too_few_subjects")
+  expect_error(evaluate_early_recognition(nosub, split = "subject"), class = "handmotion_error_too_few_subjects")
+  byrec <- evaluate_early_recognition(nosub, ms = 800, fractions = NULL, folds = 3)
+  expect_match(attr(byrec, "scheme"), "3-fold by recording")
+  expect_equal(byrec$n, 36L)
 })
 
 test_that("fitting only the horizons a fold needs changes no prediction", {
