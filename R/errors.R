@@ -65,7 +65,8 @@
 #' the correlation measures), `no_limits` (no joint limits to keep
 #' generated grasps within), `stuck_channels` (glove channels that never
 #' change), `mixed_labels` (labels of which only some are Feix types),
-#' `note` and `deprecated`.
+#' `guessed_glove` (raw counts with recognised channel names but no
+#' profile, drawn through a guessed map), `note` and `deprecated`.
 #'
 #' From Python the error families are `BadInputError`, `BadFileError` and
 #' `FitFailedError`, all subclasses of `HandmotionError`; warnings arrive as
@@ -138,7 +139,7 @@ warning_families <- c(
   non_finite = "degenerate", zero_window = "degenerate",
   read_failures = NA, truncated_line = NA, unknown_header = NA, few_recordings = NA,
   model_failed = NA, projection_failed = NA, fold_failed = NA, skeleton_default_unit = NA,
-  constant_channels = NA, no_limits = NA, stuck_channels = NA, mixed_labels = NA,
+  constant_channels = NA, no_limits = NA, stuck_channels = NA, mixed_labels = NA, guessed_glove = NA,
   note = NA, deprecated = NA
 )
 

@@ -198,7 +198,7 @@ print.glove_profile <- function(x, ...) {
 guess_glove <- function(dofs, unit) {
   for (nm in c("hust", "graspdb14")) {
     ch <- shipped_gloves[[nm]]()
-    if (length(dofs) == nrow(ch) && all(dof_key(dofs) == dof_key(ch$channel))) {
+    if (unit != "raw" && length(dofs) == nrow(ch) && all(dof_key(dofs) == dof_key(ch$channel))) {
       ch$channel <- dofs
       if (unit != ch$unit[1]) ch <- convert_channel_ranges(ch, unit)
       return(new_glove_profile(nm, ch))
@@ -377,4 +377,43 @@ fk_mapped <- function(angles, skeleton, unit, mapping, ...) {
   dots <- list(...)
   if (is.null(dots$mapping)) dots$mapping <- mapping
   do.call(forward_kinematics, c(list(angles, skeleton, unit = unit), dots))
+}
+
+# Raw counts from channels whose names a known mapping recognises (CyberGlove
+# sensor names, HUST DoFs) but without a profile: drawn through a guessed
+# map, each channel's recorded range onto a typical range of its joint axis
+# (flexion increasing with the count), so the hand can be looked at before a
+# calibration. NULL when no channel is recognised.
+guess_raw_glove <- function(dofs, recordings) {
+  map <- tryCatch(default_joint_map_impl(dofs, NULL), handmotion_error = function(e) NULL)
+  if (is.null(map) || !nrow(map)) return(NULL)
+  X <- do.call(rbind, recordings)
+  ch <- data.frame(channel = dofs, joint = NA_character_, axis = NA_character_, sign = 1, scale = 1,
+                   frame = "joint", unit = "raw", min = apply(X, 2, min), max = apply(X, 2, max),
+                   angle_min = NA_real_, angle_max = NA_real_, stuck = FALSE, stringsAsFactors = FALSE)
+  i <- match(map$dof, dofs)
+  ch$joint[i] <- map$joint
+  ch$axis[i] <- map$axis
+  ch$frame[i] <- map$frame
+  # (a joint map's flexion sign follows its files' convention; counts rise with bending)
+  ch$sign[i] <- ifelse(!is.na(map$axis) & map$axis == "x", 1, map$sign)
+  ch$scale[i] <- map$scale
+  typical <- function(joint, axis) {
+    if (is.na(axis)) return(c(NA, NA))
+    if (axis == "z") return(c(-15, 15))
+    if (axis == "y") return(c(-30, 60))
+    if (grepl("^th-mcp", joint)) return(c(0, 50))
+    if (grepl("^th-ip", joint)) return(c(0, 70))
+    if (grepl("dip$", joint)) return(c(0, 70))
+    if (grepl("pip$", joint)) return(c(0, 100))
+    if (grepl("mcp$", joint)) return(c(0, 90))
+    c(-30, 30)
+  }
+  r <- t(mapply(typical, ch$joint, ch$axis))
+  ch$angle_min <- r[, 1]
+  ch$angle_max <- r[, 2]
+  flat <- !(ch$max > ch$min)
+  ch$axis[flat] <- NA_character_
+  if (!any(!is.na(ch$axis))) return(NULL)
+  new_glove_profile("guessed from channel names", ch)
 }

@@ -115,6 +115,14 @@ grasps <- function(recordings, meta = NULL, dofs = NULL, rate = 50, unit = NULL,
   }
   meta <- build_meta(meta, recordings, ids, call = call)
   names(recordings) <- meta$id
+  if (is.null(glove) && unit == "raw") {
+    glove <- guess_raw_glove(dofs, recordings)
+    if (!is.null(glove)) {
+      hm_warn(c("Raw counts without a glove profile: channels {.val {utils::head(glove$channels$channel[!is.na(glove$channels$axis)], 4)}}... are drawn through a guessed map.",
+                i = "Each channel's recorded range is mapped onto a typical range of its joint; give {.arg glove} ({.fn glove_profile}) or {.fn calibrate} the data for true angles."),
+              "guessed_glove")
+    }
+  }
   glove <- match_glove(glove, dofs, unit, call = call)
   flag_stuck(new_grasps(recordings, meta, dofs, rate, unit, glove = glove), call = call)
 }

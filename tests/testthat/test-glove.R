@@ -83,3 +83,16 @@ test_that("a glove with no drawn channel cannot be drawn, and says so", {
   g <- grasps(list(m))
   expect_error(forward_kinematics(g), class = "handmotion_error_bad_mapping")
 })
+
+test_that("raw counts with CyberGlove sensor names and no profile are drawn through a guessed map, said once", {
+  deg <- simulate_grasps(subjects = 1, grasps = c(a = 17), objects = 1, trials = 2, seed = 2)
+  # counts rising with each HUST angle, named as the HUST DoFs
+  recs <- lapply(deg$recordings, function(r) round(200 + 4 * r))
+  expect_warning(g <- grasps(recs, rate = 50, unit = "raw"), class = "handmotion_warning_guessed_glove")
+  expect_match(g$glove$name, "guessed")
+  pos <- forward_kinematics(g)[[1]]
+  expect_true(all(is.finite(pos)))
+  # the guessed map is increasing: a more bent index MCP gives a larger angle
+  d <- glove_degrees(list(matrix(c(rep(300, 16), rep(500, 16)), 2, byrow = TRUE)), g$glove)[[1]]
+  expect_true(all(d[2, !is.na(g$glove$channels$axis)] > d[1, !is.na(g$glove$channels$axis)]))
+})
