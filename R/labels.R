@@ -82,7 +82,7 @@ as_grasp_label <- function(x, ids = NULL, call = rlang::caller_env()) {
              "bad_input", argument = "meta", call = call)
   }
   if (!is.factor(lab)) lab <- factor(lab, levels = sort(unique(lab[given])))
-  if (any(!is.na(codes[given])) && !is.numeric(x)) {
+  if (any(!is.na(codes[given]))) {
     feixy <- unique(as.character(x[given & !is.na(codes)]))
     other <- unique(as.character(x[given & is.na(codes)]))
     hm_warn(c("Some labels name Feix grasp types ({.val {utils::head(feixy, 3)}}), others do not ({.val {utils::head(other, 3)}}).",
@@ -119,7 +119,8 @@ resolve_labels <- function(values, levels, arg, call = rlang::caller_env()) {
   if (length(bad)) {
     shown <- utils::head(levels, 12)
     more <- if (length(levels) > 12) " ..." else ""
-    hm_abort(c("Unknown label{?s} {.val {bad}} in {.arg {arg}}.",
+    what <- if (length(bad) == 1L) "label" else "labels"
+    hm_abort(c("Unknown {what} {.val {bad}} in {.arg {arg}}.",
                i = "The labels here are {.val {shown}}{more}."),
              "unknown_grasp", argument = arg, grasp = bad, call = call)
   }

@@ -94,8 +94,16 @@ test_that("the DTW path keeps the books: used + removed = input", {
 test_that("a constant DoF is a recorded fallback, not a crash", {
   g <- planted_grasps(n = 20, p = 3, seed = 16)
   recs <- lapply(g$recordings, function(r) { r[, 2] <- 10; r })
-  g2 <- grasps(recs, meta = g$meta, dofs = g$dofs)
-  expect_warning(m <- fit_grasp_model(g2, warping = "linear", seed = 1), "d2", class = "handmotion_warning_constant_dofs")
+  # constant in every recording: a stuck channel, said once where the data are built
+  expect_warning(g2 <- grasps(recs, meta = g$meta, dofs = g$dofs), "d2", class = "handmotion_warning_stuck_channels")
+  expect_no_warning(m <- fit_grasp_model(g2, warping = "linear", seed = 1))
+  expect_output(print(m), "stuck channels held constant: d2")
+  # constant within the type only: the model says so itself
+  other <- planted_grasps(n = 4, p = 3, seed = 17, grasp = "Ring")
+  meta <- rbind(g$meta[c("id", "grasp")], data.frame(id = paste0("ring", 1:4), grasp = "Ring"))
+  both <- grasps(c(recs, unname(other$recordings)), meta = meta, dofs = g$dofs)
+  expect_warning(fit_grasp_model(both, grasp = "Tripod", warping = "linear", seed = 1), "d2",
+                 class = "handmotion_warning_constant_dofs")
   expect_true(any(m$fallbacks$step == "fpca" & m$fallbacks$dof == "d2"))
   expect_true(all(is.na(model_var_explained(m)["d2", ])))
   expect_true(isTRUE(m$gmm$d2$point_mass))
@@ -176,8 +184,8 @@ test_that("print and summary list what was removed and what fell back", {
   recs <- g$recordings
   recs[[2]] <- rbind(recs[[2]], recs[[2]], recs[[2]])
   recs <- lapply(recs, function(r) { r[, 3] <- 1; r })
-  expect_warning(m <- fit_grasp_model(grasps(recs, meta = g$meta, dofs = g$dofs), warping = "linear", seed = 1),
-                 class = "handmotion_warning_constant_dofs")
+  expect_warning(g3 <- grasps(recs, meta = g$meta, dofs = g$dofs), class = "handmotion_warning_stuck_channels")
+  m <- fit_grasp_model(g3, warping = "linear", seed = 1)
   s <- summary(m)
   expect_s3_class(s, "summary_grasp_model")
   expect_identical(names(s), c("dof", "FPC1", "FPC2", "total", "mixture", "reason"))

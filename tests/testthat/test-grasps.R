@@ -38,9 +38,10 @@ test_that("bad inputs give classed errors that name the recording or argument", 
   empty <- recs; empty[[1]] <- matrix(numeric(0), 0, 16)
   expect_error(grasps(empty), "zero length", class = "handmotion_error_bad_recording")
   expect_error(grasps(list(1:5)), "vector", class = "handmotion_error_bad_recording")
-  expect_error(grasps(recs, meta = data.frame(grasp = c("Tripod", "Nonsense"))),
-               "Nonsense", class = "handmotion_error_unknown_grasp")
-  expect_error(grasps(recs, meta = data.frame(grasp = c(1, 34))), class = "handmotion_error_unknown_grasp")
+  # labels are the user's: a label that is no Feix type is kept, and a mix is said
+  expect_warning(grasps(recs, meta = data.frame(grasp = c("Tripod", "Nonsense"))),
+                 "Nonsense", class = "handmotion_warning_mixed_labels")
+  expect_warning(grasps(recs, meta = data.frame(grasp = c(1, 34))), class = "handmotion_warning_mixed_labels")
   expect_error(grasps(recs, meta = data.frame(grasp = 1)), "1 row", class = "handmotion_error_bad_input")
   expect_error(grasps(recs, meta = data.frame(id = c("x", "x"))), "duplicated", class = "handmotion_error_bad_input")
   expect_error(grasps(recs, rate = -1), class = "handmotion_error_bad_input")
