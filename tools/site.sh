@@ -12,5 +12,8 @@ export HANDMOTION_REPORT_FOLDS="${HANDMOTION_REPORT_FOLDS:-3}"
 export NOT_CRAN="${NOT_CRAN:-true}"
 start=$(date +%s)
 Rscript -e 'pkgdown::build_site(preview = FALSE, install = FALSE, new_process = FALSE)'
+# The search index as a script as well: a page opened from file:// may load
+# a script but not fetch() a JSON file (pkgdown/assets/pkgdown.js loads it).
+Rscript -e 'writeLines(c("window.pkgdownSearchIndex = ", readLines("site/search.json", warn = FALSE), ";"), "site/search-index.js")'
 echo "site: built in $(( $(date +%s) - start )) s"
 Rscript tools/check-site.R site
