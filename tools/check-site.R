@@ -5,9 +5,10 @@
 #    site (the site must work offline; links to elsewhere are fine);
 # 3. the main pages run without a script error, both served over HTTP and
 #    opened from file://, with every outside host unreachable (as offline);
-# 4. the articles' "On this page" contents are filled, and the search box
-#    finds a known page and its result opens that page, over HTTP and from
-#    file:// (driven from a harness page holding the site in a frame);
+# 4. the articles' "On this page" contents are filled, code stays inside
+#    its boxes, and the search box finds pages and its first result opens
+#    its page, over HTTP (driven from a harness page holding the site in a
+#    frame) and from file:// (a copy of the page that searches by itself);
 # 5. the pages with the 3D viewer draw every widget, with pixels on the
 #    canvas, and the 2D animation plays.
 # Uses the browser helpers of the test suite (one copy).
@@ -64,9 +65,8 @@ if (!nzchar(chromium_path())) {
 }
 
 # -- the site served over HTTP, beside a harness page -------------------------
-# The harness lies beside the site (not in it), so that it shares the site's
-# origin over HTTP; from file:// chromium lets it reach into the frame only
-# with --allow-file-access-from-files.
+# The harness lies beside the site (not in it) and shares the site's origin
+# over HTTP, so that it may drive the page in its frame.
 root <- tempfile("site-check-")
 dir.create(root)
 invisible(file.symlink(site, file.path(root, "site")))
@@ -83,7 +83,7 @@ http_base <- sprintf("http://127.0.0.1:%d/site/", port)
 file_base <- paste0("file://", site, "/")
 # every host but this machine unreachable: the pages must not need one
 # (quoted: system2() passes the arguments through a shell)
-offline <- c(shQuote("--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1"), "--allow-file-access-from-files")
+offline <- shQuote("--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1")
 
 # -- 3: no script error on the main pages -------------------------------------
 console_errors <- function(url) {
@@ -104,7 +104,7 @@ for (base in c(http_base, file_base)) {
 message("site: no script errors on the main pages, over HTTP or from file://")
 
 # -- 4: contents and search ----------------------------------------------------
-# The harness loads a site page in a frame, counts its contents links, types
+# Over HTTP, the harness loads a site page in a frame, counts its contents links, types
 # `query` into the search box, waits for suggestions, picks the first and
 # reports where the frame went; it writes its findings as JSON into #result.
 harness <- function(page, query) {
@@ -155,28 +155,68 @@ run_harness <- function(base, harness_base, page, query) {
   if (identical(json, "pending") || !jsonlite::validate(json)) fail("the harness got no answer from ", base, page)
   jsonlite::fromJSON(json)
 }
-# the search must find this article by a word of its title
+# the search must find pages by a word of the site's titles
 query <- "hands"
-expect_page <- "articles/looking-at-hands.html"
-for (ways in list(c(http_base, sprintf("http://127.0.0.1:%d/", port)), c(file_base, paste0("file://", root, "/")))) {
-  for (pg in c("index.html", "articles/getting-started.html", "articles/reproduce-thesis.html")) {
-    r <- run_harness(ways[1], ways[2], pg, query)
-    if (!is.null(r$error)) fail("harness error on ", ways[1], pg, ": ", r$error)
-    if (r$overflow > 0 || isTRUE(r$page_wider)) {
-      fail(sprintf("%s%s: %d code boxes run past their edge%s", ways[1], pg, r$overflow,
-                   if (isTRUE(r$page_wider)) ", and the page is wider than the window" else ""))
-    }
-    if (grepl("^articles/", pg) && r$headings > 0 && r$toc < r$headings) {
-      fail(sprintf("%s%s: the contents list %d links for %d sections", ways[1], pg, r$toc, r$headings))
-    }
-    if (!isTRUE(r$suggestions > 0)) fail(sprintf("%s%s: search for '%s' found nothing", ways[1], pg, query))
-    # the frame moved on to the result, with the search words (?q=) to mark
-    if (is.null(r$opened) || !isTRUE(r$opened_main) || !grepl("q=", r$opened, fixed = TRUE)) {
-      fail(sprintf("%s%s: the first search result (%s) did not open a page", ways[1], pg, r$first))
-    }
-    message(sprintf("site: %s%s: %d contents links for %d sections, code inside its boxes; search '%s': %d results, the first opened %s",
-                    ways[1], pg, r$toc, r$headings, query, r$suggestions, sub("^.*/site/", "", r$opened)))
+for (pg in c("index.html", "articles/getting-started.html", "articles/reproduce-thesis.html")) {
+  r <- run_harness(http_base, sprintf("http://127.0.0.1:%d/", port), pg, query)
+  if (!is.null(r$error)) fail("harness error on ", pg, ": ", r$error)
+  if (r$overflow > 0 || isTRUE(r$page_wider)) {
+    fail(sprintf("%s: %d code boxes run past their edge%s", pg, r$overflow,
+                 if (isTRUE(r$page_wider)) ", and the page is wider than the window" else ""))
   }
+  if (grepl("^articles/", pg) && r$headings > 0 && r$toc < r$headings) {
+    fail(sprintf("%s: the contents list %d links for %d sections", pg, r$toc, r$headings))
+  }
+  if (!isTRUE(r$suggestions > 0)) fail(sprintf("%s: search for '%s' found nothing", pg, query))
+  # the frame moved on to the result, with the search words (?q=) to mark
+  if (is.null(r$opened) || !isTRUE(r$opened_main) || !grepl("q=", r$opened, fixed = TRUE)) {
+    fail(sprintf("%s: the first search result (%s) did not open a page", pg, r$first))
+  }
+  message(sprintf("site: over HTTP, %s: %d contents links for %d sections, code inside its boxes; search '%s': %d results, the first opened %s",
+                  pg, r$toc, r$headings, query, r$suggestions, sub("^.*/site/", "", r$opened)))
+}
+# From file:// a page may not reach into a frame (each file is its own
+# origin), and chromium's flag that would allow it would also allow the
+# fetch() that a reader's browser refuses there. So a copy of the page, in
+# its own folder, searches by itself: it types the query, records how many
+# results it got, and picks the first; a page that opens with the query's
+# words marked (mark.js, <mark data-markjs>) is the result page.
+file_search <- function(pg, query) {
+  copy <- file.path(site, dirname(pg), "zz-check-search.html")
+  on.exit(unlink(copy))
+  html <- read_text(file.path(site, pg))
+  script <- sprintf('<script>window.addEventListener("load", function() {
+  var $ = window.jQuery, input = $("#search-input");
+  input.trigger("focus");
+  setTimeout(function() {
+    input.val(%s).trigger("input");
+    setTimeout(function() {
+      var s = document.querySelectorAll(".aa-suggestion");
+      document.body.setAttribute("data-check-results", s.length);
+      if (s.length) $(s[0]).trigger("click");
+    }, 2000);
+  }, 1000);
+});</script></body>', jsonlite::toJSON(query, auto_unbox = TRUE))
+  writeLines(sub("</body>", script, html, fixed = TRUE), copy)
+  dom <- paste(browser_run(c(browser_args(8000), offline, "--dump-dom", shQuote(paste0("file://", copy))),
+                           stdout = TRUE, stderr = FALSE), collapse = "\n")
+  if (grepl("data-check-results=", dom, fixed = TRUE)) {
+    n <- sub('.*data-check-results="([0-9]+)".*', "\\1", dom)
+    fail(sprintf("from file://, %s: search for '%s' found %s results and opened none", pg, query, n))
+  }
+  if (!grepl("data-markjs", dom, fixed = TRUE)) fail(sprintf("from file://, %s: the search result page shows no marked words", pg))
+  title <- sub("(?s).*<title>([^<]*)</title>.*", "\\1", dom, perl = TRUE)
+  message(sprintf("site: from file://, %s: search '%s' opened \"%s\" with the words marked", pg, query, title))
+}
+for (pg in c("index.html", "articles/getting-started.html", "articles/reproduce-thesis.html")) file_search(pg, query)
+# and the contents, from file://
+for (pg in c("articles/getting-started.html", "articles/reproduce-thesis.html")) {
+  dom <- browser_dom(file.path(site, pg), 2000)  # (opened as a file:// URL)
+  toc <- lengths(regmatches(dom, gregexpr('class="nav-link" href="#', dom, fixed = TRUE)))
+  main <- sub("(?s).*<main(.*)</main>.*", "\\1", dom, perl = TRUE)
+  h2 <- lengths(regmatches(main, gregexpr("<h2(?![^>]*data-toc-skip)", main, perl = TRUE)))
+  if (h2 == 0 || toc < h2) fail(sprintf("from file://, %s: the contents list %d links for %d sections", pg, toc, h2))
+  message(sprintf("site: from file://, %s: %d contents links for %d sections", pg, toc, h2))
 }
 
 # -- 5: 3D widgets and the 2D animation ----------------------------------------
