@@ -94,12 +94,14 @@ console_errors <- function(url) {
   # errors and uncaught exceptions; console.log/info chatter is not an error
   grep("Uncaught|Error|error|Failed|net::ERR", lines, value = TRUE)
 }
-for (base in c(http_base, file_base)) {
-  for (pg in c("index.html", "reference/index.html", "articles/index.html", "news/index.html",
-               "articles/getting-started.html", "reference/hand_3d.html")) {
-    errs <- console_errors(paste0(base, pg))
-    if (length(errs)) fail("script errors on ", base, pg, ":\n  ", paste(utils::head(errs, 5), collapse = "\n  "))
-  }
+# (every page runs the same template scripts: one page of each kind over
+# HTTP, the home page and an article from file://; the pages with widgets
+# are checked for script errors below)
+for (url in c(paste0(http_base, c("index.html", "reference/index.html", "articles/index.html", "news/index.html",
+                                  "articles/getting-started.html")),
+              paste0(file_base, c("index.html", "articles/getting-started.html")))) {
+  errs <- console_errors(url)
+  if (length(errs)) fail("script errors on ", url, ":\n  ", paste(utils::head(errs, 5), collapse = "\n  "))
 }
 message("site: no script errors on the main pages, over HTTP or from file://")
 
@@ -157,7 +159,7 @@ run_harness <- function(base, harness_base, page, query) {
 }
 # the search must find pages by a word of the site's titles
 query <- "hands"
-for (pg in c("index.html", "articles/getting-started.html", "articles/reproduce-thesis.html")) {
+for (pg in c("index.html", "articles/reproduce-thesis.html")) {
   r <- run_harness(http_base, sprintf("http://127.0.0.1:%d/", port), pg, query)
   if (!is.null(r$error)) fail("harness error on ", pg, ": ", r$error)
   if (r$overflow > 0 || isTRUE(r$page_wider)) {
@@ -206,18 +208,15 @@ file_search <- function(pg, query) {
   }
   if (!grepl("data-markjs", dom, fixed = TRUE)) fail(sprintf("from file://, %s: the search result page shows no marked words", pg))
   title <- sub("(?s).*<title>([^<]*)</title>.*", "\\1", dom, perl = TRUE)
-  message(sprintf("site: from file://, %s: search '%s' opened \"%s\" with the words marked", pg, query, title))
-}
-for (pg in c("index.html", "articles/getting-started.html", "articles/reproduce-thesis.html")) file_search(pg, query)
-# and the contents, from file://
-for (pg in c("articles/getting-started.html", "articles/reproduce-thesis.html")) {
-  dom <- browser_dom(file.path(site, pg), 2000)  # (opened as a file:// URL)
+  # the result is an article: its contents, built from file:// too
   toc <- lengths(regmatches(dom, gregexpr('class="nav-link" href="#', dom, fixed = TRUE)))
   main <- sub("(?s).*<main(.*)</main>.*", "\\1", dom, perl = TRUE)
   h2 <- lengths(regmatches(main, gregexpr("<h2(?![^>]*data-toc-skip)", main, perl = TRUE)))
-  if (h2 == 0 || toc < h2) fail(sprintf("from file://, %s: the contents list %d links for %d sections", pg, toc, h2))
-  message(sprintf("site: from file://, %s: %d contents links for %d sections", pg, toc, h2))
+  if (h2 == 0 || toc < h2) fail(sprintf("from file://, %s: the contents list %d links for %d sections", title, toc, h2))
+  message(sprintf("site: from file://, %s: search '%s' opened \"%s\" with the words marked and %d contents links for %d sections",
+                  pg, query, title, toc, h2))
 }
+for (pg in c("index.html", "articles/reproduce-thesis.html")) file_search(pg, query)
 
 # -- 5: 3D widgets and the 2D animation ----------------------------------------
 # `height`: a window tall enough to hold the page's widgets, so the
