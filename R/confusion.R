@@ -356,8 +356,9 @@ autoplot.grasp_confusion <- function(object, type = "heatmap", normalise = FALSE
   # counts at 8 points with many types (a 33-type matrix in a figure 7 inches
   # wide leaves cells about 13 points across), 10 with few; at a figure's
   # natural size in a page that is 11 and 13 CSS pixels
-  text_size <- (if (length(lab) > 15) 8 else 10) / ggplot2::.pt
-  ggplot2::ggplot(d, ggplot2::aes(x = .data$truth, y = .data$predicted)) +
+  many <- length(lab) > 15
+  text_size <- (if (many) 8 else 10) / ggplot2::.pt
+  p <- ggplot2::ggplot(d, ggplot2::aes(x = .data$truth, y = .data$predicted)) +
     ggplot2::geom_tile(ggplot2::aes(fill = .data$fill), colour = "white", linewidth = 0.2) +
     ggplot2::geom_text(ggplot2::aes(label = .data$label), size = text_size) +
     ggplot2::scale_fill_gradient(low = "grey97", high = "steelblue",
@@ -367,6 +368,12 @@ autoplot.grasp_confusion <- function(object, type = "heatmap", normalise = FALSE
     ggplot2::theme_minimal() +
     ggplot2::theme(panel.grid = ggplot2::element_blank(),
                    plot.caption = ggplot2::element_text(hjust = 0, size = 9, colour = "grey30"))
+  if (!many) return(p)
+  # many types: the colour bar below the matrix, so that the matrix has the
+  # figure's whole width and a three-digit count fits its cell
+  p + ggplot2::guides(fill = ggplot2::guide_colourbar(barwidth = ggplot2::unit(10, "lines"),
+                                                      title.position = "top")) +
+    ggplot2::theme(legend.position = "bottom")
 }
 
 # Key to the short axis labels (Feix ids or abbreviations), wrapped into a

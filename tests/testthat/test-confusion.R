@@ -120,6 +120,8 @@ test_that("autoplot's counts and key are large enough to read with 33 types", {
   # 8 points and more (the old 2 mm was under 6 points)
   expect_gte(text_layer$aes_params$size * ggplot2::.pt, 8 - 1e-9)
   expect_gte(p$theme$plot.caption$size, 9)
+  # the colour bar below, leaving the matrix the figure's width
+  expect_identical(p$theme$legend.position, "bottom")
   # the key names every type once, by its Feix id
   key <- strsplit(p$labels$caption, "\n| \u00b7 ")[[1]]
   expect_length(key, 33L)
