@@ -1,5 +1,5 @@
-# How a thesis table prints. thesis_table() returns numbers (shares as
-# fractions, so that they can be computed with); a person reading the printed
+# How the tables people read print: thesis_table() and summary(<grasp_evaluation>)
+# return numbers (shares as fractions, so that they can be computed with); a person reading the printed
 # table reads shares as percentages and needs no more decimals than the
 # thesis printed. The data frame itself is unchanged: only print() formats.
 
@@ -36,4 +36,24 @@ unclass_thesis_table <- function(x) {
   attr(x, "thesis_table") <- NULL
   class(x) <- setdiff(class(x), "thesis_table")
   x
+}
+
+# summary(<grasp_evaluation>): every metric is a share (accuracy, recall,
+# precision), held out beside in-sample, printed as percentages.
+#' @export
+print.grasp_evaluation_summary <- function(x, ...) {
+  out <- as.data.frame(x[c("metric", "class", "held_out", "in_sample")])
+  class(out) <- "data.frame"
+  out$class[is.na(out$class)] <- ""
+  # words left-aligned (padded), percentages right-aligned
+  for (i in 1:2) {
+    w <- max(nchar(c(names(out)[i], out[[i]])))
+    out[[i]] <- formatC(out[[i]], width = -w)
+    names(out)[i] <- formatC(names(out)[i], width = -w)
+  }
+  for (nm in c("held_out", "in_sample")) {
+    out[[nm]] <- ifelse(is.na(out[[nm]]), "-", sprintf("%.1f%%", 100 * out[[nm]]))
+  }
+  print(out, row.names = FALSE, right = TRUE, ...)
+  invisible(x)
 }
