@@ -346,8 +346,12 @@ autoplot.grasp_confusion <- function(object, type = "heatmap", normalise = FALSE
   d$share <- ifelse(col_tot[as.character(d$truth)] > 0, d$n / col_tot[as.character(d$truth)], 0)
   d$fill <- if (normalise) d$share else d$n
   d$label <- ifelse(d$n > 0, as.character(d$n), "")
-  text_size <- if (length(lab) > 15) 2 else 3.5
-  ggplot2::ggplot(d, ggplot2::aes(x = .data$truth, y = .data$predicted)) +
+  # counts at 8 points with many types (a 33-type matrix in a figure 7 inches
+  # wide leaves cells about 13 points across), 10 with few; at a figure's
+  # natural size in a page that is 11 and 13 CSS pixels
+  many <- length(lab) > 15
+  text_size <- (if (many) 8 else 10) / ggplot2::.pt
+  p <- ggplot2::ggplot(d, ggplot2::aes(x = .data$truth, y = .data$predicted)) +
     ggplot2::geom_tile(ggplot2::aes(fill = .data$fill), colour = "white", linewidth = 0.2) +
     ggplot2::geom_text(ggplot2::aes(label = .data$label), size = text_size) +
     ggplot2::scale_fill_gradient(low = "grey97", high = "steelblue",
@@ -356,7 +360,13 @@ autoplot.grasp_confusion <- function(object, type = "heatmap", normalise = FALSE
                   caption = confusion_key(object$levels, lab)) +
     ggplot2::theme_minimal() +
     ggplot2::theme(panel.grid = ggplot2::element_blank(),
-                   plot.caption = ggplot2::element_text(hjust = 0, size = 7, colour = "grey30"))
+                   plot.caption = ggplot2::element_text(hjust = 0, size = 9, colour = "grey30"))
+  if (!many) return(p)
+  # many types: the colour bar below the matrix, so that the matrix has the
+  # figure's whole width and a three-digit count fits its cell
+  p + ggplot2::guides(fill = ggplot2::guide_colourbar(barwidth = ggplot2::unit(10, "lines"),
+                                                      title.position = "top")) +
+    ggplot2::theme(legend.position = "bottom")
 }
 
 # Key to the short axis labels (Feix ids or abbreviations), wrapped into a
@@ -364,8 +374,8 @@ autoplot.grasp_confusion <- function(object, type = "heatmap", normalise = FALSE
 confusion_key <- function(levels, lab) {
   if (identical(as.character(levels), as.character(lab))) return(NULL)
   key <- paste(lab, levels)
-  # pack whole entries into lines of at most ~90 characters: at the caption's
-  # 7 points that is about 5.5 inches, narrower than the figures it goes in
-  line <- cumsum(nchar(key) + 3L) %/% 90L
+  # pack whole entries into lines of at most ~80 characters: at the caption's
+  # 9 points that is about 6 inches, narrower than the figures it goes in
+  line <- cumsum(nchar(key) + 3L) %/% 80L
   paste(vapply(split(key, line), paste, character(1), collapse = " \u00b7 "), collapse = "\n")
 }

@@ -111,11 +111,17 @@ reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, los
   html <- withCallingHandlers(
     rmarkdown::render(input, output_file = "reproduce-thesis.html", output_dir = output_dir,
                       intermediates_dir = work, knit_root_dir = work, params = params,
-                      envir = new.env(parent = globalenv()), quiet = quiet),
+                      envir = report_env(), quiet = quiet),
     handmotion_report_step = function(cnd) bar$step(cnd$label))
   bar$done(html)
   html
 }
+
+# Where the report is knitted: a fresh environment whose parent is the
+# package's namespace, so that the report calls its helpers
+# (R/report-helpers.R) and the package's internal functions by name, with
+# the user's attached packages still in reach further up.
+report_env <- function() new.env(parent = asNamespace("handmotion"))
 
 # The report's settings: from render() params (reproduce_thesis()) or, when
 # knitted without params (the vignette), from environment variables, else the

@@ -36,7 +36,9 @@
 #'   `fit` (a `fit_grasp_classifier(method = "last_frame")` result) and `pcs` (which cumulative
 #'   proportions to show; default the first five, as the thesis classifies
 #'   with five PCs).
-#' @return A data frame.
+#' @return A data frame (class `thesis_table`): shares (recalls, the
+#'   cumulative proportions of Table 5.7) are stored as fractions and printed
+#'   as percentages, other decimals printed to one place.
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = c(9, 22), objects = 2, trials = 2, seed = 1)
@@ -71,7 +73,10 @@ thesis_table <- function(id = c("5.1", "5.2", "5.3", "5.3 claims", "5.6", "5.7",
       check_feix_labels(factor(lab), sprintf("Table %s of the thesis", id), arg = a, call = call)
     }
   }
-  do.call(build, args)
+  out <- do.call(build, args)
+  # shares print as percentages (the data keep the fractions)
+  percent <- grep("^(thesis_)?(recall(_held_out)?|pc[0-9]+)$", names(out), value = TRUE)
+  new_thesis_table(out, id, percent = percent, digits = 1L)
 }
 
 # The class labels an input of a thesis table holds (NULL when it has none).

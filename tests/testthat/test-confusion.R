@@ -111,3 +111,19 @@ test_that("autoplot draws tiles and labels for every cell", {
   expect_equal(pn$data$fill[pn$data$predicted == "A" & pn$data$truth == "A"], 0.5)
   expect_error(ggplot2::autoplot(cm, type = "mosaic"))
 })
+
+test_that("autoplot's counts and key are large enough to read with 33 types", {
+  lv <- feix_taxonomy$name
+  cm <- grasp_confusion(lv, lv, levels = lv)
+  p <- ggplot2::autoplot(cm)
+  text_layer <- p$layers[[which(vapply(p$layers, function(l) inherits(l$geom, "GeomText"), logical(1)))]]
+  # 8 points and more (the old 2 mm was under 6 points)
+  expect_gte(text_layer$aes_params$size * ggplot2::.pt, 8 - 1e-9)
+  expect_gte(p$theme$plot.caption$size, 9)
+  # the colour bar below, leaving the matrix the figure's width
+  expect_identical(p$theme$legend.position, "bottom")
+  # the key names every type once, by its Feix id
+  key <- strsplit(p$labels$caption, "\n| \u00b7 ")[[1]]
+  expect_length(key, 33L)
+  expect_true(all(nchar(strsplit(p$labels$caption, "\n")[[1]]) <= 90))
+})

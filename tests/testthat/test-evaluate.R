@@ -21,6 +21,10 @@ test_that("LOSO on a planted design: held-out accuracy <= in-sample, bookkeeping
   expect_named(s, c("metric", "class", "held_out", "in_sample"))
   expect_equal(s$held_out[s$metric == "accuracy"], ev$accuracy[["held_out"]])
   expect_equal(s$in_sample[s$metric == "accuracy"], ev$accuracy[["in_sample"]])
+  # printed for a person: percentages, not raw fractions
+  out <- capture.output(print(s))
+  expect_true(any(grepl(sprintf("%.1f%%", 100 * ev$accuracy[["held_out"]]), out, fixed = TRUE)))
+  expect_false(any(grepl("\\b0\\.[0-9]{4,}", out)))
 })
 
 test_that("well-separated types are recovered held-out too, and the result is reproducible", {

@@ -77,6 +77,18 @@ test_that("the report renders on a tiny design with its tables and figures", {
   expect_true(has("reproduced by construction"))
   expect_true(has("What the twin reproduces, and what it does not"))
   expect_false(has("main job"))
+  # written for a reader of the report: no simulator setting by its code
+  # name, no file of the source repository that an installed package lacks
+  for (internal in c("data-raw", "grasp_variability", "aperture_variability", "calibrate-simulator", ":::")) {
+    expect_false(grepl(internal, text, fixed = TRUE), label = internal)
+  }
+  # a number beside a percentage reads as two cells: every cell holding a
+  # percentage or a count is right-aligned
+  # (the tables of results: not the software versions at the end)
+  results <- sub('id="software".*$', "", page)
+  cells <- regmatches(results, gregexpr("<td[^>]*>\\s*[0-9][0-9,]*(\\.[0-9]+)?%?\\s*</td>", results))[[1]]
+  expect_gt(length(cells), 20)
+  expect_true(all(grepl('text-align: right|align="right"', cells)))
 
   tables <- c("table_5_1", "table_5_2", "table_5_3", "table_5_3_claims", "table_5_6", "table_5_7",
               "table_5_8", "accuracy", "timings", "figure_5_3_sign_flips", "classifiers_held_out",
@@ -117,6 +129,40 @@ test_that("the report renders on a tiny design with its tables and figures", {
   tim <- utils::read.csv(file.path(out, "tables", "timings.csv"))
   expect_true(all(c("fit the grasp models", "held-out evaluation, FPCA", "whole report") %in% tim$step))
   expect_true(all(tim$seconds >= 0))
+})
+
+test_that("the report template calls the package's functions by name, not through :::", {
+  rmd <- system.file("report", "reproduce-thesis.Rmd", package = "handmotion")
+  # (a line starting ":::" is a pandoc fenced div, not R)
+  expect_false(any(grepl("[[:alnum:]_.]:::[[:alpha:]_.]", readLines(rmd))))
+})
+
+test_that("report tables right-align numbers, also when they carry marks", {
+  d <- data.frame(type = c("Tripod", "Lateral"), n = c(270L, 268L), recall = c("31.9%", "-"),
+                  thesis = c("\u2265245", "61?"), pcs = c("0.64 / 0.54", "0.70 / 0.61"))
+  expect_equal(report_align(d), c("l", "r", "r", "r", "r"))
+})
+
+test_that("Appendix A's parts share one scale, so hands are drawn the same size in each", {
+  small <- ggplot2::ggplot(data.frame(x = c(0, 1), y = c(0, 1)), ggplot2::aes(x, y)) +
+    ggplot2::geom_point() + ggplot2::coord_equal()
+  tall <- ggplot2::ggplot(data.frame(x = c(-1, 1), y = c(0, 3)), ggplot2::aes(x, y)) +
+    ggplot2::geom_point() + ggplot2::coord_equal()
+  parts <- report_same_scale(list(small, tall))
+  ranges <- lapply(parts, function(p) ggplot2::ggplot_build(p)$layout$panel_params[[1]][c("x.range", "y.range")])
+  expect_equal(ranges[[1]], ranges[[2]])
+  # the union of what each part needs: nothing is cut off
+  expect_true(ranges[[1]]$x.range[1] <= -1 && ranges[[1]]$x.range[2] >= 1)
+  expect_true(ranges[[1]]$y.range[1] <= 0 && ranges[[1]]$y.range[2] >= 3)
+})
+
+test_that("the report's confusion matrices write counts and key at 9 points or more", {
+  lv <- feix_taxonomy$name
+  p <- report_confusion_plot(grasp_confusion(lv, rev(lv), levels = lv), "x")
+  text_layer <- p$layers[[which(vapply(p$layers, function(l) inherits(l$geom, "GeomText"), logical(1)))]]
+  expect_gte(text_layer$aes_params$size * ggplot2::.pt, 9 - 1e-9)
+  expect_gte(p$theme$plot.caption$size, 9)
+  expect_gte(p$theme$axis.text$size, 9)
 })
 
 test_that("the vignette is a thin wrapper around the report template", {
