@@ -21,20 +21,22 @@ py_call <- function(f, args) {
 # A grasps object flattened for the bridge: every recording's values in one
 # numeric vector (column-major, recording after recording), which crosses rpy2
 # far faster than a list of matrices; factors of meta become character, the
-# label levels travel separately so their order survives.
+# label levels travel separately so their order survives, and so do the
+# recordings' switch channels (GraspDB14, for segment_by_switch()).
 py_grasps_out <- function(x) {
   meta <- x$meta
   for (nm in names(meta)) if (is.factor(meta[[nm]])) meta[[nm]] <- as.character(meta[[nm]])
   list(values = as.double(unlist(lapply(x$recordings, as.vector), use.names = FALSE)),
        n_frames = as.integer(x$meta$n_frames), meta = meta, dofs = x$dofs,
        rate = x$rate, unit = x$unit, levels = levels(x$meta$grasp),
-       glove_name = x$glove$name, glove = x$glove$channels)
+       glove_name = x$glove$name, glove = x$glove$channels,
+       switch = lapply(x$recordings, function(r) attr(r, "switch")))
 }
 
 # The inverse of py_grasps_out(): rebuilt through grasps(), so Python input is
 # validated by the same constructor as R input.
 py_grasps_in <- function(values, n_frames, meta, dofs, rate, unit, levels = NULL, glove = NULL,
-                         glove_name = NULL) {
+                         glove_name = NULL, switch = NULL) {
   if (!is.null(levels) && "grasp" %in% names(meta)) meta$grasp <- factor(meta$grasp, levels = levels)
   if (is.data.frame(glove)) glove <- glove_profile(glove, name = glove_name)
   p <- length(dofs)
@@ -42,7 +44,15 @@ py_grasps_in <- function(values, n_frames, meta, dofs, rate, unit, levels = NULL
   starts <- ends - n_frames * p + 1
   recs <- lapply(seq_along(n_frames), function(i)
     matrix(values[seq.int(starts[i], length.out = n_frames[i] * p)], n_frames[i], p))
-  grasps(recs, meta = meta, dofs = dofs, rate = rate, unit = unit, glove = glove)
+  x <- grasps(recs, meta = meta, dofs = dofs, rate = rate, unit = unit, glove = glove)
+  # a recording's switch states, one per frame (NULL: it has none)
+  for (i in seq_along(switch)) {
+    if (!is.null(switch[[i]])) {
+      check_switch(switch[[i]], n = n_frames[i], call = rlang::caller_env())
+      attr(x$recordings[[i]], "switch") <- as.integer(switch[[i]])
+    }
+  }
+  x
 }
 
 # The DoF names grasps() gives p unnamed columns (asked by Python's Grasps(), so

@@ -56,6 +56,22 @@ test_that("py_grasps_out() and py_grasps_in() are inverse, keeping label levels,
   expect_identical(c(back$rate, back$unit), c(x$rate, x$unit))
 })
 
+test_that("the recordings' switch states cross the bridge both ways", {
+  g <- read_graspdb14(system.file("extdata", "graspdb14", "00_calib-rad-su01.txt", package = "handmotion"))
+  flat <- py_grasps_out(g)
+  expect_identical(flat$switch[[1]], attr(g$recordings[[1]], "switch"))
+  back <- py_grasps_in(flat$values, flat$n_frames, flat$meta[setdiff(names(flat$meta), "n_frames")],
+                       flat$dofs, flat$rate, flat$unit, levels = flat$levels, switch = flat$switch)
+  expect_identical(segment_by_switch(back)$meta$n_frames, segment_by_switch(g)$meta$n_frames)
+  # one state per frame, or a classed error
+  expect_error(py_grasps_in(flat$values, flat$n_frames, flat$meta[setdiff(names(flat$meta), "n_frames")],
+                            flat$dofs, flat$rate, flat$unit, switch = list(flat$switch[[1]][-1])),
+               class = "handmotion_error_bad_input")
+  # recordings without a switch stay without one
+  x <- simulate_grasps(subjects = 1, grasps = 17, objects = 1, trials = 1, seed = 1)
+  expect_null(py_grasps_out(x)$switch[[1]])
+})
+
 test_that("py_grasps_in() validates through grasps()", {
   expect_error(py_grasps_in(c(1, NaN), 1L, data.frame(id = "a"), c("a", "b"), 50, "deg"),
                class = "handmotion_error_bad_input")
@@ -70,4 +86,14 @@ test_that("the small helpers answer what Python asks", {
   dep <- py_dependence_matrix(ms[["Power Sphere"]])
   expect_identical(dim(dep), c(16L, 16L))
   expect_equal(unname(diag(dep)), rep(1, 16))
+})
+
+test_that("py_widget_html() gives the widget as one self-contained page", {
+  skip_if_not(rmarkdown::pandoc_available("1.12.3"), "pandoc is not available")
+  x <- simulate_grasps(subjects = 1, grasps = 17, objects = 1, trials = 1, seed = 1)
+  page <- py_widget_html(hand_3d(x))
+  expect_length(page, 1L)
+  expect_match(page, "<html", fixed = TRUE)
+  # self-contained: no script is loaded from a file beside the page
+  expect_false(grepl("<script src=\"(?!data:)[^\"]*\\.js\"", page, perl = TRUE))
 })

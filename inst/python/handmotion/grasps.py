@@ -112,6 +112,8 @@ class Grasps:
         self.glove = glove
         self.glove_name = glove if isinstance(glove, str) else None
         self.levels = None
+        # per recording, the 0/1 switch states of a GraspDB14 file (None: no switch)
+        self.switch = None
 
     # ------------------------------------------------------------ container protocol
     def __len__(self):
@@ -149,6 +151,8 @@ class Grasps:
         out.glove = getattr(self, "glove", None)
         out.glove_name = getattr(self, "glove_name", None)
         out.levels = getattr(self, "levels", None)
+        sw = getattr(self, "switch", None)
+        out.switch = None if sw is None else [sw[i] for i in idx]
         return out
 
     def __repr__(self):
@@ -221,6 +225,9 @@ class Grasps:
             extra = dict(glove=glove)
         if getattr(self, "levels", None):
             extra["levels"] = list(self.levels)
+        sw = getattr(self, "switch", None)
+        if sw is not None and any(v is not None for v in sw):
+            extra["switch"] = [None if v is None else np.asarray(v, dtype=np.int64) for v in sw]
         res = call(internal("py_grasps_in"), values=values,
                    n_frames=np.asarray(self.meta["n_frames"], dtype=np.int64),
                    meta=df_to_r(meta), dofs=list(self.dofs), rate=self.rate, unit=self.unit, **extra)
@@ -246,6 +253,8 @@ class Grasps:
         out.levels = None if lv is None or lv == r().NULL else [str(v) for v in lv]
         out.glove = df_to_py(flat.rx2("glove"))
         out.glove_name = str(flat.rx2("glove_name")[0])
+        sw = [None if v == r().NULL else r_array(v, dtype=np.int64) for v in flat.rx2("switch")]
+        out.switch = sw if any(v is not None for v in sw) else None
         return out
 
 
