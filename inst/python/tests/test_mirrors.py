@@ -76,3 +76,18 @@ def test_handover_error(hm, small):
     assert err == pytest.approx(2.0, abs=1e-9)
     by = hm.handover_error(small[0:2], noisy, by="recording")
     assert len(by) == 2 and np.allclose(by["error"], 2.0)
+
+
+def test_single_model_and_animation(hm, small, tmp_path):
+    one = small[small.meta["grasp"] == "Tripod"]
+    m = hm.fit_grasp_model(one, seed=1)
+    s = m.summary()
+    assert len(s) >= 1
+    x = hm.generate(m, n=2, seed=2)
+    assert len(x) == 2 and x.dofs == small.dofs
+    f = hm.write_hand_animation(x[0], tmp_path / "a.gif", max_frames=5, width=80, height=80)
+    assert (tmp_path / "a.gif").stat().st_size > 0 and f.endswith("a.gif")
+    with pytest.raises(hm.HandmotionError):
+        hm.write_hand_animation(x[0], tmp_path / "a.gif", max_frames=5, width=80, height=80)
+    with pytest.raises(hm.BadInputError):
+        hm.reproduce_thesis(tmp_path / "out", subjects=1)
