@@ -8,37 +8,99 @@ results are identical to R's for the same seed.
 >>> g = hm.simulate_grasps(subjects=3, seed=1)
 >>> m = hm.fit_grasp_models(g, seed=1)
 >>> x = hm.generate(m, grasp="Power Sphere", n=10, seed=2)
+
+Python = R
+----------
+Every user verb of the R package's exports has a Python function of the same name
+and argument names (a test compares this list with R's NAMESPACE):
+
+* data: ``simulate_grasps``, ``grasps`` (the :class:`Grasps` class), ``as_grasps``,
+  ``segment_by_switch``
+* your own glove: ``glove_profile``, ``read_glove``, ``calibrate``,
+  ``calibration_pose_angles``, ``find_motion``, ``trim_motion``, ``cut_motion``
+* formats: ``read_hust``, ``write_hust``, ``read_graspdb14``, ``write_graspdb14``,
+  ``read_failures``, ``graspdb14_to_hust``, ``read_skeleton``, ``write_skeleton``,
+  ``read_bvh``, ``write_bvh``
+* hands: ``hand_skeleton``, ``forward_kinematics``
+* models: ``fit_grasp_model``, ``fit_grasp_models``, ``project``
+* generation: ``generate``, ``evaluate_generation``
+* classification: ``fit_grasp_classifier``, ``classify``, ``fit_grasp_recognizer``,
+  ``start_recognition``; R's ``predict()`` is the ``predict()`` method of every classifier
+  handle, R's ``update()`` of a stream is ``RecognitionStream.update()``
+* evaluation: ``evaluate_loso``, ``evaluate_early_recognition``, ``grasp_confusion``
+* the thesis: ``reproduce_thesis``, ``thesis_table``
+* hand-over: ``select_markers``, ``fit_handover``, ``handover_error``; R's ``predict()``
+  (reconstruction) is ``HandoverModel.predict()``
+* pictures: ``hand_3d``, ``write_hand_animation``
+
+Deliberately not mirrored: ``autoplot`` (ggplot2 graphics belong to R; every result
+is a DataFrame or numpy array to plot in Python), ``hand_3d_output`` and
+``render_hand_3d`` (Shiny bindings, R-only) and ``joint_map`` (R's mapping of DoFs to
+skeleton joints, used inside forward_kinematics()). One Python-only helper:
+``joint_names`` (the joint order of ``forward_kinematics`` arrays).
+
+Names R removed before its first release (``?handmotion-renamed``) are not kept as
+aliases: asking for one raises an ``AttributeError`` that names the replacement.
 """
 
-from .api import (calibrate, calibration_pose_angles, cut_motion, find_motion, glove_profile, read_glove,
-                  trim_motion, classify, evaluate_early_recognition, evaluate_generation, evaluate_loso, fit_grasp_classifier,
-                  fit_grasp_models, fit_grasp_recognizer, fit_last_frame_pca, fit_weighted_fpca, fit_handover, forward_kinematics, generate,
-                  hand_skeleton, joint_names, rank_markers, read_graspdb14, read_hust,
-                  read_skeleton, reconstruct, select_markers, simulate_grasps, table_5_1, thesis_table,
-                  table_5_2, table_5_3, table_5_6, table_5_7, table_5_8, write_bvh,
-                  write_graspdb14, write_hust)
+from .api import (calibrate, calibration_pose_angles, classify, cut_motion, evaluate_early_recognition,
+                  evaluate_generation, evaluate_loso, find_motion, fit_grasp_classifier, fit_grasp_model,
+                  fit_grasp_models, fit_grasp_recognizer, fit_handover, forward_kinematics, generate, glove_profile,
+                  grasp_confusion, graspdb14_to_hust, hand_skeleton, handover_error, joint_names, read_bvh,
+                  read_failures, read_glove, read_graspdb14, read_hust, read_skeleton, reproduce_thesis,
+                  segment_by_switch, select_markers, simulate_grasps, start_recognition, thesis_table, trim_motion,
+                  write_bvh, write_graspdb14, write_hand_animation, write_hust, write_skeleton)
 from .errors import (BadFileError, BadInputError, BadRecordingError, BadSkeletonError,
                      DegenerateDataWarning, FitFailedError, HandmotionError, HandmotionWarning, RError,
                      UnknownGraspError)
-from .grasps import Grasps
+from .grasps import Grasps, as_grasps
+from .handles import (GraspClassifier, GraspModel, GraspModels, GraspRecognizer, HandoverModel, RecognitionStream,
+                      RHandle, Skeleton, project)
 from .view import HandView, hand_3d
-from .handles import (GraspClassifier, GraspModels, GraspRecognizer, HandoverModel, RecognitionStream, RHandle,
-                      Skeleton)
 
 __version__ = "0.1.0"
 
+# R's grasps() constructor is the Grasps class
+grasps = Grasps
+
+# The names R removed (R/renamed.R, ?handmotion-renamed) that this package used to carry.
+_RENAMED = {
+    "fit_last_frame_pca": 'fit_grasp_classifier(x, method="last_frame", k=...)',
+    "fit_weighted_fpca": 'fit_grasp_classifier(x, method="weighted_fpca", models=..., time=...)',
+    "rank_markers": "select_markers(x, n): the n top-ranked markers",
+    "reconstruct": "model.predict(query) on the HandoverModel from fit_handover()",
+    "table_5_1": 'thesis_table("5.1", models=...)',
+    "table_5_2": 'thesis_table("5.2", models=...)',
+    "table_5_3": 'thesis_table("5.3", classification=...)',
+    "table_5_6": 'thesis_table("5.6", confusion=...)',
+    "table_5_7": 'thesis_table("5.7", fit=..., pcs=...)',
+    "table_5_8": 'thesis_table("5.8", confusion=..., held_out=...)',
+}
+
+
+def __getattr__(name):
+    if name in _RENAMED:
+        raise AttributeError(f"handmotion.{name}() was removed (as in R, see ?handmotion-renamed); "
+                             f"use {_RENAMED[name]}")
+    raise AttributeError(f"module 'handmotion' has no attribute {name!r}")
+
+
 __all__ = [
-    "Grasps", "GraspModels", "GraspClassifier", "GraspRecognizer", "RecognitionStream", "HandoverModel",
-    "RHandle", "Skeleton",
+    "Grasps", "grasps", "as_grasps", "GraspModel", "GraspModels", "GraspClassifier", "GraspRecognizer",
+    "RecognitionStream", "HandoverModel", "RHandle", "Skeleton",
     "HandmotionError", "BadInputError", "BadRecordingError", "UnknownGraspError", "BadFileError",
     "BadSkeletonError", "FitFailedError", "RError", "HandmotionWarning", "DegenerateDataWarning",
-    "simulate_grasps", "read_hust", "write_hust", "read_graspdb14", "write_graspdb14",
-    "read_skeleton", "hand_skeleton", "forward_kinematics", "joint_names", "write_bvh",
-    "fit_grasp_models", "generate", "evaluate_generation", "classify", "evaluate_loso",
-    "fit_grasp_classifier", "fit_grasp_recognizer", "evaluate_early_recognition",
-    "thesis_table", "table_5_1", "table_5_2", "table_5_3", "table_5_6", "table_5_7", "table_5_8",
-    "select_markers", "fit_handover", "reconstruct",
-    "hand_3d", "HandView",
+    "simulate_grasps", "segment_by_switch",
     "glove_profile", "read_glove", "calibrate", "calibration_pose_angles", "find_motion", "trim_motion",
     "cut_motion",
+    "read_hust", "write_hust", "read_graspdb14", "write_graspdb14", "read_failures", "graspdb14_to_hust",
+    "read_skeleton", "write_skeleton", "read_bvh", "write_bvh",
+    "hand_skeleton", "forward_kinematics", "joint_names",
+    "fit_grasp_model", "fit_grasp_models", "project",
+    "generate", "evaluate_generation",
+    "fit_grasp_classifier", "classify", "fit_grasp_recognizer", "start_recognition",
+    "evaluate_loso", "evaluate_early_recognition", "grasp_confusion",
+    "reproduce_thesis", "thesis_table",
+    "select_markers", "fit_handover", "handover_error",
+    "hand_3d", "HandView", "write_hand_animation",
 ]

@@ -1,10 +1,16 @@
 """The one place that talks to R.
 
-R is started lazily on first use, the handmotion R package is loaded, and a few
-private R helpers are defined in their own environment: a caller that turns every
-R condition into a value (so the Python side can raise a classed exception), and
-flat encoders/decoders for the ``grasps`` class (one numeric vector for all
-recordings, which crosses the bridge far faster than a list of matrices).
+R is started lazily on first use and the handmotion R package is loaded. The R
+side of the bridge lives in the R package itself (``R/python-bridge.R``, tested
+by testthat): ``handmotion:::py_call()`` turns every R condition into a value (so
+the Python side can raise a classed exception), ``py_grasps_out()`` and
+``py_grasps_in()`` flatten the ``grasps`` class into one numeric vector for all
+recordings (which crosses the bridge far faster than a list of matrices).
+
+This module imports no other module of the package but :mod:`.errors`: objects
+that know their R form have a ``to_r()`` method, and the modules that define
+Python twins of R classes register their converters with :func:`register_r_class`,
+so the dependencies run one way (``_bridge`` <- ``grasps`` <- ``handles`` <- ``api``).
 """
 
 import warnings
@@ -14,49 +20,15 @@ import pandas as pd
 
 from .errors import BadInputError, from_r_condition, from_r_warning
 
-_R_HELPERS = r"""
-local({
-  env <- new.env()
-  env$call <- function(f, args) {
-    fun <- if (is.function(f)) f else getExportedValue("handmotion", f)
-    # R's warnings are collected (not printed) and raised in Python
-    warned <- list()
-    keep <- function(w) {
-      warned[[length(warned) + 1L]] <<- list(message = cli::ansi_strip(conditionMessage(w)),
-                                             class = class(w))
-      invokeRestart("muffleWarning")
-    }
-    tryCatch(list(ok = TRUE, value = withCallingHandlers(do.call(fun, args), warning = keep),
-                  warnings = warned),
-             error = function(e) list(ok = FALSE,
-                                      message = cli::ansi_strip(conditionMessage(e)),
-                                      class = class(e), warnings = warned))
-  }
-  env$grasps_out <- function(x) {
-    meta <- x$meta
-    for (nm in names(meta)) if (is.factor(meta[[nm]])) meta[[nm]] <- as.character(meta[[nm]])
-    list(values = as.double(unlist(lapply(x$recordings, as.vector), use.names = FALSE)),
-         n_frames = as.integer(x$meta$n_frames), meta = meta, dofs = x$dofs,
-         rate = x$rate, unit = x$unit, levels = levels(x$meta$grasp),
-         glove_name = x$glove$name, glove = x$glove$channels)
-  }
-  env$grasps_in <- function(values, n_frames, meta, dofs, rate, unit, levels = NULL, glove = NULL,
-                            glove_name = NULL) {
-    # the labels keep the order of their levels across the bridge
-    if (!is.null(levels) && "grasp" %in% names(meta)) meta$grasp <- factor(meta$grasp, levels = levels)
-    if (is.data.frame(glove)) glove <- handmotion::glove_profile(glove, name = glove_name)
-    p <- length(dofs)
-    ends <- cumsum(n_frames * p)
-    starts <- ends - n_frames * p + 1
-    recs <- lapply(seq_along(n_frames), function(i)
-      matrix(values[seq.int(starts[i], length.out = n_frames[i] * p)], n_frames[i], p))
-    handmotion::grasps(recs, meta = meta, dofs = dofs, rate = rate, unit = unit, glove = glove)
-  }
-  env
-})
-"""
-
 _state = {}
+
+# R class -> a callable that turns such an R object into its Python twin (filled by grasps.py)
+_R_CLASSES = {}
+
+
+def register_r_class(r_class, convert):
+    """Convert R objects of class ``r_class`` with ``convert(robj)`` in :func:`r_to_py`."""
+    _R_CLASSES[r_class] = convert
 
 
 def r():
@@ -66,13 +38,15 @@ def r():
 
         ro.r("suppressPackageStartupMessages(library(handmotion))")
         _state["ro"] = ro
-        _state["helpers"] = ro.r(_R_HELPERS)
     return _state["ro"]
 
 
-def helpers():
-    r()
-    return _state["helpers"]
+def internal(name):
+    """The handmotion R package's internal function ``name`` (one of R/python-bridge.R's ``py_*``)."""
+    key = "internal:" + name
+    if key not in _state:
+        _state[key] = r().r(f"handmotion:::{name}")
+    return _state[key]
 
 
 # ---------------------------------------------------------------- conversion
@@ -81,15 +55,12 @@ def helpers():
 def py_to_r(value):
     """Convert a Python value to an R object (None -> NULL)."""
     ro = r()
-    from .grasps import Grasps
-    from .handles import RHandle
-
     if value is None:
         return ro.NULL
-    if isinstance(value, RHandle):
-        return value.robj
-    if isinstance(value, Grasps):
-        return value.to_r()
+    to_r = getattr(value, "to_r", None)
+    if callable(to_r) and not isinstance(value, pd.DataFrame):
+        # a Grasps or a handle on an R object
+        return to_r()
     if isinstance(value, pd.DataFrame):
         return df_to_r(value)
     if isinstance(value, bool):
@@ -173,10 +144,9 @@ def r_to_py(obj):
     if isinstance(obj, NULLType):
         return None
     rclass = list(ro.r["class"](obj))
-    if "grasps" in rclass:
-        from .grasps import Grasps
-
-        return Grasps.from_r(obj)
+    for cls in rclass:
+        if cls in _R_CLASSES:
+            return _R_CLASSES[cls](obj)
     if "data.frame" in rclass:
         return df_to_py(obj)
     if isinstance(obj, (ro.vectors.FloatVector, ro.vectors.IntVector, ro.vectors.BoolVector,
@@ -236,7 +206,7 @@ def call(fname, *args, **kwargs):
     rargs = [py_to_r(a) for a in args]
     rkw = {k: py_to_r(v) for k, v in kwargs.items()}
     arglist = ro.r["list"](*rargs, **rkw)
-    res = helpers()["call"](fname, arglist)
+    res = internal("py_call")(fname, arglist)
     for w in res.rx2("warnings"):
         warnings.warn(from_r_warning(str(w.rx2("message")[0]), list(w.rx2("class"))), stacklevel=3)
     if not bool(res.rx2("ok")[0]):

@@ -1,5 +1,8 @@
 """Functions mirroring the handmotion R API (same names and argument names).
 
+The list of which R exports are mirrored (and which deliberately are not) is in the
+package docstring (``help(handmotion)``).
+
 Every function validates its Python input before R sees it, calls the R function
 of the same name through one bridge, and converts the result: ``grasps`` objects
 become :class:`handmotion.Grasps`, data frames become pandas DataFrames, arrays
@@ -7,6 +10,7 @@ become numpy arrays, and model objects become handles. Seeds pass straight
 through, so Python and R give identical numbers for the same seed.
 """
 
+import os
 import warnings
 
 import numpy as np
@@ -14,7 +18,8 @@ import numpy as np
 from ._bridge import call, r, r_array, r_to_py
 from .errors import BadInputError
 from .grasps import Grasps, as_grasps as _as_grasps
-from .handles import GraspClassifier, GraspRecognizer, GraspModels, HandoverModel, RHandle, Skeleton
+from .handles import (GraspClassifier, GraspModel, GraspRecognizer, GraspModels, HandoverModel, RecognitionStream,
+                      RHandle, Skeleton, project)
 
 
 def _check_count(value, name, minimum=1):
@@ -141,13 +146,65 @@ def joint_names(skeleton=None):
 
 
 def write_bvh(x, file, **kwargs):
-    """Export a recording or generated grasp as a BVH animation (Blender can import it)."""
+    """Export a recording or generated grasp as a BVH animation (Blender can import it); refuses
+    to overwrite an existing file unless ``overwrite=True``."""
     g = _as_grasps(x)
     call("write_bvh", g, str(file), **kwargs)
     return str(file)
 
 
+def read_bvh(file):
+    """Read a BVH file (R's ``read_bvh()``) as a :class:`Grasps` of one recording whose DoFs are
+    the rotation channels (``<joint>:<channel>``, degrees); the hierarchy stays in R (``to_r()``
+    keeps the object R read only for the recordings)."""
+    return r_to_py(call("read_bvh", str(file)))
+
+
+def write_skeleton(skeleton, file, comment=None, overwrite=False):
+    """Write a :class:`Skeleton` as an ``.xmlskel`` file (refuses to overwrite unless ``overwrite``)."""
+    if not isinstance(skeleton, Skeleton):
+        raise BadInputError("skeleton must be a Skeleton from hand_skeleton() or read_skeleton()")
+    call("write_skeleton", skeleton, str(file), comment=comment, overwrite=bool(overwrite))
+    return str(file)
+
+
+def read_failures(x):
+    """The files or lines a reader could not read (R's ``read_failures()``): a DataFrame (file,
+    line, class, message); empty when everything was read."""
+    failures = getattr(x, "failures", None)
+    if failures is None:
+        if not isinstance(x, Grasps):
+            raise BadInputError("x must be the result of a reader such as read_graspdb14()")
+        return r_to_py(call("read_failures", x))
+    return failures
+
+
+def graspdb14_to_hust(x, dip="inferred"):
+    """GraspDB14's 23 CyberGlove sensors mapped onto the 16 HUST DoFs (R's ``graspdb14_to_hust()``)."""
+    return r_to_py(call("graspdb14_to_hust", _as_grasps(x), dip=dip))
+
+
+def segment_by_switch(x, keep="all", min_frames=1, switch=None):
+    """Cut recordings at the changes of a switch channel (R's ``segment_by_switch()``)."""
+    return r_to_py(call("segment_by_switch", _as_grasps(x), keep=keep,
+                        min_frames=_check_count(min_frames, "min_frames"), switch=switch))
+
+
+def write_hand_animation(x, file, recording=1, overwrite=False, **kwargs):
+    """Animate one recording as a GIF (or ``.mp4`` where ffmpeg is installed) with R's
+    ``write_hand_animation()``; refuses to overwrite unless ``overwrite``. Returns the path."""
+    call("write_hand_animation", _as_grasps(x), str(file), recording=_check_count(recording, "recording"),
+         overwrite=bool(overwrite), **kwargs)
+    return str(file)
+
+
 # ---------------------------------------------------------------- models
+
+
+def fit_grasp_model(x, grasp=None, seed=1, **kwargs):
+    """Fit the generative model of one grasp type (R's ``fit_grasp_model()``, same arguments);
+    a :class:`GraspModel` for :func:`generate` and :func:`project`."""
+    return GraspModel(call("fit_grasp_model", _as_grasps(x), grasp=grasp, seed=_check_seed(seed), **kwargs))
 
 
 def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", **kwargs):
@@ -321,21 +378,6 @@ def fit_grasp_classifier(x, method="discriminant", **kwargs):
     return GraspClassifier(fit)
 
 
-def _deprecated_classifier(name, method):
-    def fn(x, **kwargs):
-        warnings.warn(f"{name}() is deprecated; use fit_grasp_classifier(x, method={method!r}, ...)",
-                      DeprecationWarning, stacklevel=2)
-        return fit_grasp_classifier(x, method=method, **kwargs)
-
-    fn.__name__ = name
-    fn.__doc__ = f"Deprecated: use ``fit_grasp_classifier(x, method={method!r}, ...)``."
-    return fn
-
-
-fit_last_frame_pca = _deprecated_classifier("fit_last_frame_pca", "last_frame")
-fit_weighted_fpca = _deprecated_classifier("fit_weighted_fpca", "weighted_fpca")
-
-
 def fit_grasp_recognizer(x, horizon=None, **kwargs):
     """One discriminant per number of frames seen, for recognition while the hand still moves
     (R's ``fit_grasp_recognizer()``); a :class:`GraspRecognizer`."""
@@ -343,6 +385,28 @@ def fit_grasp_recognizer(x, horizon=None, **kwargs):
     if horizon is not None:
         kw["horizon"] = _check_count(horizon, "horizon")
     return GraspRecognizer(call("fit_grasp_recognizer", _as_grasps(x), **kw))
+
+
+def start_recognition(recognizer):
+    """A live recognition stream (R's ``start_recognition()``): ``update()`` it with one frame
+    at a time. The same as ``recognizer.stream()``."""
+    if not isinstance(recognizer, GraspRecognizer):
+        raise BadInputError("recognizer must come from fit_grasp_recognizer()")
+    return recognizer.stream()
+
+
+def grasp_confusion(truth, predicted=None, levels=None):
+    """A confusion matrix (R's ``grasp_confusion()``) as a DataFrame, rows = predicted, columns =
+    true type. ``truth`` is the ``"classification"`` of :func:`classify` (or a list of true
+    labels, with ``predicted`` the predicted ones)."""
+    ro = r()
+    if isinstance(truth, RHandle):
+        conf = call("grasp_confusion", truth)
+    else:
+        conf = call("grasp_confusion", [str(v) for v in truth],
+                    None if predicted is None else [str(v) for v in predicted], levels=levels)
+    table = ro.r["as.data.frame.matrix"](ro.r["unclass"](conf.rx2("table")))
+    return r_to_py(table).set_axis(list(ro.r["rownames"](table)), axis=0)
 
 
 def evaluate_early_recognition(x, ms=None, fractions=None, folds=None, seed=1, **kwargs):
@@ -369,36 +433,7 @@ def thesis_table(id, **kwargs):
     return r_to_py(call("thesis_table", str(id), **kwargs))
 
 
-def _deprecated_table(name, id, arg):
-    def fn(first, *args, **kwargs):
-        warnings.warn(f"{name}() is deprecated; use thesis_table({id!r}, {arg}=...)", DeprecationWarning,
-                      stacklevel=2)
-        extra = dict(zip({"5.3": ["x"], "5.6": ["held_out"], "5.8": ["held_out"], "5.7": ["pcs"]}.get(id, []), args))
-        return thesis_table(id, **{arg: first}, **extra, **kwargs)
-
-    fn.__name__ = name
-    fn.__doc__ = f"Deprecated: use ``thesis_table({id!r}, {arg}=...)``."
-    return fn
-
-
-table_5_1 = _deprecated_table("table_5_1", "5.1", "models")
-table_5_2 = _deprecated_table("table_5_2", "5.2", "models")
-table_5_3 = _deprecated_table("table_5_3", "5.3", "classification")
-table_5_6 = _deprecated_table("table_5_6", "5.6", "confusion")
-table_5_7 = _deprecated_table("table_5_7", "5.7", "fit")
-table_5_8 = _deprecated_table("table_5_8", "5.8", "confusion")
-
-
 # ---------------------------------------------------------------- hand-over
-
-
-def rank_markers(reference, **kwargs):
-    """Deprecated: the ranking of the 13 hand markers is the ``"ranking"`` of R's
-    ``select_markers()``; this returns it as a DataFrame."""
-    warnings.warn("rank_markers() is deprecated; select_markers(x, n) takes the top n of the ranking",
-                  DeprecationWarning, stacklevel=2)
-    ranking = r().r("function(x, ...) attr(handmotion::select_markers(x, 1, ...), 'ranking')")
-    return r_to_py(call(ranking, _as_grasps(reference, "reference"), **kwargs))
 
 
 def select_markers(x=None, n=6, method="ranked", **kwargs):
@@ -422,17 +457,29 @@ def fit_handover(reference, markers=6, **kwargs):
     return HandoverModel(call("fit_handover", _as_grasps(reference, "reference"), markers=markers, **kwargs))
 
 
-def reconstruct(model, query, **kwargs):
-    """Rebuild all joint angles from sparse markers (R's ``predict()`` on the model); returns a
-    :class:`Grasps`.
+def handover_error(truth, recon=None, by="overall", **kwargs):
+    """Reconstruction error in degrees (R's ``handover_error()``): a number for
+    ``by="overall"``, else a DataFrame (``by`` = ``"recording"``, ``"frame"``, ``"dof"``,
+    ``"ncomp"`` or ``"markers"``; ``reference``, ``sets`` as in R)."""
+    if "reference" in kwargs and kwargs["reference"] is not None:
+        kwargs["reference"] = _as_grasps(kwargs["reference"], "reference")
+    res = call("handover_error", _as_grasps(truth, "truth"), None if recon is None else _as_grasps(recon, "recon"),
+               by=by, **kwargs)
+    out = r_to_py(res)
+    return float(out) if by == "overall" else out
 
-    ``query`` is a :class:`Grasps` (its markers are computed by forward kinematics)
-    or a numpy array frames x (3 x markers) of marker positions (NaN = occluded).
-    """
-    if not isinstance(model, HandoverModel):
-        raise BadInputError("model must come from fit_handover()")
-    q = query if isinstance(query, np.ndarray) and query.ndim == 2 else _as_grasps(query, "query")
-    return r_to_py(call(r().r["predict"], model, q, **kwargs))
+
+def reproduce_thesis(output_dir="output", subjects=30, seed=1, loso_folds=None, grasps=None, quiet=True,
+                     progress=True):
+    """The whole of the thesis' chapter 5 as an HTML report in ``output_dir`` (R's
+    ``reproduce_thesis()``; minutes on the default design). Returns the report's path."""
+    kw = dict(subjects=_check_count(subjects, "subjects", 2), seed=_check_seed(seed), quiet=bool(quiet),
+              progress=bool(progress))
+    if loso_folds is not None:
+        kw["loso_folds"] = _check_count(loso_folds, "loso_folds", 2)
+    if grasps is not None:
+        kw["grasps"] = _grasps_arg(grasps)
+    return str(r_to_py(call("reproduce_thesis", os.fspath(output_dir), **kw)))
 
 
 # ---------------------------------------------------------------- your own glove

@@ -3,6 +3,7 @@
 import numpy as np
 import pandas as pd
 
+from ._bridge import call, df_to_py, df_to_r, internal, r, r_array, register_r_class
 from .errors import BadInputError
 
 CORE_META = ["id", "grasp", "subject", "object", "trial", "n_frames", "source"]
@@ -111,6 +112,8 @@ class Grasps:
         self.glove = glove
         self.glove_name = glove if isinstance(glove, str) else None
         self.levels = None
+        # per recording, the 0/1 switch states of a GraspDB14 file (None: no switch)
+        self.switch = None
 
     # ------------------------------------------------------------ container protocol
     def __len__(self):
@@ -148,6 +151,8 @@ class Grasps:
         out.glove = getattr(self, "glove", None)
         out.glove_name = getattr(self, "glove_name", None)
         out.levels = getattr(self, "levels", None)
+        sw = getattr(self, "switch", None)
+        out.switch = None if sw is None else [sw[i] for i in idx]
         return out
 
     def __repr__(self):
@@ -210,8 +215,6 @@ class Grasps:
     # ------------------------------------------------------------ R conversion
     def to_r(self):
         """This set as an R ``grasps`` object (validated by R's constructor)."""
-        from ._bridge import call, df_to_r, helpers
-
         values = np.concatenate([rec.ravel(order="F") for rec in self.recordings])
         meta = self.meta.drop(columns=["n_frames"])
         glove = getattr(self, "glove", None)
@@ -222,7 +225,10 @@ class Grasps:
             extra = dict(glove=glove)
         if getattr(self, "levels", None):
             extra["levels"] = list(self.levels)
-        res = call(helpers()["grasps_in"], values=values,
+        sw = getattr(self, "switch", None)
+        if sw is not None and any(v is not None for v in sw):
+            extra["switch"] = [None if v is None else np.asarray(v, dtype=np.int64) for v in sw]
+        res = call(internal("py_grasps_in"), values=values,
                    n_frames=np.asarray(self.meta["n_frames"], dtype=np.int64),
                    meta=df_to_r(meta), dofs=list(self.dofs), rate=self.rate, unit=self.unit, **extra)
         return res
@@ -230,9 +236,7 @@ class Grasps:
     @classmethod
     def from_r(cls, robj):
         """Convert an R ``grasps`` object."""
-        from ._bridge import df_to_py, helpers, r_array
-
-        flat = helpers()["grasps_out"](robj)
+        flat = internal("py_grasps_out")(robj)
         values = r_array(flat.rx2("values"), dtype=float)
         nf = r_array(flat.rx2("n_frames"), dtype=int)
         dofs = [str(d) for d in flat.rx2("dofs")]
@@ -246,23 +250,18 @@ class Grasps:
         out.rate = float(flat.rx2("rate")[0])
         out.unit = str(flat.rx2("unit")[0])
         lv = flat.rx2("levels")
-        out.levels = None if lv is None or lv == ro_null() else [str(v) for v in lv]
+        out.levels = None if lv is None or lv == r().NULL else [str(v) for v in lv]
         out.glove = df_to_py(flat.rx2("glove"))
         out.glove_name = str(flat.rx2("glove_name")[0])
+        sw = [None if v == r().NULL else r_array(v, dtype=np.int64) for v in flat.rx2("switch")]
+        out.switch = sw if any(v is not None for v in sw) else None
         return out
-
-
-def ro_null():
-    from ._bridge import r
-    return r().NULL
 
 
 def _default_dofs(p):
     """The DoF names R's grasps() gives p unnamed columns (the 16 HUST DoFs, else dof1..dofp),
     asked from R so the list is written down once."""
-    from ._bridge import r
-    ro = r()
-    return [str(d) for d in ro.r("function(p) handmotion::grasps(list(matrix(0, 1, p)))$dofs")(int(p))]
+    return [str(d) for d in internal("py_default_dofs")(int(p))]
 
 
 def as_grasps(x, arg="x"):
@@ -275,3 +274,6 @@ def as_grasps(x, arg="x"):
         return Grasps(x)
     raise BadInputError(f"{arg} must be a handmotion.Grasps (or a list of frames x DoF arrays), "
                         f"not {type(x).__name__}")
+
+
+register_r_class("grasps", Grasps.from_r)

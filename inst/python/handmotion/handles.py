@@ -1,6 +1,9 @@
 """Thin Python handles around R objects that have no natural Python form."""
 
-from ._bridge import call, r, r_to_py
+import numpy as np
+
+from ._bridge import call, internal, r, r_to_py
+from .errors import BadInputError
 from .grasps import as_grasps as _as_grasps
 
 
@@ -21,6 +24,10 @@ class RHandle:
         text = "\n".join(ro.r["capture.output"](ro.r["print"](self.robj)))
         return f"<{type(self).__name__}>\n{text}"
 
+    def to_r(self):
+        """The wrapped R object (what every handmotion function passes to R)."""
+        return self.robj
+
     def r_class(self):
         """The R class vector of the wrapped object."""
         return list(r().r["class"](self.robj))
@@ -38,7 +45,6 @@ class Classifier(RHandle):
         ``type="class"`` a column ``.pred_class`` (None where a recording could not be
         classified), ``"prob"`` a column ``.pred_<class>`` per class (rows sum to 1),
         ``"distance"`` a column ``.dist_<class>`` per class (smaller is closer)."""
-        from .errors import BadInputError
         if type not in _PREDICT_TYPES:
             raise BadInputError(f"type must be one of {_PREDICT_TYPES}, not {type!r}")
         out = call(r().r["predict"], self.robj, _as_grasps(x), type=type, **kwargs)
@@ -65,8 +71,7 @@ class GraspModels(Classifier):
     def grasp_types(self):
         """Names of the grasp types that have a fitted model (a type whose fit failed stays
         in the set, see :meth:`failed`, but has no model)."""
-        fitted = r().r("function(x) names(Filter(function(m) inherits(m, 'grasp_model'), unclass(x)))")
-        return [str(n) for n in fitted(self.robj)]
+        return [str(n) for n in internal("py_fitted_types")(self.robj)]
 
     def failed(self):
         """The grasp types whose fit failed, with the reason, as a dict {type: message}."""
@@ -81,9 +86,26 @@ class GraspModels(Classifier):
         """Correlation between the DoFs' first FPC scores that the model of ``grasp`` generates
         with, as a DoF x DoF DataFrame (the identity for the thesis' independent model)."""
         if str(grasp) not in self.grasp_types():
-            from .errors import BadInputError
             raise BadInputError(f"no model for grasp type {grasp!r}; have {self.grasp_types()}")
-        return _labelled_matrix(r().r("function(m) attr(summary(m), 'dependence_matrix')")(self.robj.rx2(str(grasp))))
+        return _labelled_matrix(internal("py_dependence_matrix")(self.robj.rx2(str(grasp))))
+
+    def project(self, x):
+        """The recordings of ``x`` projected onto each type's model: :func:`handmotion.project`."""
+        return project(self, x)
+
+
+class GraspModel(RHandle):
+    """One grasp type's generative model (R class ``grasp_model``, from
+    :func:`handmotion.fit_grasp_model`): pass it to :func:`handmotion.generate` or
+    :func:`project`. It is not a classifier (a :class:`GraspModels` set is)."""
+
+    def summary(self):
+        """R's ``summary()`` of the model as a DataFrame."""
+        return r_to_py(call(r().r["as.data.frame"], call(r().r["summary"], self.robj)))
+
+    def project(self, x):
+        """The recordings of ``x`` projected onto this model: :func:`project`."""
+        return project(self, x)
 
 
 class Skeleton(RHandle):
@@ -96,7 +118,37 @@ class Skeleton(RHandle):
 
 
 class HandoverModel(RHandle):
-    """A sparse-marker reconstruction model (R class ``handover_model``)."""
+    """A sparse-marker reconstruction model (R class ``handover_model``, from
+    :func:`handmotion.fit_handover`)."""
+
+    def predict(self, x, **kwargs):
+        """Rebuild all joint angles from sparse markers (R's ``predict()`` on the model); a
+        :class:`handmotion.Grasps`. ``x`` is a Grasps (its markers are computed by forward
+        kinematics) or a numpy array frames x (3 x markers) of marker positions (NaN = occluded)."""
+        q = x if isinstance(x, np.ndarray) and x.ndim == 2 else _as_grasps(x, "x")
+        return r_to_py(call(r().r["predict"], self.robj, q, **kwargs))
+
+
+def _projection(p):
+    return {"ids": [str(v) for v in p.rx2("ids")],
+            "distance": np.atleast_1d(r_to_py(p.rx2("distance"))),
+            "scores": r_to_py(p.rx2("scores")),
+            "residual": r_to_py(p.rx2("residual"))}
+
+
+def project(model, x):
+    """Project the recordings of ``x`` onto a model (R's ``project()``): for a
+    :class:`GraspModel` one projection, for a :class:`GraspModels` a dict ``{grasp type:
+    projection}`` (failed types have none). A projection is a dict with ``ids`` (the
+    recordings), ``distance`` (numpy, one per recording: the thesis' eq. 4.4 over the whole
+    hand), ``scores`` (numpy, recordings x DoF x FPC) and ``residual`` (numpy, recordings x
+    DoF residual norms)."""
+    if not isinstance(model, (GraspModel, GraspModels)):
+        raise BadInputError("model must be a GraspModel or GraspModels from fit_grasp_model(s)()")
+    res = call("project", model, _as_grasps(x), details=False)
+    if isinstance(model, GraspModel):
+        return _projection(res)
+    return {str(name): _projection(p) for name, p in zip(r().r["names"](res), res)}
 
 
 def _labelled_matrix(mat):
@@ -121,7 +173,6 @@ class GraspRecognizer(Classifier):
         """Classify every recording of ``x`` from its first frames: at most one of ``frames``,
         ``ms`` or ``fraction`` (none: the whole recording); the result as
         :meth:`Classifier.predict`."""
-        from .errors import BadInputError
         given = {k: v for k, v in dict(frames=frames, ms=ms, fraction=fraction).items() if v is not None}
         if len(given) > 1:
             raise BadInputError("give at most one of frames, ms and fraction (none: the whole recording)")
@@ -138,8 +189,6 @@ class RecognitionStream(RHandle):
     def update(self, frame):
         """Add the newest frame (one value per DoF) and return the class probabilities as a
         dict ``{grasp type: probability}``."""
-        import numpy as np
-        from .errors import BadInputError
         v = np.asarray(frame, dtype=float).ravel()
         if not np.all(np.isfinite(v)):
             raise BadInputError("frame must hold finite numbers, one per DoF")

@@ -2,10 +2,8 @@
 as one self-contained HTML page, shown inline in Jupyter."""
 
 import html as _html
-import os
-import tempfile
 
-from ._bridge import call, r
+from ._bridge import call, internal
 from .grasps import as_grasps as _as_grasps
 from .errors import BadInputError
 
@@ -56,12 +54,5 @@ def hand_3d(x, layout="side", limits=False, markers=None, speed=1, autoplay=True
         markers = [markers]
     widget = call("hand_3d", data, layout=layout, limits=limits, markers=list(markers) if markers else None,
                   speed=speed, autoplay=autoplay, loop=loop, width=width, height=height, **kwargs)
-    fd, path = tempfile.mkstemp(suffix=".html")
-    os.close(fd)
-    try:
-        r().r("function(w, f) htmlwidgets::saveWidget(w, f, selfcontained = TRUE)")(widget, path)
-        with open(path, encoding="utf-8") as f:
-            page = f.read()
-    finally:
-        os.unlink(path)
+    page = str(internal("py_widget_html")(widget)[0])
     return HandView(page, height=height if isinstance(height, (int, float)) else 460)

@@ -85,7 +85,7 @@ CASES = [
      BadInputError),
     ("fit_handover: zero ridge", lambda hm, s, m, h, d: hm.fit_handover(s, markers=3, ridge=0), BadInputError),
     ("fit_handover: unknown argument", lambda hm, s, m, h, d: hm.fit_handover(s, markers=3, foo=1), BadInputError),
-    ("reconstruct: other DoFs", lambda hm, s, m, h, d: hm.reconstruct(h, hm.Grasps([ANG[:, :15]])), BadInputError),
+    ("HandoverModel.predict: other DoFs", lambda hm, s, m, h, d: h.predict(hm.Grasps([ANG[:, :15]])), BadInputError),
     # 3D
     ("hand_3d: negative speed", lambda hm, s, m, h, d: hm.hand_3d(s[0:1], speed=-1), BadInputError),
 ]

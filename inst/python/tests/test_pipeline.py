@@ -80,9 +80,6 @@ def test_tables_and_held_out(hm, models, small):
     assert {"correct", "thesis_correct", "recall"}.issubset(t6.columns)
     lf = hm.fit_grasp_classifier(small, method="last_frame", k=2)
     t7 = hm.thesis_table("5.7", fit=lf, pcs=[1, 2])
-    with pytest.warns(DeprecationWarning):
-        old = hm.table_5_7(lf, pcs=[1, 2])
-    assert old.equals(t7)
     assert list(t7.columns)[:4] == ["grasp_id", "grasp", "pc1", "thesis_pc1"]
     ev = hm.evaluate_loso(small, method="last_frame", fit_args={"k": 2})
     assert 0 <= ev["accuracy"]["held_out"] <= 1
@@ -98,7 +95,7 @@ def test_handover_round_trip(hm, small):
     handpicked = hm.select_markers(method="handpicked")
     assert len(handpicked) == 6 and not any(m.startswith(("middle", "ring")) for m in handpicked)
     model = hm.fit_handover(ref, markers=6)
-    out = hm.reconstruct(model, query)
+    out = model.predict(query)
     assert len(out) == 1
     assert out.recordings[0].shape == query.recordings[0].shape
     err = np.mean(np.abs(out.recordings[0] - query.recordings[0]))

@@ -40,8 +40,7 @@ def test_weighted_fpca_from_python(hm, split):
     assert "weighted" in repr(res["classification"])
     with pytest.raises(hm.BadInputError):
         hm.fit_grasp_classifier(train, method="weighted_fpca", time="start")
-    with pytest.warns(DeprecationWarning):
-        lf = hm.fit_last_frame_pca(train, k=2)
+    lf = hm.fit_grasp_classifier(train, method="last_frame", k=2)
     assert "last_frame_pca" in repr(lf)
 
 

@@ -1,0 +1,75 @@
+# The R side of the Python front end (inst/python/handmotion, through rpy2).
+# Python reaches these internals as `handmotion:::py_*`; they live here, not as
+# R code in Python strings, so that testthat runs them (test-python-bridge.R).
+
+# Call `f` (an exported handmotion function's name, or a function) with the list
+# `args`, turning every condition into a value: an error becomes
+# list(ok = FALSE, message, class) for Python to raise as a classed exception,
+# and warnings are collected (not printed) for Python to re-issue.
+py_call <- function(f, args) {
+  fun <- if (is.function(f)) f else getExportedValue("handmotion", f)
+  warned <- list()
+  keep <- function(w) {
+    warned[[length(warned) + 1L]] <<- list(message = cli::ansi_strip(conditionMessage(w)), class = class(w))
+    invokeRestart("muffleWarning")
+  }
+  tryCatch(list(ok = TRUE, value = withCallingHandlers(do.call(fun, args), warning = keep), warnings = warned),
+           error = function(e) list(ok = FALSE, message = cli::ansi_strip(conditionMessage(e)),
+                                    class = class(e), warnings = warned))
+}
+
+# A grasps object flattened for the bridge: every recording's values in one
+# numeric vector (column-major, recording after recording), which crosses rpy2
+# far faster than a list of matrices; factors of meta become character, the
+# label levels travel separately so their order survives, and so do the
+# recordings' switch channels (GraspDB14, for segment_by_switch()).
+py_grasps_out <- function(x) {
+  meta <- x$meta
+  for (nm in names(meta)) if (is.factor(meta[[nm]])) meta[[nm]] <- as.character(meta[[nm]])
+  list(values = as.double(unlist(lapply(x$recordings, as.vector), use.names = FALSE)),
+       n_frames = as.integer(x$meta$n_frames), meta = meta, dofs = x$dofs,
+       rate = x$rate, unit = x$unit, levels = levels(x$meta$grasp),
+       glove_name = x$glove$name, glove = x$glove$channels,
+       switch = lapply(x$recordings, function(r) attr(r, "switch")))
+}
+
+# The inverse of py_grasps_out(): rebuilt through grasps(), so Python input is
+# validated by the same constructor as R input.
+py_grasps_in <- function(values, n_frames, meta, dofs, rate, unit, levels = NULL, glove = NULL,
+                         glove_name = NULL, switch = NULL) {
+  if (!is.null(levels) && "grasp" %in% names(meta)) meta$grasp <- factor(meta$grasp, levels = levels)
+  if (is.data.frame(glove)) glove <- glove_profile(glove, name = glove_name)
+  p <- length(dofs)
+  ends <- cumsum(n_frames * p)
+  starts <- ends - n_frames * p + 1
+  recs <- lapply(seq_along(n_frames), function(i)
+    matrix(values[seq.int(starts[i], length.out = n_frames[i] * p)], n_frames[i], p))
+  x <- grasps(recs, meta = meta, dofs = dofs, rate = rate, unit = unit, glove = glove)
+  # a recording's switch states, one per frame (NULL: it has none)
+  for (i in seq_along(switch)) {
+    if (!is.null(switch[[i]])) {
+      check_switch(switch[[i]], n = n_frames[i], call = rlang::caller_env())
+      attr(x$recordings[[i]], "switch") <- as.integer(switch[[i]])
+    }
+  }
+  x
+}
+
+# The DoF names grasps() gives p unnamed columns (asked by Python's Grasps(), so
+# the default list is written down once, in R).
+py_default_dofs <- function(p) grasps(list(matrix(0, 1L, p)))$dofs
+
+# The grasp types of a model set that have a fitted model (a failed type stays
+# in the set without one).
+py_fitted_types <- function(models) names(Filter(function(m) inherits(m, "grasp_model"), unclass(models)))
+
+# The correlation a model generates its DoFs' first FPC scores with.
+py_dependence_matrix <- function(model) attr(summary(model), "dependence_matrix")
+
+# A widget as one self-contained HTML page, returned as text.
+py_widget_html <- function(widget) {
+  file <- tempfile(fileext = ".html")
+  on.exit(unlink(file))
+  htmlwidgets::saveWidget(widget, file, selfcontained = TRUE)
+  paste(readLines(file, warn = FALSE, encoding = "UTF-8"), collapse = "\n")
+}

@@ -1,0 +1,116 @@
+# The README runs as written: every R block, in order, in a fresh R session
+# (a callr subprocess), with the working directory a temporary directory so the
+# files it writes (grasp.gif, grasp.bvh, output/) land there. The Python block
+# is run by inst/python/tests/test_readme.py.
+#
+# The first block works on the full default data (8910 recordings) and renders
+# the whole thesis report: minutes, too slow for `make test`. The test runs it on
+# a smaller design by these textual substitutions, and nothing else is changed.
+# Each `from` must occur in its block exactly `times` times, so a README edit
+# that drops or moves one fails here instead of silently running the full size.
+readme_substitutions <- data.frame(
+  block = c(1L, 1L, 2L),
+  from = c("simulate_grasps(seed = 1)",
+           'reproduce_thesis("output")',
+           '"S20"'),
+  to = c("simulate_grasps(subjects = 3, grasps = c(11, 14, 17, 25), seed = 1)",
+         'reproduce_thesis("output", subjects = 2, grasps = c(17, 25), loso_folds = 2)',
+         '"S02"'),
+  times = c(1L, 1L, 2L),
+  why = c("3 subjects and 4 types (Power Sphere 11 and Tripod 14, which the block names) instead of 30 x 33",
+          "the report's smallest design (as in test-reproduce-thesis.R)",
+          "train on subjects 1-2 and hold out 3, as the README trains on 1-20 and holds out 21-30"),
+  stringsAsFactors = FALSE
+)
+
+readme_path <- function() {
+  path <- testthat::test_path("..", "..", "README.md")
+  if (!file.exists(path)) testthat::skip("README.md is not beside the tests (installed package)")
+  path
+}
+
+# The fenced blocks of one language, in order, as single strings.
+readme_blocks <- function(path, lang) {
+  lines <- readLines(path, warn = FALSE)
+  opens <- which(lines == paste0("```", lang))
+  closes <- which(lines == "```")
+  vapply(opens, function(o) {
+    end <- closes[closes > o][1]
+    paste(lines[seq.int(o + 1L, end - 1L)], collapse = "\n")
+  }, character(1))
+}
+
+substitute_readme <- function(blocks, subs) {
+  for (i in seq_len(nrow(subs))) {
+    b <- subs$block[i]
+    hits <- lengths(regmatches(blocks[b], gregexpr(subs$from[i], blocks[b], fixed = TRUE)))
+    if (hits != subs$times[i]) {
+      stop(sprintf("README R block %d holds `%s` %d times, the test expects %d: update readme_substitutions",
+                   b, subs$from[i], hits, subs$times[i]))
+    }
+    blocks[b] <- gsub(subs$from[i], subs$to[i], blocks[b], fixed = TRUE)
+  }
+  blocks
+}
+
+test_that("the substitution table is checked against the README", {
+  blocks <- readme_blocks(readme_path(), "r")
+  expect_error(substitute_readme(blocks, transform(readme_substitutions[1, ], times = 2L)),
+               "expects 2")
+  out <- substitute_readme(blocks, readme_substitutions)
+  for (i in seq_len(nrow(readme_substitutions))) {
+    expect_false(grepl(readme_substitutions$from[i], out[readme_substitutions$block[i]], fixed = TRUE))
+  }
+  # only the table's substitutions: the rest of every block is the README's text
+  expect_identical(out[-unique(readme_substitutions$block)], blocks[-unique(readme_substitutions$block)])
+})
+
+test_that("every R block of the README runs as written, in order, in a fresh session", {
+  skip_on_cran()
+  skip_if_not_installed("callr")
+  skip_if_not_installed("pkgload")
+  skip_if_not(rmarkdown::pandoc_available("1.12.3"), "pandoc is not available (reproduce_thesis())")
+  blocks <- substitute_readme(readme_blocks(readme_path(), "r"), readme_substitutions)
+  expect_gte(length(blocks), 3L)
+  pkg <- normalizePath(testthat::test_path("..", ".."))
+  dir <- withr::local_tempdir("readme-")
+  ran <- callr::r(function(blocks, pkg, dir) {
+    # the package as the tests see it (its sources), then the blocks as a user types them
+    suppressMessages(pkgload::load_all(pkg, quiet = TRUE, export_all = FALSE))
+    setwd(dir)
+    grDevices::pdf(NULL)
+    for (i in seq_along(blocks)) {
+      exprs <- parse(text = blocks[[i]], keep.source = FALSE)
+      for (e in exprs) withVisible(eval(e, globalenv()))
+    }
+    list(files = sort(list.files(dir)),
+         p = get("p", globalenv()),
+         has = vapply(c("g", "ms", "train", "held_out", "raw", "deg"), exists, logical(1),
+                      envir = globalenv()))
+  }, args = list(blocks = blocks, pkg = pkg, dir = dir), show = FALSE)
+  expect_true(all(ran$has))
+  # the files the blocks write went to the temporary working directory
+  expect_true(all(c("grasp.bvh", "output") %in% ran$files))
+  expect_true(any(grepl("^grasp\\.(gif|mp4)$", ran$files)))
+  expect_true(file.exists(file.path(dir, "output", "reproduce-thesis.html")))
+  # the stream's probabilities after the last frame
+  expect_equal(sum(ran$p), 1, tolerance = 1e-8)
+})
+
+test_that("the README's API table lists every export, and its count is the number of exports", {
+  path <- readme_path()
+  ns_file <- testthat::test_path("..", "..", "NAMESPACE")
+  skip_if_not(file.exists(ns_file), "NAMESPACE is not beside the tests")
+  ns <- readLines(ns_file)
+  exports <- sub("^export\\((.*)\\)$", "\\1", grep("^export\\(", ns, value = TRUE))
+  lines <- readLines(path, warn = FALSE)
+  api <- lines[seq(grep("^## The whole API", lines), grep("^## Data", lines) - 1L)]
+  count <- as.integer(sub("^([0-9]+) functions.*", "\\1", grep("^[0-9]+ functions", api, value = TRUE)))
+  expect_identical(count, length(exports))
+  table <- paste(grep("^\\|", api, value = TRUE), collapse = " ")
+  listed <- unique(sub("\\(\\)`$", "", sub("^`", "", regmatches(table, gregexpr("`[A-Za-z_.0-9]+\\(\\)`", table))[[1]])))
+  expect_setequal(intersect(listed, exports), exports)
+  # the table names nothing that is neither an export nor a generic the package has methods for
+  generics <- c("summary", "predict", "print", "update")
+  expect_identical(setdiff(listed, c(exports, generics)), character(0))
+})
