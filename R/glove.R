@@ -244,6 +244,14 @@ match_glove <- function(glove, dofs, unit, call = rlang::caller_env()) {
   }
   ch <- glove$channels[idx, , drop = FALSE]
   ch$channel <- dofs
+  # the set's unit and the profile's must agree (a set edited after it was
+  # built, or a profile written for another unit)
+  if (unit %in% c("deg", "rad")) ch <- convert_channel_ranges(ch, unit)
+  if (unit == "raw" && !any(ch$unit == "raw")) {
+    hm_abort(c("The recordings are raw counts but the glove profile {.val {glove$name}} describes angles ({.val {unique(ch$unit)}}).",
+               i = "Give a profile whose channels have {.code unit = \"raw\"} and a map to degrees, or convert the recordings."),
+             "bad_input", argument = "unit", call = call)
+  }
   new_glove_profile(glove$name, ch, call = call)
 }
 
