@@ -288,15 +288,22 @@ find_stuck <- function(recordings, tol = 1e-9) {
   span <= tol * max(c(span, 1))
 }
 
+# Recordings a set needs before a channel constant over all of them counts
+# as a stuck sensor.
+stuck_min_recordings <- 5L
+
 # Flag stuck channels in a set's profile, with one classed warning.
 flag_stuck <- function(x, call = rlang::caller_env()) {
   stuck <- find_stuck(x$recordings)
-  if (length(x) > 1L && any(stuck & !x$glove$channels$stuck)) {
+  # a set in which nothing varies is constant data, not a glove with stuck
+  # sensors; and a handful of recordings (a few poses) is not evidence of one
+  if (all(stuck) || length(x) < stuck_min_recordings) stuck[] <- FALSE
+  if (any(stuck & !x$glove$channels$stuck)) {
     hm_warn(c("{cli::qty(sum(stuck))}Channel{?s} {.val {x$dofs[stuck]}} {?is/are} constant over every recording (a stuck or unplugged sensor?).",
               i = "{cli::qty(sum(stuck))}{?It is/They are} kept in the data, left out of models (held at {?its/their} value) and shown by {.fn print}."),
             "stuck_channels", channels = x$dofs[stuck])
   }
-  x$glove$channels$stuck <- stuck & length(x) > 1L
+  x$glove$channels$stuck <- stuck
   x
 }
 

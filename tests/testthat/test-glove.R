@@ -48,9 +48,13 @@ test_that("a set without a profile gets one from its channel names; grasps(glove
 
 test_that("stuck channels are flagged once, with a classed warning, and shown by print and summary", {
   set.seed(1)
-  recs <- lapply(1:3, function(i) cbind(a = rnorm(20), b = 7, c = rnorm(20)))
-  expect_warning(g <- grasps(recs, meta = data.frame(grasp = c("x", "y", "x"))),
+  recs <- lapply(1:6, function(i) cbind(a = rnorm(20), b = 7, c = rnorm(20)))
+  expect_warning(g <- grasps(recs, meta = data.frame(grasp = rep(c("x", "y"), 3))),
                  class = "handmotion_warning_stuck_channels")
+  # a few poses, or data in which nothing moves, are not evidence of a stuck sensor
+  expect_no_warning(few <- grasps(recs[1:3]))
+  expect_equal(stuck_channels(few), character())
+  expect_no_warning(grasps(lapply(1:6, function(i) cbind(a = 1, b = 2))))
   expect_equal(stuck_channels(g), "b")
   expect_output(print(g), "stuck channels.*b")
   expect_output(print(summary(g)), "Stuck channels.*b")
