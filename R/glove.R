@@ -399,9 +399,16 @@ fk_mapped <- function(angles, skeleton, unit, mapping, ...) {
 # map, each channel's recorded range onto a typical range of its joint axis
 # (flexion increasing with the count), so the hand can be looked at before a
 # calibration. NULL when no channel is recognised.
-guess_raw_glove <- function(dofs, recordings) {
-  map <- tryCatch(default_joint_map_impl(dofs, NULL), handmotion_error = function(e) NULL)
+guess_raw_glove <- function(dofs, recordings, template = NULL) {
+  map <- if (!is.null(template)) {
+    # a profile written for angles (a CyberGlove's), given for raw counts
+    glove_mapping(template)
+  } else {
+    tryCatch(default_joint_map_impl(dofs, NULL), handmotion_error = function(e) NULL)
+  }
   if (is.null(map) || !nrow(map)) return(NULL)
+  map <- map[dof_key(map$dof) %in% dof_key(dofs), , drop = FALSE]
+  map$dof <- dofs[match(dof_key(map$dof), dof_key(dofs))]
   X <- do.call(rbind, recordings)
   ch <- data.frame(channel = dofs, joint = NA_character_, axis = NA_character_, sign = 1, scale = 1,
                    frame = "joint", unit = "raw", min = apply(X, 2, min), max = apply(X, 2, max),
@@ -430,5 +437,6 @@ guess_raw_glove <- function(dofs, recordings) {
   flat <- !(ch$max > ch$min)
   ch$axis[flat] <- NA_character_
   if (!any(!is.na(ch$axis))) return(NULL)
-  new_glove_profile("guessed from channel names", ch)
+  new_glove_profile(if (is.null(template)) "guessed from channel names"
+                    else paste(template$name, "(raw counts, guessed map)"), ch)
 }

@@ -115,10 +115,12 @@ grasps <- function(recordings, meta = NULL, dofs = NULL, rate = 50, unit = NULL,
   }
   meta <- build_meta(meta, recordings, ids, call = call)
   names(recordings) <- meta$id
-  if (is.null(glove) && unit == "raw") {
-    glove <- guess_raw_glove(dofs, recordings)
-    if (!is.null(glove)) {
-      hm_warn(c("Raw counts without a glove profile: channels {.val {utils::head(glove$channels$channel[!is.na(glove$channels$axis)], 4)}}... are drawn through a guessed map.",
+  angle_profile <- !is.null(glove) && !any(glove$channels$unit == "raw")
+  if (unit == "raw" && (is.null(glove) || angle_profile)) {
+    guessed <- guess_raw_glove(dofs, recordings, template = if (angle_profile) glove)
+    if (!is.null(guessed) || is.null(glove)) glove <- guessed
+    if (!is.null(guessed)) {
+      hm_warn(c("Raw counts without a map to degrees: channels {.val {utils::head(glove$channels$channel[!is.na(glove$channels$axis)], 4)}}... are drawn through a guessed map.",
                 i = "Each channel's recorded range is mapped onto a typical range of its joint; give {.arg glove} ({.fn glove_profile}) or {.fn calibrate} the data for true angles."),
               "guessed_glove")
     }

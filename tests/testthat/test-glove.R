@@ -100,3 +100,17 @@ test_that("raw counts with CyberGlove sensor names and no profile are drawn thro
   d <- glove_degrees(list(matrix(c(rep(300, 16), rep(500, 16)), 2, byrow = TRUE)), g$glove)[[1]]
   expect_true(all(d[2, !is.na(g$glove$channels$axis)] > d[1, !is.na(g$glove$channels$axis)]))
 })
+
+test_that("raw counts given an angle profile (a CyberGlove's) keep its joints and get a guessed map", {
+  set.seed(4)
+  ch <- glove_profile("cyberglove22")$channels$channel
+  recs <- lapply(1:6, function(i) matrix(round(500 + 100 * sin(outer(1:30 / 10, seq_along(ch)))), 30,
+                                         length(ch), dimnames = list(NULL, ch)))
+  expect_warning(g <- grasps(recs, rate = 100, unit = "raw", glove = "cyberglove22"),
+                 class = "handmotion_warning_guessed_glove")
+  expect_match(g$glove$name, "cyberglove22")
+  expect_true(all(g$glove$channels$unit == "raw"))
+  drawn <- !is.na(glove_profile("cyberglove22")$channels$axis)
+  expect_identical(g$glove$channels$joint[drawn], glove_profile("cyberglove22")$channels$joint[drawn])
+  expect_true(all(is.finite(forward_kinematics(g[1])[[1]])))
+})
