@@ -152,7 +152,8 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
                                            message = paste("not fitted:", unfitted$message)))
   }
   projections <- project_models(models, x, "models", details = FALSE, call = call,
-                                keep = function(pr) pr[c("distance", "ids")], keep_going = TRUE)
+                                keep = function(pr) pr[c("distance", "ids")], keep_going = TRUE,
+                                distance_only = TRUE)
   types <- names(projections)
   ids <- x$meta$id
   d <- matrix(NA_real_, length(ids), length(types), dimnames = list(ids, types))
