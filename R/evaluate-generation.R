@@ -231,7 +231,7 @@ generation_measures <- function(samples, ref, lda, type, limits) {
          recognised = mean(lda_class(lda, F) == type),
          outside_limits = limit_share(x, limits),
          log_jerk = stats::median(log_jerk(x)),
-         duration_ks = suppressWarnings(stats::ks.test(x$meta$n_frames / x$rate, ref$durations)$statistic[[1]]))
+         duration_ks = ks_distance(x$meta$n_frames / x$rate, ref$durations))
   }
   res <- lapply(samples, one)
   stats::setNames(lapply(names(res[[1]]), function(k) mean(vapply(res, `[[`, numeric(1), k))),
@@ -250,25 +250,33 @@ final_postures <- function(x) {
 # averaged over recordings (pairs undefined in a recording are skipped). The
 # profile is the change of each angle over each tenth of the motion, so
 # frame-to-frame sensor noise (which would decorrelate recorded velocities
-# but not the smooth generated ones) does not enter.
+# but not the smooth generated ones) does not enter. All recordings at once:
+# each recording's profile columns are centred and scaled to unit length,
+# so the sum over recordings of their correlation matrices is one cross
+# product of the stacked profiles (a cor() per recording was a quarter of
+# evaluate_generation()'s time); a DoF that does not move in a recording
+# has no correlation there and is left out of that recording's count.
 velocity_correlation <- function(x) {
   p <- length(x$dofs)
-  acc <- matrix(0, p, p)
-  cnt <- matrix(0, p, p)
+  recs <- x$recordings[vapply(x$recordings, nrow, integer(1)) >= 4L]
+  out <- matrix(NA_real_, p, p, dimnames = list(x$dofs, x$dofs))
+  if (!length(recs)) return(out)
   at <- seq(0, 1, by = 0.1)
-  for (r in x$recordings) {
-    if (nrow(r) < 4L) next
+  D <- do.call(rbind, lapply(recs, function(r) {
     pos <- 1 + at * (nrow(r) - 1)
     lo <- floor(pos)
     w <- pos - lo
     prof <- r[lo, , drop = FALSE] * (1 - w) + r[pmin(lo + 1L, nrow(r)), , drop = FALSE] * w
-    C <- suppressWarnings(stats::cor(diff(prof)))
-    ok <- is.finite(C)
-    acc[ok] <- acc[ok] + C[ok]
-    cnt <- cnt + ok
-  }
-  out <- acc / cnt
-  dimnames(out) <- list(x$dofs, x$dofs)
+    diff(prof)
+  }))
+  m <- length(at) - 1L
+  rec <- rep(seq_along(recs), each = m)
+  D <- D - rowsum(D, rec, reorder = FALSE)[rec, , drop = FALSE] / m
+  len <- sqrt(rowsum(D^2, rec, reorder = FALSE))
+  ok <- len > 0 & is.finite(len)
+  D <- D / len[rec, , drop = FALSE]
+  D[!ok[rec, , drop = FALSE]] <- 0
+  out[] <- crossprod(D) / crossprod(ok * 1)
   out
 }
 
@@ -279,12 +287,24 @@ cor_gap <- function(a, b) {
   mean(d[is.finite(d)])
 }
 
+# Log10 mean squared jerk (third difference, per second cubed) of every
+# recording, from the recordings stacked: the third differences of the
+# stacked frames are each recording's own wherever the four frames belong to
+# one recording (the same arithmetic as diff(r, differences = 3)).
 log_jerk <- function(x) {
-  vapply(x$recordings, function(r) {
-    if (nrow(r) < 5L) return(NA_real_)
-    j <- diff(r, differences = 3) * x$rate^3
-    log10(mean(j^2))
-  }, numeric(1))
+  nk <- vapply(x$recordings, nrow, integer(1))
+  out <- stats::setNames(rep(NA_real_, length(nk)), names(x$recordings))
+  use <- nk >= 5L
+  if (!any(use)) return(out)
+  S <- do.call(rbind, x$recordings[use])
+  j <- diff(S, differences = 3) * x$rate^3
+  n <- nk[use]
+  rec <- rep(seq_along(n), n)
+  # row t of j spans frames t..t+3: keep those inside one recording
+  keep <- rec[seq_len(nrow(j))] == rec[seq_len(nrow(j)) + 3L]
+  ss <- rowsum(rowSums(j[keep, , drop = FALSE]^2), rec[seq_len(nrow(j))][keep], reorder = FALSE)
+  out[use] <- log10(ss[, 1] / ((n - 3) * ncol(S)))
+  out
 }
 
 limit_share <- function(x, limits) {
@@ -293,22 +313,52 @@ limit_share <- function(x, limits) {
 }
 
 # Unbiased squared MMD with a Gaussian kernel of the given bandwidth, and
-# its permutation p-value.
+# its permutation p-value. Every permutation (the observed split first) is a
+# column of 0/1 memberships z of the first sample, and its three kernel sums
+# are quadratic forms: sum(K[a, a]) = z'Kz, sum(K[b, b]) = (1-z)'K(1-z),
+# sum(K[a, b]) = z'K(1-z), all from one product K Z. (Indexing K[a, a] per
+# permutation was two thirds of evaluate_generation()'s time.) The
+# permutations are the same sample.int() draws as before, so the p-values
+# are the same up to rounding ties.
 mmd_test <- function(X, Y, bandwidth, permutations = 200L) {
   n <- nrow(X)
   m <- nrow(Y)
-  K <- exp(-as.matrix(stats::dist(rbind(X, Y)))^2 / (2 * bandwidth^2))
-  stat <- function(i) {
-    a <- i[seq_len(n)]
-    b <- i[n + seq_len(m)]
-    Kaa <- K[a, a]
-    Kbb <- K[b, b]
-    (sum(Kaa) - sum(diag(Kaa))) / (n * (n - 1)) + (sum(Kbb) - sum(diag(Kbb))) / (m * (m - 1)) -
-      2 * mean(K[a, b])
-  }
-  obs <- stat(seq_len(n + m))
-  perm <- vapply(seq_len(permutations), function(k) stat(sample.int(n + m)), numeric(1))
-  list(mmd = obs, p = (1 + sum(perm >= obs)) / (1 + permutations))
+  N <- n + m
+  K <- exp(-squared_distances(rbind(X, Y)) / (2 * bandwidth^2))
+  Z <- matrix(0, N, permutations + 1L)
+  Z[seq_len(n), 1L] <- 1
+  for (k in seq_len(permutations)) Z[sample.int(N)[seq_len(n)], k + 1L] <- 1
+  KZ <- K %*% Z
+  zKz <- colSums(Z * KZ)                 # sum(K[a, a])
+  total <- sum(K)
+  row_a <- colSums(KZ)                   # sum(K[, a]) = sum(K[a, a]) + sum(K[b, a])
+  ab <- row_a - zKz                      # sum(K[a, b])
+  bb <- total - 2 * ab - zKz             # sum(K[b, b])
+  dg <- diag(K)
+  da <- colSums(Z * dg)
+  db <- sum(dg) - da
+  stat <- (zKz - da) / (n * (n - 1)) + (bb - db) / (m * (m - 1)) - 2 * ab / (n * m)
+  obs <- stat[1L]
+  list(mmd = obs, p = (1 + sum(stat[-1L] >= obs)) / (1 + permutations))
+}
+
+# All squared Euclidean distances between the rows of A, from one cross
+# product (as.matrix(dist()) cost as much as the whole MMD test).
+squared_distances <- function(A) {
+  s <- rowSums(A^2)
+  D <- -2 * tcrossprod(A) + s
+  D <- t(D) + s
+  D[D < 0] <- 0
+  diag(D) <- 0
+  D
+}
+
+# The two-sample Kolmogorov-Smirnov statistic: the largest gap between the
+# two empirical distribution functions over the pooled values (what
+# ks.test()$statistic gives, without the p-value and its tie warnings).
+ks_distance <- function(a, b) {
+  z <- sort(unique(c(a, b)))
+  max(abs(findInterval(z, sort(a)) / length(a) - findInterval(z, sort(b)) / length(b)))
 }
 
 # The recognisability yardstick: the package's shrinkage LDA
