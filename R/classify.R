@@ -40,6 +40,10 @@
 #' on `x` does that visibly). See [evaluate_loso()] for an honest held-out
 #' estimate.
 #'
+#' With many recordings (ten times the default data takes seconds) a progress
+#' bar, one step per model, appears after 2 s (through `progressr`;
+#' `options(handmotion.progress = FALSE)` turns it off).
+#'
 #' One-type data are not an error: with a single model every recording is
 #' assigned to that type, so accuracy is 1 by construction. A model whose
 #' projection fails gives a column of `NA` distances, recorded in `$failures`
@@ -86,7 +90,7 @@ classify <- function(models, x, method = c("fpca", "last_frame", "discriminant",
              "bad_input", argument = "models", call = call)
   }
   method <- resolve_method(models, method, missing(method), call = call)
-  res <- classifier_distances(models, x, method, call = call)
+  res <- with_progress_shown(classifier_distances(models, x, method, call = call))
   new_classification(res$distances, x$meta, method, res$target_length, res$failures)
 }
 
@@ -153,7 +157,7 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
   }
   projections <- project_models(models, x, "models", details = FALSE, call = call,
                                 keep = function(pr) pr[c("distance", "ids")], keep_going = TRUE,
-                                distance_only = TRUE)
+                                distance_only = TRUE, progress = hm_progressor(length(fitted_models(models))))
   types <- names(projections)
   ids <- x$meta$id
   d <- matrix(NA_real_, length(ids), length(types), dimnames = list(ids, types))

@@ -11,8 +11,12 @@
 #' recording began (what a live stream knows), and after each fraction in
 #' `fractions` of the recording's own length (for comparison with
 #' whole-motion classifiers; a live stream does not know the fraction).
-#' Folds run through `future.apply` (set a `future::plan()` to use several
-#' cores).
+#' The work runs through `future.apply` (set a `future::plan()` to use several
+#' cores), horizon by horizon: at each horizon every fold's discriminant is
+#' fitted from the whole set's moments minus the fold's, the fit
+#' [fit_grasp_recognizer()] would make on the fold's training recordings. A
+#' progress bar (one step per horizon, through `progressr`) appears after
+#' 2 s; `options(handmotion.progress = FALSE)` turns it off.
 #'
 #' @param x A labelled [grasps()] object with `subject` metadata.
 #' @param ms Times since the recording began, in milliseconds, or `NULL`.
@@ -71,7 +75,7 @@ evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractio
   on.exit(restore_rng(old_rng), add = TRUE)
   groups <- subject_folds(unique(subj), folds, seed, call = call)
   tests <- lapply(groups, function(gr) subj %in% gr)
-  all <- early_recognition_counts(x, tests, ms, fractions, at, rec_args$horizon, call)
+  all <- with_progress_shown(early_recognition_counts(x, tests, ms, fractions, at, rec_args$horizon, call))
   key <- paste(all$scale, all$value)
   agg <- do.call(rbind, lapply(split(all, factor(key, levels = unique(key))), function(d) {
     data.frame(scale = d$scale[1], value = d$value[1], accuracy = sum(d$correct) / sum(d$n),
@@ -119,7 +123,7 @@ early_recognition_counts <- function(x, tests, ms, fractions, at, horizon, call)
   # dealt out in turn so that every chunk has short and long ones
   n_chunks <- min(length(horizons), max(1L, future::nbrOfWorkers()))
   chunks <- unname(split(horizons, rep_len(seq_len(n_chunks), length(horizons))))
-  p <- progressr::progressor(steps = length(horizons))
+  p <- hm_progressor(length(horizons))
   parts <- future.apply::future_lapply(chunks, function(hs) {
     prefix <- prefix_source(x)
     lapply(hs, function(h) {

@@ -56,6 +56,9 @@
 #' give the median over types (pooled shares for `recognised` and
 #' `outside_limits`).
 #'
+#' A progress bar (one step per grasp type, through `progressr`) appears
+#' after 2 s; `options(handmotion.progress = FALSE)` turns it off.
+#'
 #' @param models A `grasp_models` set ([fit_grasp_models()]) or a named list
 #'   of them to compare (e.g. `list(thesis = m1, copula = m2)`).
 #' @param held_out A [grasps()] object of held-out recordings of the modelled
@@ -110,7 +113,8 @@ evaluate_generation <- function(models, held_out, training, n = NULL, reps = 5,
     hm_abort("{.arg held_out} has no recordings of {.val {missing}}.", "bad_input",
              argument = "held_out", call = call)
   }
-  with_seed(seed, evaluate_generation_impl(sets, held_out, training, types, n, reps, overlong))
+  with_progress_shown(with_seed(seed, evaluate_generation_impl(sets, held_out, training, types, n, reps,
+                                                               overlong)))
 }
 
 evaluate_generation_impl <- function(sets, held_out, training, types, n, reps, overlong) {
@@ -120,8 +124,10 @@ evaluate_generation_impl <- function(sets, held_out, training, types, n, reps, o
                             ty, n, reps, overlong)
   })
   rows <- list()
+  p <- hm_progressor(length(types))
   for (i in seq_along(types)) {
     ty <- types[i]
+    p(sprintf("type %d of %d", i, length(types)))
     ho <- real_sets[[i]]$held_out
     real <- real_sets[[i]]$training
     n_ty <- length(real[[1]])

@@ -60,6 +60,7 @@ distance_time_weights <- function(L, time) {
 weighted_fpca_distances <- function(object, x, call = rlang::caller_env()) {
   types <- rownames(object$scale)
   d <- project_models(object$models, x, "models", details = FALSE, call = call,
+                      progress = hm_progressor(length(object$models)),
                       time_weights = function(m) distance_time_weights(m$target_length, object$time),
                       keep = function(r) {
                         s2 <- object$scale[r$grasp, ]
