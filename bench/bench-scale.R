@@ -78,6 +78,9 @@ measure <- function(subjects) {
     early_cpu_main = cpu_of(t_early), generation = t_gen[["elapsed"]], generation_cpu_main = cpu_of(t_gen))
 }
 early_folds <- bq(10L, 3L)
+# ten times the recordings are 600 MB: more than future's default cap on
+# what a worker is given (forked workers share it anyway)
+options(future.globals.maxSize = Inf)
 # (plan() reads its strategy unevaluated: name it here)
 forked <- if (future::supportsMulticore()) future::multicore else future::multisession
 res <- vapply(sizes, measure, numeric(17))
