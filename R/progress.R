@@ -34,7 +34,9 @@ with_progress_shown <- function(expr) {
 hm_progressor <- function(steps, envir = parent.frame()) {
   if (!progress_wanted() || isTRUE(progress_state$active) || steps < 1) return(function(...) invisible(NULL))
   progress_state$active <- TRUE
-  do.call(on.exit, list(quote(handmotion:::progress_release()), add = TRUE), envir = envir)
+  # (the release function itself goes into the caller's on.exit, as withr's
+  # defer() does it)
+  do.call(base::on.exit, list(as.call(list(progress_release)), add = TRUE), envir = envir)
   progressr::progressor(steps = steps, envir = envir)
 }
 
