@@ -121,7 +121,8 @@ early_recognition_counts <- function(x, tests, ms, fractions, at, horizon, call)
   horizons <- sort(unique(unlist(lapply(folds, `[[`, "needed"))))
   # one chunk per worker (each stacks the recordings once), the horizons
   # dealt out in turn so that every chunk has short and long ones
-  n_chunks <- min(length(horizons), max(1L, future::nbrOfWorkers()))
+  workers <- if (requireNamespace("future", quietly = TRUE)) future::nbrOfWorkers() else 1L
+  n_chunks <- min(length(horizons), max(1L, workers))
   chunks <- unname(split(horizons, rep_len(seq_len(n_chunks), length(horizons))))
   p <- hm_progressor(length(horizons))
   parts <- future.apply::future_lapply(chunks, function(hs) {
