@@ -25,10 +25,11 @@ report_chunk_signal <- function(label) {
 # design): `seconds` is the step's time on the default design (30 subjects x
 # 33 types, leave-one-subject-out) on one worker, from its start to the next
 # step's (so with the tables and figures drawn in between: most of them
-# after the frame-PCA step), as measured on the 2-core reference machine
-# after the speed-ups of issue 36 (the FPCA folds: 30 refits of the 33
-# models with one Gaussian, about 3 s each, saved for the weighted FPCA
-# folds, which read them); `scale` says how it
+# after the frame-PCA step): `make demo` on the 2-core machine after the
+# speed-ups of issue 36 (214 s on 2 workers, shared machine), parallel steps
+# counted twice (the FPCA folds: 30 refits of the 33 models with one
+# Gaussian, saved for the weighted FPCA folds, which read them, are more
+# than half of it); `scale` says how it
 # grows with the design (recordings N, types T, folds F) and `parallel`
 # whether its folds or types share the future workers. While the report
 # runs, the seconds are rescaled by the measured rate: the time the finished
@@ -46,7 +47,7 @@ report_step_model <- data.frame(
            "recognition: weighted FPCA distance (learn weights)", "recognition: shrinkage LDA (fit)",
            "recognition: classify the held-out subjects", "recognition: early recognition, held out by subject",
            "the figures and the page"),
-  seconds = c(1, 5, 0.8, 0.1, 0.3, 0.1, 110, 3, 25, 15, 1, 6, 3.5, 2.5, 4, 3.5, 0.5, 0.6, 0.6, 10, 8),
+  seconds = c(1, 12, 1.2, 0.2, 0.3, 0.1, 248, 12, 36, 36, 1, 12, 12, 12, 4, 12, 1, 3, 3, 6, 6),
   scale = c("N", "N", "NT", "N", "N", "T", "NF", "NF", "NF", "NF", "const", "T", "N", "N", "NT", "N",
             "NT", "N", "NT", "NF", "T"),
   parallel = c(FALSE, TRUE, FALSE, FALSE, FALSE, FALSE, TRUE, TRUE, TRUE, TRUE, FALSE, FALSE, TRUE, TRUE,
