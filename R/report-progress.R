@@ -99,10 +99,15 @@ report_progress <- function(enabled = TRUE, out = stderr(), every = 15) {
     r <- rate()
     rest <- setdiff(names(cost), c(done, current))
     in_step <- now() - step_start
-    cur <- if (is.null(current)) 0 else if (ticks[["done"]] >= 1 && ticks[["total"]] > 0 && in_step > 1) {
-      in_step * (ticks[["total"]] - ticks[["done"]]) / ticks[["done"]]
-    } else {
-      max(0, cost[[current]] * r - in_step)
+    cur <- 0
+    if (!is.null(current)) {
+      by_model <- max(0, cost[[current]] * r - in_step)
+      # the step's own pace, trusted as far as the step has gone (its first
+      # folds also carry the workers' start)
+      f <- if (ticks[["total"]] > 0) min(1, ticks[["done"]] / ticks[["total"]]) else 0
+      cur <- if (f > 0 && in_step > 1) {
+        (1 - f) * by_model + f * in_step * (ticks[["total"]] - ticks[["done"]]) / ticks[["done"]]
+      } else by_model
     }
     cur + r * sum(cost[rest])
   }
