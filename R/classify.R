@@ -46,6 +46,10 @@
 #' on `x` does that visibly). See [evaluate_loso()] for an honest held-out
 #' estimate.
 #'
+#' With many recordings (ten times the default data takes seconds) a progress
+#' bar, one step per model, appears after 2 s (through `progressr`;
+#' `options(handmotion.progress = FALSE)` turns it off).
+#'
 #' One-type data are not an error: with a single model every recording is
 #' assigned to that type, so accuracy is 1 by construction. A model whose
 #' projection fails gives a column of `NA` distances, recorded in `$failures`
@@ -93,7 +97,7 @@ classify <- function(models, x, method = c("fpca", "last_frame", "discriminant",
   }
   method <- resolve_method(models, method, missing(method), call = call)
   # the distances predict() gives, kept whole for the confusion matrix and Table 5.3
-  d <- predict_classifier(models, x, "distance", list(), call)
+  d <- with_progress_shown(predict_classifier(models, x, "distance", list(), call))
   dist <- as.matrix(as.data.frame(unclass(d)[names(d)], check.names = FALSE))
   dimnames(dist) <- list(x$meta$id, sub("^\\.dist_", "", names(d)))
   new_classification(dist, x$meta, method, attr(d, "target_length"), attr(d, "failures") %||% no_failures())
@@ -166,7 +170,8 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
                                            message = paste("not fitted:", unfitted$message)))
   }
   projections <- project_models(models, x, "models", details = FALSE, call = call,
-                                keep = function(pr) pr[c("distance", "ids")], keep_going = TRUE)
+                                keep = function(pr) pr[c("distance", "ids")], keep_going = TRUE,
+                                distance_only = TRUE, progress = hm_progressor(length(fitted_models(models))))
   types <- names(projections)
   ids <- x$meta$id
   d <- matrix(NA_real_, length(ids), length(types), dimnames = list(ids, types))

@@ -86,7 +86,14 @@ shrink_correlation <- function(Z) {
   # the one cross product above is all the D x D work (the recogniser fits
   # one of these per horizon).
   X2 <- X^2
-  w2_off <- sum(rowSums(X2)^2) - sum(X2^2)
+  shrink_from_cor(R, sum(rowSums(X2)^2) - sum(X2^2), n)
+}
+
+# Schafer and Strimmer's shrinkage of a correlation matrix R of n
+# observations towards the identity, given w2_off = sum over i != j of
+# sum_k x_ki^2 x_kj^2 for the standardised observations x (the shrinkage LDA
+# of R/shrunk-lda.R computes both from moments and one pass over its rows).
+shrink_from_cor <- function(R, w2_off, n) {
   off <- row(R) != col(R)
   wbar2_off <- ((n - 1) / n)^2 * sum(R[off]^2)
   var_off <- n / (n - 1)^3 * (w2_off - n * wbar2_off)

@@ -11,16 +11,20 @@
 #' recording began (what a live stream knows), and after each fraction in
 #' `fractions` of the recording's own length (for comparison with
 #' whole-motion classifiers; a live stream does not know the fraction).
-#' Folds run through `future.apply` (set a `future::plan()` to use several
-#' cores). The folds are those of [evaluate_loso()]: by subject with two or
+#' The work runs through `future.apply` (set a `future::plan()` to use several
+#' cores), horizon by horizon: at each horizon every fold's discriminant is
+#' fitted from the whole set's moments minus the fold's, the fit
+#' [fit_grasp_recognizer()] would make on the fold's training recordings. A
+#' progress bar (one step per horizon, through `progressr`) appears after
+#' 2 s; `options(handmotion.progress = FALSE)` turns it off.
+#' The folds are those of [evaluate_loso()]: by subject with two or
 #' more subjects, else stratified folds of recordings (`split`).
 #'
 #' **Recordings that start at rest.** When the recordings are mostly still
 #' (the rule of `fit_grasp_model(motion = "auto")`), time counts from the
 #' motion's onset, as a live stream sees it: an onset detector fitted on
-#' each fold's training recordings (their joint speed; see [find_motion()])
-#' finds it in every held-out recording, so "after 300 ms" means 300 ms of
-#' motion.
+#' the recordings' joint speed (labels unused; see [find_motion()]) finds it
+#' in every recording, so "after 300 ms" means 300 ms of motion.
 #'
 #' @param x A labelled [grasps()] object.
 #' @param ms Times since the recording (or its motion) began, in
@@ -73,36 +77,13 @@ evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractio
   old_rng <- save_rng()
   on.exit(restore_rng(old_rng), add = TRUE)
   groups <- make_folds(x, split, folds, seed, call = call)
-  p <- progressr::progressor(steps = length(groups))
-  parts <- future.apply::future_lapply(seq_along(groups), function(f) {
-    test <- groups[[f]]
-    train <- x[!test]
-    te <- x[test]
-    # recordings that rest before the grasp: time counts from the onset the
-    # training recordings' detector finds in each held-out recording
-    det <- if (resolve_motion(train, "auto") == "trim") fit_onset_detector(train)
-    train <- from_onset(train, det)
-    te <- from_onset(te, det)
-    # frames seen by every held-out recording at each time and fraction
-    views <- c(lapply(ms, function(v) {
-      list(scale = "ms", value = v,
-           seen = rep(max(1L, as.integer(round(v * te$rate / 1000))), length(te$recordings)))
-    }), lapply(fractions, function(v) {
-      list(scale = "fraction", value = v, seen = pmax(1L, as.integer(round(v * te$meta$n_frames))))
-    }))
-    H <- recognizer_horizon(train, rec_args$horizon, call)
-    # only the horizons these views need (a full recogniser fits all H)
-    needed <- sort(unique(pmin(unlist(lapply(views, `[[`, "seen")), H)))
-    rec <- recognizer_fit(train, check_training_labels(train, call = call), at, H, needed)
-    truth <- as.character(te$meta$grasp)
-    out <- do.call(rbind, lapply(views, function(v) {
-      hit <- top_class(rec$classes, recognizer_scores(rec, te, v$seen)) == truth
-      data.frame(scale = v$scale, value = v$value, correct = sum(hit), n = length(truth), frames = sum(v$seen))
-    }))
-    p(sprintf("fold %d of %d", f, length(groups)))
-    out
-  }, future.seed = TRUE)
-  all <- do.call(rbind, parts)
+  # recordings that rest before the grasp: time counts from the onset a
+  # detector finds in each recording (fitted on the joint speed of all of
+  # them: labels are not used, so nothing of the held-out classes leaks)
+  det <- if (resolve_motion(x, "auto") == "trim") fit_onset_detector(x)
+  x <- from_onset(x, det)
+  tests <- unname(lapply(groups, identity))
+  all <- with_progress_shown(early_recognition_counts(x, tests, ms, fractions, at, rec_args$horizon, call))
   key <- paste(all$scale, all$value)
   agg <- do.call(rbind, lapply(split(all, factor(key, levels = unique(key))), function(d) {
     data.frame(scale = d$scale[1], value = d$value[1], accuracy = sum(d$correct) / sum(d$n),
@@ -112,6 +93,94 @@ evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractio
   structure(agg, class = c("early_recognition", "data.frame"),
             scheme = attr(groups, "scheme"),
             classes = length(unique(x$meta$grasp)))
+}
+
+# The held-out counts of every fold (a logical test mask each) and view (a
+# time or a fraction): correct predictions, recordings and frames seen.
+# What each fold's recogniser would be is fitted horizon by horizon instead
+# of fold by fold: at horizon h the features of every recording are built
+# once, each fold's discriminant comes from the whole set's moments minus
+# the fold's (lda_moments()), and only the folds whose held-out recordings
+# are classified at h fit there. The predictions are those of
+# fit_grasp_recognizer() on each fold's training recordings (to rounding:
+# the moments are subtracted, not recomputed). Horizons run through
+# future.apply in chunks, with one progress step per horizon.
+early_recognition_counts <- function(x, tests, ms, fractions, at, horizon, call) {
+  nf <- x$meta$n_frames
+  truth <- as.character(x$meta$grasp)
+  y <- x$meta$grasp
+  levels <- if (is.factor(y)) levels(droplevels(y)) else sort(unique(as.character(y)))
+  cls <- match(truth, levels)
+  # per fold: its training labels checked as the recogniser checks them,
+  # its horizon, and the frames each held-out recording is seen for at
+  # every view (capped at the fold's horizon)
+  folds <- lapply(tests, function(test) {
+    check_training_labels(list(meta = list(grasp = y[!test])), call = call)
+    H <- recognizer_horizon(list(meta = list(n_frames = nf[!test])), horizon, call)
+    rows <- which(test)
+    views <- c(lapply(ms, function(v) {
+      list(scale = "ms", value = v, seen = rep(max(1L, as.integer(round(v * x$rate / 1000))), length(rows)))
+    }), lapply(fractions, function(v) {
+      list(scale = "fraction", value = v, seen = pmax(1L, as.integer(round(v * nf[rows]))))
+    }))
+    list(rows = rows, H = H, views = views,
+         needed = sort(unique(pmin(unlist(lapply(views, `[[`, "seen")), H))))
+  })
+  horizons <- sort(unique(unlist(lapply(folds, `[[`, "needed"))))
+  # one chunk per worker (each stacks the recordings once), the horizons
+  # dealt out in turn so that every chunk has short and long ones
+  workers <- if (requireNamespace("future", quietly = TRUE)) future::nbrOfWorkers() else 1L
+  n_chunks <- min(length(horizons), max(1L, workers))
+  chunks <- unname(split(horizons, rep_len(seq_len(n_chunks), length(horizons))))
+  p <- hm_progressor(length(horizons))
+  parts <- future.apply::future_lapply(chunks, function(hs) {
+    prefix <- prefix_source(x)
+    lapply(hs, function(h) {
+      out <- early_horizon_predictions(prefix, h, at, cls, levels, folds)
+      p(sprintf("horizon %d (%d frames)", h, max(horizons)))
+      out
+    })
+  }, future.seed = TRUE)
+  preds <- unlist(parts, recursive = FALSE)
+  names(preds) <- unlist(chunks)
+  # the counts of every fold and view from the predictions at each
+  # recording's horizon
+  do.call(rbind, lapply(seq_along(folds), function(f) {
+    fo <- folds[[f]]
+    do.call(rbind, lapply(fo$views, function(v) {
+      h <- pmin(v$seen, fo$H)
+      pred <- character(length(h))
+      for (hh in unique(h)) {
+        at_h <- h == hh
+        pred[at_h] <- preds[[as.character(hh)]][[f]][at_h]
+      }
+      data.frame(scale = v$scale, value = v$value, correct = sum(pred == truth[fo$rows]),
+                 n = length(h), frames = sum(v$seen))
+    }))
+  }))
+}
+
+# At one horizon: the predicted class of every held-out recording of every
+# fold that needs this horizon (NULL for the others).
+early_horizon_predictions <- function(prefix, h, at, cls, levels, folds) {
+  F <- prefix_features(prefix, h, at)
+  centre <- colMeans(F)
+  Fc <- F - rep(centre, each = nrow(F))
+  K <- length(levels)
+  held <- lapply(folds, function(fo) lda_moments(Fc[fo$rows, , drop = FALSE], cls[fo$rows], K))
+  total <- Reduce(lda_moments_plus, held)
+  in_folds <- sort(unlist(lapply(folds, `[[`, "rows")))
+  if (length(in_folds) < nrow(Fc)) {  # recordings never held out (no fold holds them)
+    rest <- setdiff(seq_len(nrow(Fc)), in_folds)
+    total <- lda_moments_plus(total, lda_moments(Fc[rest, , drop = FALSE], cls[rest], K))
+  }
+  lapply(seq_along(folds), function(f) {
+    fo <- folds[[f]]
+    if (!h %in% fo$needed) return(NULL)
+    train <- setdiff(seq_len(nrow(Fc)), fo$rows)
+    fit <- lda_from_moments(lda_moments_minus(total, held[[f]]), Fc, train, cls[train], levels, centre)
+    top_class(fit$classes, shrunk_lda_scores(fit, F[fo$rows, , drop = FALSE]))
+  })
 }
 
 #' @export

@@ -15,7 +15,9 @@
 #'
 #' * **discriminability** (`mmd`): the squared maximum mean discrepancy
 #'   (Gretton et al. 2012, unbiased estimate) with a Gaussian kernel between
-#'   the features of the two samples: the posture at 25%, 50%, 75% and 100%
+#'   the features of the two samples (at most 300 recordings of each, a random
+#'   subsample beyond, as its cost grows with the square of the sample): the
+#'   posture at 25%, 50%, 75% and 100%
 #'   of the motion and the log duration, each standardised by the held-out
 #'   recordings' spread; the kernel's bandwidth is the median distance
 #'   between held-out recordings, the same for both comparisons. Unlike a
@@ -62,6 +64,9 @@
 #' subjects, else stratified by recording; `split`, `folds`, `seed`), fits
 #' each model of `fit` on each fold's training recordings, measures against
 #' its held-out ones, and averages every measure over the folds.
+#'
+#' A progress bar (one step per grasp type, through `progressr`) appears
+#' after 2 s; `options(handmotion.progress = FALSE)` turns it off.
 #'
 #' @param models A `grasp_models` set ([fit_grasp_models()]) or a named list
 #'   of them to compare (e.g. `list(thesis = m1, copula = m2)`); or a
@@ -137,7 +142,8 @@ evaluate_generation <- function(models, held_out = NULL, training = NULL, n = NU
     hm_warn(c("{cli::qty(length(flat))}Channel{?s} {.val {flat}} {?is/are} constant in every recording: left out of the correlation measures.",
               i = "{cli::qty(length(flat))}The other measures use {?it/them} as recorded."), "constant_channels", channels = flat)
   }
-  with_seed(seed, evaluate_generation_impl(sets, held_out, training, types, n, reps, overlong))
+  with_progress_shown(with_seed(seed, evaluate_generation_impl(sets, held_out, training, types, n, reps,
+                                                               overlong)))
 }
 
 evaluate_generation_impl <- function(sets, held_out, training, types, n, reps, overlong) {
@@ -147,8 +153,10 @@ evaluate_generation_impl <- function(sets, held_out, training, types, n, reps, o
                             ty, n, reps, overlong)
   })
   rows <- list()
+  p <- hm_progressor(length(types))
   for (i in seq_along(types)) {
     ty <- types[i]
+    p(sprintf("type %d of %d", i, length(types)))
     ho <- real_sets[[i]]$held_out
     real <- real_sets[[i]]$training
     n_ty <- length(real[[1]])
@@ -251,14 +259,14 @@ generation_measures <- function(samples, ref, lda, type, limits) {
   one <- function(x) {
     F <- generation_features(x)
     Z <- sweep(sweep(F, 2, ref$centre), 2, ref$spread, "/")
-    mmd <- mmd_test(Z, ref$Z, ref$bandwidth)
+    mmd <- mmd_test(mmd_subsample(Z), mmd_subsample(ref$Z), ref$bandwidth)
     list(mmd = mmd$mmd, mmd_p = mmd$p,
          posture_cor_gap = cor_gap(varying_cor(final_postures(x)), ref$posture_cor),
          velocity_cor_gap = cor_gap(velocity_correlation(x), ref$velocity_cor),
          recognised = mean(lda_class(lda, F) == type),
          outside_limits = limit_share(x, limits),
          log_jerk = stats::median(log_jerk(x)),
-         duration_ks = suppressWarnings(stats::ks.test(x$meta$n_frames / x$rate, ref$durations)$statistic[[1]]))
+         duration_ks = ks_distance(x$meta$n_frames / x$rate, ref$durations))
   }
   res <- lapply(samples, one)
   stats::setNames(lapply(names(res[[1]]), function(k) mean(vapply(res, `[[`, numeric(1), k))),
@@ -277,25 +285,33 @@ final_postures <- function(x) {
 # averaged over recordings (pairs undefined in a recording are skipped). The
 # profile is the change of each angle over each tenth of the motion, so
 # frame-to-frame sensor noise (which would decorrelate recorded velocities
-# but not the smooth generated ones) does not enter.
+# but not the smooth generated ones) does not enter. All recordings at once:
+# each recording's profile columns are centred and scaled to unit length,
+# so the sum over recordings of their correlation matrices is one cross
+# product of the stacked profiles (a cor() per recording was a quarter of
+# evaluate_generation()'s time); a DoF that does not move in a recording
+# has no correlation there and is left out of that recording's count.
 velocity_correlation <- function(x) {
   p <- length(x$dofs)
-  acc <- matrix(0, p, p)
-  cnt <- matrix(0, p, p)
+  recs <- x$recordings[vapply(x$recordings, nrow, integer(1)) >= 4L]
+  out <- matrix(NA_real_, p, p, dimnames = list(x$dofs, x$dofs))
+  if (!length(recs)) return(out)
   at <- seq(0, 1, by = 0.1)
-  for (r in x$recordings) {
-    if (nrow(r) < 4L) next
+  D <- do.call(rbind, lapply(recs, function(r) {
     pos <- 1 + at * (nrow(r) - 1)
     lo <- floor(pos)
     w <- pos - lo
     prof <- r[lo, , drop = FALSE] * (1 - w) + r[pmin(lo + 1L, nrow(r)), , drop = FALSE] * w
-    C <- varying_cor(diff(prof))
-    ok <- is.finite(C)
-    acc[ok] <- acc[ok] + C[ok]
-    cnt <- cnt + ok
-  }
-  out <- acc / cnt
-  dimnames(out) <- list(x$dofs, x$dofs)
+    diff(prof)
+  }))
+  m <- length(at) - 1L
+  rec <- rep(seq_along(recs), each = m)
+  D <- D - rowsum(D, rec, reorder = FALSE)[rec, , drop = FALSE] / m
+  len <- sqrt(rowsum(D^2, rec, reorder = FALSE))
+  ok <- len > 0 & is.finite(len)
+  D <- D / len[rec, , drop = FALSE]
+  D[!ok[rec, , drop = FALSE]] <- 0
+  out[] <- crossprod(D) / crossprod(ok * 1)
   out
 }
 
@@ -306,12 +322,24 @@ cor_gap <- function(a, b) {
   mean(d[is.finite(d)])
 }
 
+# Log10 mean squared jerk (third difference, per second cubed) of every
+# recording, from the recordings stacked: the third differences of the
+# stacked frames are each recording's own wherever the four frames belong to
+# one recording (the same arithmetic as diff(r, differences = 3)).
 log_jerk <- function(x) {
-  vapply(x$recordings, function(r) {
-    if (nrow(r) < 5L) return(NA_real_)
-    j <- diff(r, differences = 3) * x$rate^3
-    log10(mean(j^2))
-  }, numeric(1))
+  nk <- vapply(x$recordings, nrow, integer(1))
+  out <- stats::setNames(rep(NA_real_, length(nk)), names(x$recordings))
+  use <- nk >= 5L
+  if (!any(use)) return(out)
+  S <- do.call(rbind, x$recordings[use])
+  j <- diff(S, differences = 3) * x$rate^3
+  n <- nk[use]
+  rec <- rep(seq_along(n), n)
+  # row t of j spans frames t..t+3: keep those inside one recording
+  keep <- rec[seq_len(nrow(j))] == rec[seq_len(nrow(j)) + 3L]
+  ss <- rowsum(rowSums(j[keep, , drop = FALSE]^2), rec[seq_len(nrow(j))][keep], reorder = FALSE)
+  out[use] <- log10(ss[, 1] / ((n - 3) * ncol(S)))
+  out
 }
 
 limit_share <- function(x, limits) {
@@ -320,22 +348,63 @@ limit_share <- function(x, limits) {
 }
 
 # Unbiased squared MMD with a Gaussian kernel of the given bandwidth, and
-# its permutation p-value.
+# its permutation p-value. Every permutation (the observed split first) is a
+# column of 0/1 memberships z of the first sample, and its three kernel sums
+# are quadratic forms: sum(K[a, a]) = z'Kz, sum(K[b, b]) = (1-z)'K(1-z),
+# sum(K[a, b]) = z'K(1-z), all from one product K Z. (Indexing K[a, a] per
+# permutation was two thirds of evaluate_generation()'s time.) The
+# permutations are the same sample.int() draws as before, so the p-values
+# are the same up to rounding ties.
 mmd_test <- function(X, Y, bandwidth, permutations = 200L) {
   n <- nrow(X)
   m <- nrow(Y)
-  K <- exp(-as.matrix(stats::dist(rbind(X, Y)))^2 / (2 * bandwidth^2))
-  stat <- function(i) {
-    a <- i[seq_len(n)]
-    b <- i[n + seq_len(m)]
-    Kaa <- K[a, a]
-    Kbb <- K[b, b]
-    (sum(Kaa) - sum(diag(Kaa))) / (n * (n - 1)) + (sum(Kbb) - sum(diag(Kbb))) / (m * (m - 1)) -
-      2 * mean(K[a, b])
-  }
-  obs <- stat(seq_len(n + m))
-  perm <- vapply(seq_len(permutations), function(k) stat(sample.int(n + m)), numeric(1))
-  list(mmd = obs, p = (1 + sum(perm >= obs)) / (1 + permutations))
+  N <- n + m
+  K <- exp(-squared_distances(rbind(X, Y)) / (2 * bandwidth^2))
+  Z <- matrix(0, N, permutations + 1L)
+  Z[seq_len(n), 1L] <- 1
+  for (k in seq_len(permutations)) Z[sample.int(N)[seq_len(n)], k + 1L] <- 1
+  KZ <- K %*% Z
+  zKz <- colSums(Z * KZ)                 # sum(K[a, a])
+  total <- sum(K)
+  row_a <- colSums(KZ)                   # sum(K[, a]) = sum(K[a, a]) + sum(K[b, a])
+  ab <- row_a - zKz                      # sum(K[a, b])
+  bb <- total - 2 * ab - zKz             # sum(K[b, b])
+  dg <- diag(K)
+  da <- colSums(Z * dg)
+  db <- sum(dg) - da
+  stat <- (zKz - da) / (n * (n - 1)) + (bb - db) / (m * (m - 1)) - 2 * ab / (n * m)
+  obs <- stat[1L]
+  list(mmd = obs, p = (1 + sum(stat[-1L] >= obs)) / (1 + permutations))
+}
+
+# The MMD's cost is quadratic in the sample sizes (every pair, for every
+# permutation); beyond `cap` recordings a sample enters through a random
+# subsample of `cap`, so the evaluation of ten times the data costs about
+# ten times as much. The default data (at most about 90 held-out recordings
+# of a type) never reach it, and then no random number is drawn.
+mmd_cap <- 300L
+mmd_subsample <- function(Z, cap = mmd_cap) {
+  if (nrow(Z) <= cap) return(Z)
+  Z[sort(sample.int(nrow(Z), cap)), , drop = FALSE]
+}
+
+# All squared Euclidean distances between the rows of A, from one cross
+# product (as.matrix(dist()) cost as much as the whole MMD test).
+squared_distances <- function(A) {
+  s <- rowSums(A^2)
+  D <- -2 * tcrossprod(A) + s
+  D <- t(D) + s
+  D[D < 0] <- 0
+  diag(D) <- 0
+  D
+}
+
+# The two-sample Kolmogorov-Smirnov statistic: the largest gap between the
+# two empirical distribution functions over the pooled values (what
+# ks.test()$statistic gives, without the p-value and its tie warnings).
+ks_distance <- function(a, b) {
+  z <- sort(unique(c(a, b)))
+  max(abs(findInterval(z, sort(a)) / length(a) - findInterval(z, sort(b)) / length(b)))
 }
 
 # The recognisability yardstick: the package's shrinkage LDA

@@ -32,8 +32,10 @@
 #' (`$accuracy_ci`).
 #'
 #' Folds run with `future.apply::future_lapply()` (set your own
-#' `future::plan()`; none is set here) with `future.seed = TRUE`, and report
-#' progress through `progressr` (wrap the call in `progressr::with_progress()`).
+#' `future::plan()`; none is set here) with `future.seed = TRUE`, and show a
+#' progress bar, one step per fold, through `progressr` (after 2 s; its look
+#' follows [progressr::handlers()]; `options(handmotion.progress = FALSE)`
+#' turns it off).
 #'
 #' Bookkeeping, never silent: unlabelled recordings are not used (counted in
 #' `$n_unlabelled`); recordings without a subject are never held out but are
@@ -101,12 +103,14 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
   subj <- x$meta$subject
   groups <- make_folds(x, split, folds, seed, subjects = subjects, call = call)
 
-  p <- progressr::progressor(steps = length(groups))
-  fold_results <- future.apply::future_lapply(seq_along(groups), function(f) {
-    res <- run_fold(x, groups[[f]], method, fit_args)
-    p(sprintf("fold %d of %d", f, length(groups)))
-    res
-  }, future.seed = TRUE)
+  fold_results <- with_progress_shown({
+    p <- hm_progressor(length(groups))
+    future.apply::future_lapply(seq_along(groups), function(f) {
+      res <- run_fold(x, groups[[f]], method, fit_args)
+      p(sprintf("fold %d of %d", f, length(groups)))
+      res
+    }, future.seed = TRUE)
+  })
 
   predictions <- do.call(rbind, lapply(seq_along(fold_results), function(f) {
     d <- fold_results[[f]]$predictions

@@ -8,9 +8,10 @@
 #' Splits `x` by grasp type and calls [fit_grasp_model()] on each type through
 #' [future.apply::future_lapply()], so the types are fitted in parallel under
 #' whatever [future::plan()] the user has set (sequentially by default).
-#' Progress is reported through `progressr` (wrap the call in
-#' [progressr::with_progress()] or set `progressr::handlers(global = TRUE)` to
-#' see it). A type whose fit fails with a handmotion error (for example too few
+#' A progress bar (one step per type, through `progressr`, so it works from
+#' future workers; its look follows [progressr::handlers()]) appears when the
+#' fit takes more than 2 s; `options(handmotion.progress = FALSE)` turns it
+#' off. A type whose fit fails with a handmotion error (for example too few
 #' usable recordings) stays in the set as a failed model (class
 #' `grasp_model_failed`, with the error's message and class), like a null
 #' model in a fable, instead of stopping the others: `print()` and `summary()`
@@ -107,13 +108,15 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   cached <- if (is.null(paths)) rep(FALSE, length(types)) else file.exists(paths)
   fits[cached] <- lapply(paths[cached], readRDS)
   todo <- which(!cached)
-  p <- progressr::progressor(steps = length(todo))
   if (length(todo)) {
-    # (a top-level function and only each type's own data go to the workers)
-    fits[todo] <- future.apply::future_mapply(
-      fit_one_type, parts[todo], (paths %||% rep(NA_character_, length(types)))[todo],
-      MoreArgs = list(args = args, progress = p), SIMPLIFY = FALSE, USE.NAMES = FALSE,
-      future.seed = if (is.null(streams)) TRUE else streams[todo])
+    fits[todo] <- with_progress_shown({
+      p <- hm_progressor(length(todo))
+      # (a top-level function and only each type's own data go to the workers)
+      future.apply::future_mapply(
+        fit_one_type, parts[todo], (paths %||% rep(NA_character_, length(types)))[todo],
+        MoreArgs = list(args = args, progress = p), SIMPLIFY = FALSE, USE.NAMES = FALSE,
+        future.seed = if (is.null(streams)) TRUE else streams[todo])
+    })
   }
   # a failed type stays in the set, as a record of why
   failed <- vapply(fits, inherits, logical(1), what = "error")

@@ -65,7 +65,7 @@ recognizer_horizon <- function(x, horizon, call) {
 # recordings are classified at (the others stay NULL, and such a recogniser
 # never leaves it).
 recognizer_fit <- function(x, y, at, H, horizons = seq_len(H)) {
-  prefix <- prefix_arrays(x, max(horizons))
+  prefix <- prefix_source(x)
   fits <- vector("list", H)
   fits[horizons] <- lapply(horizons, function(h) fit_shrunk_lda(prefix_features(prefix, h, at), y))
   first <- fits[[horizons[1]]]
@@ -74,37 +74,48 @@ recognizer_fit <- function(x, y, at, H, horizons = seq_len(H)) {
             class = "grasp_recognizer")
 }
 
-# Every recording's first H frames, continued by its last posture (n x H x p),
-# and the distance each DoF has travelled up to each frame (same shape).
-prefix_arrays <- function(x, H) {
-  n <- length(x$recordings)
-  p <- length(x$dofs)
-  A <- array(0, c(n, H, p))
-  for (i in seq_len(n)) {
-    r <- x$recordings[[i]]
-    A[i, , ] <- r[pmin(seq_len(H), nrow(r)), , drop = FALSE]
+# What the features of every horizon are read from: the recordings stacked
+# (frames x DoFs, as doubles) and the distance each DoF has travelled up to
+# each frame, with each recording's first row and length. A recording cut
+# after h frames and continued by its last posture (the hand has stopped)
+# has its frame min(t, n) at time t and its travel up to min(h, n); nothing
+# of size recordings x horizons x DoFs is built (the former prefix arrays
+# took more time than the fits and n x H x p x 16 bytes of memory).
+prefix_source <- function(x) {
+  recs <- x$recordings
+  nk <- vapply(recs, nrow, integer(1))
+  S <- do.call(rbind, recs)
+  storage.mode(S) <- "double"
+  S <- unname(S)
+  starts <- cumsum(nk) - nk
+  travel <- matrix(0, nrow(S), ncol(S))
+  # frame by frame over all recordings at once, in the order of the former
+  # running sum (so the travel is the same to the last bit)
+  for (t in seq_len(max(c(nk, 1L)))[-1L]) {
+    r <- starts[nk >= t] + t
+    travel[r, ] <- travel[r - 1L, , drop = FALSE] + abs(S[r, , drop = FALSE] - S[r - 1L, , drop = FALSE])
   }
-  C <- array(0, c(n, H, p))
-  if (H > 1L) {
-    steps <- abs(A[, -1L, , drop = FALSE] - A[, -H, , drop = FALSE])
-    for (t in 2:H) C[, t, ] <- C[, t - 1L, ] + steps[, t - 1L, ]
-  }
-  list(frames = A, travel = C)
+  list(frames = S, travel = travel, starts = starts, n_frames = nk)
 }
 
-# Features at horizon h for the given rows of the prefix arrays: the
-# postures at fractions `at` of the h frames (ordered fraction-fastest: DoF 1
-# at every fraction, then DoF 2, ...), then the log travel of every DoF.
-# Training and batch prediction both come through here; a live stream
-# computes the same numbers incrementally (stream_features()).
-prefix_features <- function(prefix, h, at, rows = seq_len(dim(prefix$frames)[1])) {
-  A <- prefix$frames
+# Features at horizon h for the given recordings: the postures at fractions
+# `at` of the h frames (ordered fraction-fastest: DoF 1 at every fraction,
+# then DoF 2, ...), then the log travel of every DoF. Training and batch
+# prediction both come through here; a live stream computes the same
+# numbers incrementally (stream_features()).
+prefix_features <- function(prefix, h, at, rows = seq_along(prefix$n_frames)) {
   n <- length(rows)
+  p <- ncol(prefix$frames)
   ix <- fraction_index(h, at)
-  P <- A[rows, ix$lo, , drop = FALSE] * rep(1 - ix$w, each = n) +
-    A[rows, ix$hi, , drop = FALSE] * rep(ix$w, each = n)
-  dim(P) <- c(n, length(at) * dim(A)[3])
-  cbind(P, log1p(matrix(prefix$travel[rows, h, ], n)))
+  nk <- prefix$n_frames[rows]
+  st <- prefix$starts[rows]
+  frame <- function(t) st + pmin(rep(t, each = n), nk)   # rows of frame t of every recording
+  lo <- prefix$frames[frame(ix$lo), , drop = FALSE]
+  hi <- prefix$frames[frame(ix$hi), , drop = FALSE]
+  P <- lo * rep(1 - ix$w, each = n) + hi * rep(ix$w, each = n)
+  # rows are (recording, fraction) with recording fastest: columns DoF-major
+  dim(P) <- c(n, length(at) * p)
+  cbind(P, log1p(prefix$travel[st + pmin(h, nk), , drop = FALSE]))
 }
 
 # The same features of one stream's frames seen so far (rows of `buf`).
@@ -138,7 +149,7 @@ recognizer_scores <- function(object, x, seen) {
   s <- matrix(NA_real_, length(seen), length(object$classes),
               dimnames = list(x$meta$id, object$classes))
   seen <- pmin(seen, object$horizon) # past the horizon: the first `horizon` frames
-  prefix <- prefix_arrays(x, max(seen))
+  prefix <- prefix_source(x)
   for (h in unique(seen)) {
     rows <- which(seen == h)
     s[rows, ] <- shrunk_lda_scores(object$fits[[h]], prefix_features(prefix, h, object$at, rows))

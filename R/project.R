@@ -2,8 +2,8 @@
 # warp each recording to the model's time by the model's MEAN warping
 # function, rescaled to the recording's own length, then project every DoF on
 # its FPCs. The residual norms give the L2 distance of eq. 4.4 over the whole
-# hand, which the FPCA classifier ranks. All recordings are handled at once:
-# they are stacked into one matrix and interpolated by index arithmetic.
+# hand, which the FPCA classifier ranks. All recordings of a set go to the
+# native kernel in one call, which reads them from their list in place.
 
 #' Project recordings onto a grasp model
 #'
@@ -64,7 +64,9 @@ project.grasp_model <- function(object, new_data, details = TRUE, ...) {
   check_grasps(new_data, "new_data", call = call)
   validate_projection_model(object, call)
   check_projection_dofs(object, new_data, call)
-  project_stacked(object, stack_recordings(new_data, object$dofs), details = details)
+  # recordings projected on a model of trimmed motion are trimmed alike
+  if (identical(object$settings$motion, "trim")) new_data <- trim_motion(new_data)
+  project_recordings(object, new_data, details = details)
 }
 
 #' @rdname project
@@ -92,33 +94,37 @@ project.default <- function(object, new_data, ...) {
 }
 
 # Every fitted model of a set projects `newdata`: each model is validated
-# and the recordings are stacked once per DoF set (all models share one in
-# practice). `keep` reduces each projection as it is made (the FPCA
-# classifier keeps only the distances: all scores of every model would be
-# n x 33 x p x ncomp numbers); with `keep_going` a model that cannot project
-# gives its error in its place instead of stopping the rest. `time_weights`,
-# a function of the model, gives each its weights on the template time (the
-# weighted FPCA distance); NULL is eq. 4.4.
+# and projects the recordings straight from their list (R/project.R's
+# kernel reads them in place). `keep` reduces each projection as it is made
+# (the FPCA classifier keeps only the distances: all scores of every model
+# would be n x 33 x p x ncomp numbers), and `distance_only` tells the kernel
+# not to return the rest at all; with `keep_going` a model that cannot
+# project gives its error in its place instead of stopping the rest.
+# `time_weights`, a function of the model, gives each its weights on the
+# template time (the weighted FPCA distance); NULL is eq. 4.4. One progress
+# step per model (`progress`, a progressr progressor or NULL).
 project_models <- function(models, newdata, arg, details, call, keep = identity, keep_going = FALSE,
-                           time_weights = NULL) {
+                           time_weights = NULL, distance_only = FALSE, progress = NULL) {
   models <- fitted_models(models)
   if (length(models) == 0L) {
     hm_abort("{.arg {arg}} holds no fitted grasp models.", "bad_input", argument = arg, call = call)
   }
-  stacks <- list()
   # recordings projected on models fitted to trimmed motion are trimmed alike
   if (any(vapply(models, function(m) identical(m$settings$motion, "trim"), logical(1)))) {
     newdata <- trim_motion(newdata)
   }
+  recs <- double_recordings(newdata)
   one <- function(m) {
     validate_projection_model(m, call)  # before the native kernel
     check_projection_dofs(m, newdata, call)
-    key <- paste(m$dofs, collapse = "\r")
-    if (is.null(stacks[[key]])) stacks[[key]] <<- stack_recordings(newdata, m$dofs)
-    keep(project_stacked(m, stacks[[key]], details = details,
-                         time_weights = if (!is.null(time_weights)) time_weights(m)))
+    keep(project_recordings(m, newdata, details = details, distance_only = distance_only, recs = recs,
+                            time_weights = if (!is.null(time_weights)) time_weights(m)))
   }
-  lapply(models, function(m) if (keep_going) tryCatch(one(m), error = function(e) e) else one(m))
+  lapply(models, function(m) {
+    out <- if (keep_going) tryCatch(one(m), error = function(e) e) else one(m)
+    if (!is.null(progress)) progress()
+    out
+  })
 }
 
 # A model whose basis was changed after fitting would reach the native kernel
@@ -151,87 +157,71 @@ check_projection_dofs <- function(model, x, call) {
   }
 }
 
-# All recordings stacked into one (sum n_k) x p matrix with their offsets, so
-# interpolation for every recording is one vectorised step.
-stack_recordings <- function(x, dofs) {
+# The recordings as double matrices, as the kernel reads them (simulated
+# and read data already are: then this is the list itself, no copy).
+double_recordings <- function(x) {
   recs <- x$recordings
-  n_frames <- x$meta$n_frames
-  cols <- match(dofs, x$dofs)
-  mat <- do.call(rbind, recs)
-  if (!identical(cols, seq_along(x$dofs))) mat <- mat[, cols, drop = FALSE]
-  storage.mode(mat) <- "double"
-  list(values = mat, n_frames = n_frames, starts = cumsum(n_frames) - n_frames, ids = x$meta$id)
+  if (all(vapply(recs, is.double, logical(1)))) return(recs)
+  lapply(recs, function(r) {
+    storage.mode(r) <- "double"
+    r
+  })
 }
 
-# Where every stacked recording is read on the model's template grid with the
-# model's mean warp: for template point s of recording i (entry s + L (i - 1)),
-# the stacked rows either side and the weight of the later one. warp_dof()
-# then interpolates one DoF at a time, straight into an L x n matrix.
-warp_index <- function(model, st) {
+# Where every recording is read on the model's template grid: the model's
+# mean warp normalised to [0, 1] (made non-decreasing), so template point s
+# of a recording of m frames sits at frame 1 + u_s (m - 1), read by linear
+# interpolation between the frames either side (in the kernel).
+warp_positions <- function(model) {
   L <- model$target_length
   wbar <- warp_basis(model)$mean
   span <- wbar[L] - wbar[1]
   u <- if (is.finite(span) && span > 0) (wbar - wbar[1]) / span else seq(0, 1, length.out = L)
-  u <- pmin(pmax(cummax(u), 0), 1)
-  nk <- st$n_frames
-  n <- length(nk)
-  # plain vectors, entry s + L (i - 1): pmin() on matrices costs more than the rest
-  times <- 1 + as.vector(outer(u, nk - 1))                 # frame position on recording i
-  i <- floor(times)
-  cap <- rep(pmax(nk - 1L, 1L), each = L)
-  over <- i > cap
-  i[over] <- cap[over]
-  f <- times - i
-  f[rep(nk == 1L, each = L)] <- 0
-  start <- rep(st$starts, each = L)
-  rows <- i + start
-  nxt <- rows + 1
-  last <- start + rep(nk, each = L)
-  over <- nxt > last
-  nxt[over] <- last[over]
-  f <- as.vector(f)
-  list(rows = as.integer(rows), nxt = as.integer(nxt), f = f, g = 1 - f, L = L, n = n)
+  as.double(pmin(pmax(cummax(u), 0), 1))
 }
 
-# One DoF of every recording warped onto the template grid: L x n.
-warp_dof <- function(ix, v) {
-  y <- v[ix$rows] * ix$g + v[ix$nxt] * ix$f
-  dim(y) <- c(ix$L, ix$n)
-  y
-}
-
-# time_weights: optional weights on the model's template grid for the
-# residual norms (the weighted FPCA distance); NULL is eq. 4.4.
-project_stacked <- function(model, st, details = TRUE, time_weights = NULL) {
+# The projection of every recording of x on one model, in the native kernel
+# (src/project-kernel.c: warp, centre, scores, residual norms, and the
+# distance over DoFs, recording by recording). time_weights: optional weights
+# on the model's template grid for the residual norms (the weighted FPCA
+# distance); NULL is eq. 4.4. distance_only: the kernel returns only the
+# distances (what the classifier ranks). recs: double_recordings(x), when
+# the caller projects the same recordings on several models.
+project_recordings <- function(model, x, details = TRUE, time_weights = NULL, distance_only = FALSE,
+                               recs = double_recordings(x)) {
   L <- model$target_length
-  n <- length(st$n_frames)
+  n <- length(recs)
   p <- length(model$dofs)
   k <- model$settings$ncomp
-  ix <- warp_index(model, st)
+  ids <- x$meta$id
   # quadrature weights per DoF; a constant DoF's basis has zero components,
   # so the kernel gives it zero scores and its distance to the mean
   w <- vapply(model$fpca, function(f) as.double(f$weights), numeric(L))
+  dim(w) <- c(L, p)
   B <- model_basis(model)
-  res <- .Call(hm_project_batch, st$values, ix$rows, ix$nxt, ix$f, B$mean,
-               B$components, w, w * (time_weights %||% 1))
-  scores <- array(res$scores, c(n, p, k), dimnames = list(st$ids, model$dofs, paste0("FPC", seq_len(k))))
-  resid <- matrix(res$residual, n, p, dimnames = list(st$ids, model$dofs))
+  mode <- if (details) 2L else if (distance_only) 0L else 1L
+  res <- .Call(hm_project_warped, recs, match(model$dofs, x$dofs), warp_positions(model),
+               B$mean, B$components, w, w * (time_weights %||% 1), mode)
+  distance <- stats::setNames(res$distance, ids)
+  if (distance_only) {
+    return(structure(list(distance = distance, ids = ids, grasp = model$grasp, target_length = L),
+                     class = "grasp_projection"))
+  }
+  scores <- array(res$scores, c(n, p, k), dimnames = list(ids, model$dofs, paste0("FPC", seq_len(k))))
+  resid <- matrix(res$residual, n, p, dimnames = list(ids, model$dofs))
+  out <- list(scores = scores, residual = resid, distance = distance,
+              ids = ids, grasp = model$grasp, target_length = L)
   if (details) {
-    warped <- fitted <- matrix(0, n * L, p)
+    warped <- res$warped
+    fitted <- matrix(0, n * L, p)
     for (j in seq_len(p)) {
-      warped[, j] <- warp_dof(ix, st$values[, j])
       fitted[, j] <- as.vector(matrix(B$mean[, j], L, n) +
                                  matrix(B$components[, j, ], L) %*% t(matrix(scores[, j, ], n, k)))
     }
-  }
-  out <- list(scores = scores, residual = resid, distance = sqrt(rowSums(resid^2)),
-              ids = st$ids, grasp = model$grasp, target_length = L)
-  names(out$distance) <- st$ids
-  if (details) {
     colnames(warped) <- model$dofs
     colnames(fitted) <- model$dofs
-    out$warped <- stats::setNames(split_rows(warped, rep.int(L, n)), st$ids)
-    out$fitted <- stats::setNames(split_rows(fitted, rep.int(L, n)), st$ids)
+    out$warped <- stats::setNames(split_rows(warped, rep.int(L, n)), ids)
+    out$fitted <- stats::setNames(split_rows(fitted, rep.int(L, n)), ids)
   }
   structure(out, class = "grasp_projection")
 }

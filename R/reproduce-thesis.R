@@ -39,8 +39,14 @@
 #'
 #' **Progress.** While it works, `reproduce_thesis()` prints a line as each
 #' step starts (to standard error): the step, the time so far and an
-#' estimate of the time left (from each step's share of a full run's time),
-#' and at the end where the report was written.
+#' estimate of the time left, and at the end where the report was written;
+#' within a long step (the held-out folds, the horizons of early
+#' recognition, the chunks of the page after the last step) a line at most
+#' every 15 s. The estimate starts from a cost model of the design
+#' (recordings, types, folds, workers) and follows the measured pace: the
+#' time the finished steps took against the model, and within a step the
+#' rate of its own folds or horizons. `progress = FALSE` or
+#' `options(handmotion.progress = FALSE)` keeps it silent.
 #'
 #' The vignette `vignette("reproduce-thesis", package = "handmotion")`
 #' includes the same report; there the design can be made smaller through
@@ -106,13 +112,29 @@ reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, los
   params <- list(subjects = settings$subjects, seed = settings$seed,
                  loso_folds = if (is.null(settings$loso_folds)) 0L else settings$loso_folds,
                  grasps = settings$grasps, output_dir = output_dir)
-  bar <- report_progress(progress)
+  show <- progress && progress_wanted()
+  bar <- report_progress(show)
   bar$begin(settings)
+  # the long calls inside count their steps (progressr) for this printer
+  # instead of drawing bars of their own; every chunk says it starts
+  old_opts <- options(handmotion.progress_listener = TRUE, progressr.enable = show)
+  on.exit(options(old_opts), add = TRUE)
+  old_hook <- knitr::knit_hooks$get("handmotion_chunk")
+  knitr::knit_hooks$set(handmotion_chunk = function(before, options, envir) {
+    if (before) report_chunk_signal(options$label)
+    NULL
+  })
+  on.exit(knitr::knit_hooks$set(handmotion_chunk = old_hook), add = TRUE)
+  old_chunk <- knitr::opts_chunk$get("handmotion_chunk")
+  knitr::opts_chunk$set(handmotion_chunk = TRUE)
+  on.exit(knitr::opts_chunk$set(handmotion_chunk = old_chunk), add = TRUE)
   html <- withCallingHandlers(
     rmarkdown::render(input, output_file = "reproduce-thesis.html", output_dir = output_dir,
                       intermediates_dir = work, knit_root_dir = work, params = params,
                       envir = report_env(), quiet = quiet),
-    handmotion_report_step = function(cnd) bar$step(cnd$label))
+    handmotion_report_step = function(cnd) bar$step(cnd$label),
+    handmotion_report_chunk = function(cnd) bar$chunk(cnd$index, cnd$total),
+    progression = function(p) bar$tick(p))
   bar$done(html)
   html
 }

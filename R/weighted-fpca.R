@@ -38,8 +38,8 @@ fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ...,
   scale <- t(vapply(types, function(ty) {
     m <- models[[ty]]
     own <- x[x$meta$grasp == ty]
-    r <- project_stacked(m, stack_recordings(own, m$dofs), details = FALSE,
-                         time_weights = distance_time_weights(m$target_length, time))$residual
+    r <- project_recordings(m, own, details = FALSE,
+                            time_weights = distance_time_weights(m$target_length, time))$residual
     s2 <- colMeans(r^2)
     # a DoF the type reproduces exactly still gets a finite scale
     pmax(s2, 1e-6 * max(mean(s2), 1e-12))
@@ -64,6 +64,7 @@ distance_time_weights <- function(L, time) {
 weighted_fpca_distances <- function(object, x, call = rlang::caller_env()) {
   types <- rownames(object$scale)
   d <- project_models(object$models, x, "models", details = FALSE, call = call,
+                      progress = hm_progressor(length(object$models)),
                       time_weights = function(m) distance_time_weights(m$target_length, object$time),
                       keep = function(r) {
                         s2 <- object$scale[r$grasp, ]

@@ -15,6 +15,8 @@
 #   between commits.
 
 bench_quick <- identical(Sys.getenv("BENCH_QUICK"), "1")
+# no progress bars in the figures printed (R/progress.R)
+options(handmotion.progress = FALSE)
 
 # The size to use: `full` normally, `quick` under BENCH_QUICK=1.
 bq <- function(full, quick) if (bench_quick) quick else full

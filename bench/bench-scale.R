@@ -6,6 +6,10 @@
 # peak memory 4 GB or less. Also the EM iterations per mixture (SQUAREM-
 # accelerated, the stopping rule per observation, and above 1000 points the
 # starts race on a subsample: they grow far slower than the data).
+# Also (issue 36) early recognition (in 10 subject groups at both sizes) and
+# the naturalness evaluation of two model sets (fitted on the first two
+# thirds of the subjects, reps = 5), with their 10x / 1x ratios (goal: 12
+# or less, like classification).
 # Peak memory is the kernel's high-water mark of resident memory (VmHWM),
 # reset before each step (/proc/<pid>/clear_refs), for the main process and
 # for each worker.
@@ -25,10 +29,14 @@ reset_hwm <- function(pids) {
 }
 
 future::plan(future::multisession, workers = 2)
-workers <- unique(vapply(lapply(1:2, function(i) future::future({ Sys.sleep(0.5); Sys.getpid() })),
-                         future::value, numeric(1)))
+worker_pids <- function() {
+  unique(vapply(lapply(1:2, function(i) future::future({ Sys.sleep(0.5); Sys.getpid() })),
+                future::value, numeric(1)))
+}
+workers <- worker_pids()
 # warm-up: the first fit in a fresh worker loads the package there
-invisible(fit_grasp_models(simulate_grasps(subjects = 2, grasps = 1:2, seed = 9), seed = 1))
+warm_up <- function() invisible(fit_grasp_models(simulate_grasps(subjects = 2, grasps = 1:2, seed = 9), seed = 1))
+warm_up()
 
 measure <- function(subjects) {
   gc()
@@ -48,12 +56,34 @@ measure <- function(subjects) {
   t_cl <- system.time(cl <- classify(ms, g))
   mem_cl <- hwm_gb()
   acc <- mean(as.character(cl$predictions$predicted) == as.character(cl$predictions$truth))
+  # early recognition and the naturalness evaluation on forked workers (the
+  # recordings are not copied to them); early recognition in `early_folds`
+  # subject groups at both sizes: the same evaluation of ten times the data
+  # (leave-one-subject-out would also have ten times the folds)
+  future::plan(forked, workers = 2)
+  t_early <- system.time(evaluate_early_recognition(g, folds = early_folds))
+  sn <- as.integer(sub("^S", "", g$meta$subject))
+  train <- g[sn <= floor(2 * subjects / 3)]
+  held <- g[sn > floor(2 * subjects / 3)]
+  nat <- list(thesis = fit_grasp_models(train, seed = 1),
+              copula = fit_grasp_models(train, seed = 1, dependence = "copula"))
+  t_gen <- system.time(evaluate_generation(nat, held, train, reps = 5))
+  future::plan(future::multisession, workers = 2)
+  workers <<- worker_pids()
+  warm_up()
   c(recordings = length(g), simulate = t_sim[["elapsed"]], fit = t_fit[["elapsed"]],
     fit_cpu_main = cpu_of(t_fit), classify = t_cl[["elapsed"]], iter_median = stats::median(iters),
     iter_mean = mean(iters), at_cap = sum(iters >= 5000), mem_simulate = mem_sim, mem_fit = mem_fit,
-    mem_workers = mem_workers, mem_classify = mem_cl, accuracy = acc)
+    mem_workers = mem_workers, mem_classify = mem_cl, accuracy = acc, early = t_early[["elapsed"]],
+    early_cpu_main = cpu_of(t_early), generation = t_gen[["elapsed"]], generation_cpu_main = cpu_of(t_gen))
 }
-res <- vapply(sizes, measure, numeric(13))
+early_folds <- bq(10L, 3L)
+# ten times the recordings are 600 MB: more than future's default cap on
+# what a worker is given (forked workers share it anyway)
+options(future.globals.maxSize = Inf)
+# (plan() reads its strategy unevaluated: name it here)
+forked <- if (future::supportsMulticore()) future::multicore else future::multisession
+res <- vapply(sizes, measure, numeric(17))
 future::plan(future::sequential)
 
 labels <- c(recordings = "recordings", simulate = "simulate, elapsed (s)", fit = "fit, 2 workers, elapsed (s)",
@@ -61,7 +91,11 @@ labels <- c(recordings = "recordings", simulate = "simulate, elapsed (s)", fit =
             iter_median = "EM iterations per mixture, median", iter_mean = "EM iterations per mixture, mean",
             at_cap = "EM runs at the 5000 cap", mem_simulate = "peak memory, simulate (GB)",
             mem_fit = "peak memory, fit, main (GB)", mem_workers = "peak memory, fit, a worker (GB)",
-            mem_classify = "peak memory, classify, main (GB)", accuracy = "in-sample accuracy")
+            mem_classify = "peak memory, classify, main (GB)", accuracy = "in-sample accuracy",
+            early = sprintf("early recognition, %d folds, 2 workers, elapsed (s)", early_folds),
+            early_cpu_main = "early recognition, main-process CPU (s)",
+            generation = "evaluate_generation(), 2 sets, reps 5, elapsed (s)",
+            generation_cpu_main = "evaluate_generation(), CPU (s)")
 cat(sprintf("\n%-38s %10s %10s %10s\n", "", names(sizes)[1], names(sizes)[2], "ratio"))
 for (f in rownames(res)) {
   ratio <- res[f, 2] / res[f, 1]
@@ -70,6 +104,10 @@ for (f in rownames(res)) {
   bench_record(paste0(labels[[f]], ", 10x"), res[f, 2], unit)
   if (!f %in% c("recordings", "accuracy")) bench_record(paste0(labels[[f]], ", 10x / 1x"), ratio, "x")
 }
+growth <- res[c("classify", "early", "generation"), 2] / res[c("classify", "early", "generation"), 1]
+cat(sprintf("\ncost growth, 10x / 1x (goal 12 or less): classification %.1f (%s), early recognition %.1f (%s), naturalness evaluation %.1f (%s)\n",
+            growth[1], if (growth[1] <= 12) "met" else "MISSED", growth[2], if (growth[2] <= 12) "met" else "MISSED",
+            growth[3], if (growth[3] <= 12) "met" else "MISSED"))
 cat(sprintf("\n10x fit %.1f s (target 30 s: %s); main-process peak %.2f GB (target 4 GB: %s); load average %s\n",
             res["fit", 2], if (res["fit", 2] <= 30) "met" else "MISSED",
             max(res[c("mem_simulate", "mem_fit", "mem_classify"), 2]),

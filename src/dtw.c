@@ -343,6 +343,9 @@ SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window, SEXP full_) {
   for (int j = 0; j < L; j++) pc[j] = 0;
 
   for (int k = 0; k < N; k++) {
+    /* a batch of thousands of alignments takes seconds: let the user stop it
+     * (R_alloc'd workspace is released by R on the jump) */
+    if ((k & 63) == 63) R_CheckUserInterrupt();
     SEXP xk = VECTOR_ELT(recs, k);
     int n = nrows(xk);
     const double *x = REAL(xk);

@@ -19,7 +19,10 @@ SEXP hm_stall_lengths(SEXP warps); /* dba-prep.c */
 SEXP hm_copula_draw(SEXP n, SEXP root, SEXP grid, SEXP quantiles); /* copula-draw.c */
 SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SEXP comps,
                       SEXP weights, SEXP norm_weights); /* project-kernel.c */
+SEXP hm_project_warped(SEXP recs, SEXP cols, SEXP u, SEXP mean, SEXP comps, SEXP weights,
+                       SEXP norm_weights, SEXP mode); /* project-kernel.c */
 SEXP hm_byte_counts(SEXP x); /* byte-counts.c */
+SEXP hm_lda_w2(SEXP F, SEXP rows, SEXP cls, SEXP means, SEXP inv_s); /* lda-moments.c */
 
 static const R_CallMethodDef call_methods[] = {
   {"hm_dtw_pair", (DL_FUNC) &hm_dtw_pair, 3}, {"hm_dtw_batch", (DL_FUNC) &hm_dtw_batch, 4},
@@ -30,8 +33,10 @@ static const R_CallMethodDef call_methods[] = {
   {"hm_linear_mean", (DL_FUNC) &hm_linear_mean, 3},
   {"hm_stall_lengths", (DL_FUNC) &hm_stall_lengths, 1},
   {"hm_project_batch", (DL_FUNC) &hm_project_batch, 8},
+  {"hm_project_warped", (DL_FUNC) &hm_project_warped, 8},
   {"hm_copula_draw", (DL_FUNC) &hm_copula_draw, 4},
   {"hm_byte_counts", (DL_FUNC) &hm_byte_counts, 1},
+  {"hm_lda_w2", (DL_FUNC) &hm_lda_w2, 5},
   {NULL, NULL, 0}
 };
 

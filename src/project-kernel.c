@@ -22,6 +22,87 @@ static void need_real(SEXP x, R_xlen_t len, const char *what) {
     error("project kernel: %s must be a double vector of %lld values", what, (long long) len);
 }
 
+/* What the projection of one DoF needs, once per DoF: its mean curve,
+ * phi_c(s) w_s (the scores are plain dot products with it), phi_c(s) nw_s
+ * (NULL when the norm weights are the quadrature weights, as in eq. 4.4)
+ * and the Gram matrix G_cd = sum_s phi_c(s) phi_d(s) nw_s. */
+typedef struct {
+  const double *mu, *nw;
+  double *pw, *pn, *G;
+} dof_basis;
+
+static void fill_basis(dof_basis *b, const double *mu, const double *Pj, const double *w,
+                       const double *nw, int same, int L, int p, int k) {
+  b->mu = mu;
+  b->nw = nw;
+  b->pw = (double *) R_alloc((size_t) L * (k > 0 ? k : 1), sizeof(double));
+  b->pn = same ? NULL : (double *) R_alloc((size_t) L * (k > 0 ? k : 1), sizeof(double));
+  b->G = (double *) R_alloc((size_t) (k > 0 ? k * k : 1), sizeof(double));
+  for (int c = 0; c < k; c++) {
+    const double *phi = Pj + (R_xlen_t) L * p * c;
+    for (int s = 0; s < L; s++) {
+      b->pw[s + (R_xlen_t) L * c] = phi[s] * w[s];
+      if (!same) b->pn[s + (R_xlen_t) L * c] = phi[s] * nw[s];
+    }
+    for (int d = 0; d < k; d++) {
+      const double *phd = Pj + (R_xlen_t) L * p * d;
+      double g = 0;
+      for (int s = 0; s < L; s++) g += phi[s] * phd[s] * nw[s];
+      b->G[c + k * d] = g;
+    }
+  }
+}
+
+/* The one projection of a curve y (L points on the template grid): its k
+ * scores into a, and its residual norm returned; both entry points below
+ * come through here. With yc = y - mean, a_c = sum_s yc phi_c w,
+ * b_c = sum_s yc phi_c nw (= a_c in eq. 4.4) and r = yc - sum_c a_c phi_c,
+ *   sum_s r^2 nw = sum_s yc^2 nw - 2 sum_c a_c b_c + sum_cd a_c a_d G_cd,
+ * so one pass over the curve gives scores and norm (a second pass for the
+ * residual cost a third of classify()'s time). The subtraction loses digits
+ * only when the residual is tiny against the curve, and then only relative
+ * to the curve's norm (about 1e-8 of it); the scores are summed in the
+ * same order as before. */
+static double project_curve(const double *y, const dof_basis *b, int L, int k, double *a, double *bb) {
+  const double *mu = b->mu, *nw = b->nw, *pw = b->pw, *pn = b->pn;
+  double yy = 0;
+  if (k == 2 && !pn) { /* the default: two FPCs, eq. 4.4 */
+    const double *q0 = pw, *q1 = pw + L;
+    double a0 = 0, a1 = 0;
+    for (int s = 0; s < L; s++) {
+      const double v = y[s] - mu[s];
+      yy += v * v * nw[s];
+      a0 += v * q0[s];
+      a1 += v * q1[s];
+    }
+    a[0] = bb[0] = a0;
+    a[1] = bb[1] = a1;
+  } else {
+    for (int c = 0; c < k; c++) a[c] = bb[c] = 0;
+    for (int s = 0; s < L; s++) {
+      const double v = y[s] - mu[s];
+      yy += v * v * nw[s];
+      for (int c = 0; c < k; c++) {
+        a[c] += v * pw[s + (R_xlen_t) L * c];
+        if (pn) bb[c] += v * pn[s + (R_xlen_t) L * c];
+      }
+    }
+    if (!pn) for (int c = 0; c < k; c++) bb[c] = a[c];
+  }
+  double ss = yy;
+  for (int c = 0; c < k; c++) {
+    ss -= 2 * a[c] * bb[c];
+    for (int d = 0; d < k; d++) ss += a[c] * a[d] * b->G[c + k * d];
+  }
+  return sqrt(ss > 0 ? ss : 0);
+}
+
+static int same_weights(const double *w, const double *nw, R_xlen_t len) {
+  for (R_xlen_t q = 0; q < len; q++)
+    if (w[q] != nw[q]) return 0;
+  return 1;
+}
+
 SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SEXP comps,
                       SEXP weights, SEXP norm_weights) {
   SEXP dim = getAttrib(values, R_DimSymbol);
@@ -58,38 +139,24 @@ SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SE
   SEXP resid = PROTECT(allocVector(REALSXP, n * p));
   double *S = REAL(scores), *R = REAL(resid);
   double *y = (double *) R_alloc(L, sizeof(double));
-  double *pw = (double *) R_alloc((size_t) L * (k > 0 ? k : 1), sizeof(double));
   double *a = (double *) R_alloc(k > 0 ? k : 1, sizeof(double));
+  double *bb = (double *) R_alloc(k > 0 ? k : 1, sizeof(double));
+  const int same = same_weights(W, NW, (R_xlen_t) L * p);
 
   for (int j = 0; j < p; j++) {
-    const double *v = V + N * j, *mu = M + (R_xlen_t) L * j;
-    const double *w = W + (R_xlen_t) L * j, *nw = NW + (R_xlen_t) L * j;
-    /* phi_c(s) w_s for this DoF, once */
-    for (int c = 0; c < k; c++) {
-      const double *phi = P + (R_xlen_t) L * (j + (R_xlen_t) p * c);
-      for (int s = 0; s < L; s++) pw[s + (R_xlen_t) L * c] = phi[s] * w[s];
-    }
+    const double *v = V + N * j;
+    dof_basis b;
+    fill_basis(&b, M + (R_xlen_t) L * j, P + (R_xlen_t) L * j, W + (R_xlen_t) L * j,
+               NW + (R_xlen_t) L * j, same, L, p, k);
     for (R_xlen_t i = 0; i < n; i++) {
       if ((i & 4095) == 4095) R_CheckUserInterrupt();
       const R_xlen_t o = (R_xlen_t) L * i;
       for (int s = 0; s < L; s++) {
         const double g = F[o + s];
-        y[s] = v[ri[o + s] - 1] * (1 - g) + v[ni[o + s] - 1] * g - mu[s];
+        y[s] = v[ri[o + s] - 1] * (1 - g) + v[ni[o + s] - 1] * g;
       }
-      for (int c = 0; c < k; c++) {
-        const double *q = pw + (R_xlen_t) L * c;
-        double acc = 0;
-        for (int s = 0; s < L; s++) acc += y[s] * q[s];
-        a[c] = acc;
-        S[i + n * (j + (R_xlen_t) p * c)] = acc;
-      }
-      double ss = 0;
-      for (int s = 0; s < L; s++) {
-        double r = y[s];
-        for (int c = 0; c < k; c++) r -= a[c] * P[s + (R_xlen_t) L * (j + (R_xlen_t) p * c)];
-        ss += r * r * nw[s];
-      }
-      R[i + n * j] = sqrt(ss > 0 ? ss : 0);
+      R[i + n * j] = project_curve(y, &b, L, k, a, bb);
+      for (int c = 0; c < k; c++) S[i + n * (j + (R_xlen_t) p * c)] = a[c];
     }
   }
   SEXP out = PROTECT(allocVector(VECSXP, 2));
@@ -100,5 +167,111 @@ SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SE
   SET_STRING_ELT(nms, 1, mkChar("residual"));
   setAttrib(out, R_NamesSymbol, nms);
   UNPROTECT(4);
+  return out;
+}
+
+/* Recordings projected straight from the grasps object's list (no stacked
+ * copy, no precomputed warp index: the stacked index arrays were 16 bytes
+ * per template point and model, re-read for every DoF, and building them in
+ * R took longer than the projection). recs: list of double matrices
+ * (frames x all DoFs); cols: the model's DoFs as 1-based columns of them; u:
+ * the model's mean warp on its template grid, normalised to [0, 1]. For
+ * template point s of a recording of m frames the position is
+ * t = 1 + u_s (m - 1), read between frames floor(t) (at most m - 1) and the
+ * next (at most m), as warp_index() in R/project.R had it.
+ * mode 0: the distance only (sqrt of the sum over DoFs of the squared
+ * residual norms); 1: also scores (n x p x k) and residual norms (n x p);
+ * 2: also the warped curves ((L n) x p, entry s + L i). */
+SEXP hm_project_warped(SEXP recs, SEXP cols, SEXP u, SEXP mean, SEXP comps, SEXP weights,
+                       SEXP norm_weights, SEXP mode_) {
+  if (TYPEOF(recs) != VECSXP) error("project kernel: recs must be a list of matrices");
+  const R_xlen_t n = XLENGTH(recs);
+  if (TYPEOF(cols) != INTSXP) error("project kernel: cols must be integer column numbers");
+  const int p = (int) XLENGTH(cols);
+  const int *cj = INTEGER(cols);
+  SEXP mdim = getAttrib(mean, R_DimSymbol);
+  if (TYPEOF(mdim) != INTSXP || XLENGTH(mdim) != 2 || INTEGER(mdim)[1] != p)
+    error("project kernel: mean must be an L x p matrix");
+  const int L = INTEGER(mdim)[0];
+  if (L < 1) error("project kernel: the template has no points");
+  need_real(u, L, "u");
+  need_real(mean, (R_xlen_t) L * p, "mean (L x p)");
+  need_real(weights, (R_xlen_t) L * p, "weights (L x p)");
+  need_real(norm_weights, (R_xlen_t) L * p, "norm weights (L x p)");
+  if (TYPEOF(comps) != REALSXP || XLENGTH(comps) % ((R_xlen_t) L * p) != 0)
+    error("project kernel: comps must be an L x p x k double array");
+  const int k = (int) (XLENGTH(comps) / ((R_xlen_t) L * p));
+  const int mode = asInteger(mode_);
+  if (mode < 0 || mode > 2) error("project kernel: mode must be 0, 1 or 2");
+  /* every recording checked before any work */
+  for (R_xlen_t i = 0; i < n; i++) {
+    SEXP r = VECTOR_ELT(recs, i);
+    SEXP d = getAttrib(r, R_DimSymbol);
+    if (TYPEOF(r) != REALSXP || TYPEOF(d) != INTSXP || XLENGTH(d) != 2 || INTEGER(d)[0] < 1)
+      error("project kernel: recording %lld is not a double matrix with frames", (long long) i + 1);
+    for (int j = 0; j < p; j++)
+      if (cj[j] < 1 || cj[j] > INTEGER(d)[1])
+        error("project kernel: column %d is not one of recording %lld's", cj[j], (long long) i + 1);
+  }
+  const double *U = REAL(u), *M = REAL(mean), *P = REAL(comps);
+  const double *W = REAL(weights), *NW = REAL(norm_weights);
+
+  SEXP dist = PROTECT(allocVector(REALSXP, n));
+  SEXP scores = PROTECT(allocVector(REALSXP, mode >= 1 ? n * p * (R_xlen_t) k : 0));
+  SEXP resid = PROTECT(allocVector(REALSXP, mode >= 1 ? n * p : 0));
+  SEXP warped = PROTECT(allocMatrix(REALSXP, mode == 2 ? (int) (n * L) : 0, mode == 2 ? p : 0));
+  double *D = REAL(dist), *S = REAL(scores), *R = REAL(resid), *Wp = REAL(warped);
+  double *y = (double *) R_alloc(L, sizeof(double));
+  double *fr = (double *) R_alloc(L, sizeof(double));
+  int *lo = (int *) R_alloc(L, sizeof(int)), *hi = (int *) R_alloc(L, sizeof(int));
+  double *a = (double *) R_alloc(k > 0 ? k : 1, sizeof(double));
+  double *bb = (double *) R_alloc(k > 0 ? k : 1, sizeof(double));
+  const int same = same_weights(W, NW, (R_xlen_t) L * p);
+  dof_basis *basis = (dof_basis *) R_alloc(p > 0 ? p : 1, sizeof(dof_basis));
+  for (int j = 0; j < p; j++)
+    fill_basis(basis + j, M + (R_xlen_t) L * j, P + (R_xlen_t) L * j, W + (R_xlen_t) L * j,
+               NW + (R_xlen_t) L * j, same, L, p, k);
+
+  for (R_xlen_t i = 0; i < n; i++) {
+    if ((i & 255) == 255) R_CheckUserInterrupt();
+    SEXP r = VECTOR_ELT(recs, i);
+    const int m = INTEGER(getAttrib(r, R_DimSymbol))[0];
+    const double *V = REAL(r);
+    const int cap = m - 1 > 1 ? m - 1 : 1;
+    for (int s = 0; s < L; s++) {
+      const double t = 1 + U[s] * (double) (m - 1);
+      double fl = floor(t);
+      if (fl > cap) fl = cap;
+      fr[s] = m == 1 ? 0 : t - fl;
+      lo[s] = (int) fl - 1;
+      hi[s] = (int) fl < m - 1 ? (int) fl : m - 1;
+    }
+    long double acc = 0;
+    for (int j = 0; j < p; j++) {
+      const double *v = V + (R_xlen_t) m * (cj[j] - 1);
+      for (int s = 0; s < L; s++) y[s] = v[lo[s]] * (1 - fr[s]) + v[hi[s]] * fr[s];
+      if (mode == 2)
+        for (int s = 0; s < L; s++) Wp[(R_xlen_t) L * i + s + (R_xlen_t) L * n * j] = y[s];
+      const double res = project_curve(y, basis + j, L, k, a, bb);
+      acc += res * res;
+      if (mode >= 1) {
+        R[i + n * j] = res;
+        for (int c = 0; c < k; c++) S[i + n * (j + (R_xlen_t) p * c)] = a[c];
+      }
+    }
+    D[i] = sqrt((double) acc);
+  }
+  SEXP out = PROTECT(allocVector(VECSXP, 4));
+  SET_VECTOR_ELT(out, 0, dist);
+  SET_VECTOR_ELT(out, 1, scores);
+  SET_VECTOR_ELT(out, 2, resid);
+  SET_VECTOR_ELT(out, 3, warped);
+  SEXP nms = PROTECT(allocVector(STRSXP, 4));
+  SET_STRING_ELT(nms, 0, mkChar("distance"));
+  SET_STRING_ELT(nms, 1, mkChar("scores"));
+  SET_STRING_ELT(nms, 2, mkChar("residual"));
+  SET_STRING_ELT(nms, 3, mkChar("warped"));
+  setAttrib(out, R_NamesSymbol, nms);
+  UNPROTECT(6);
   return out;
 }

@@ -44,6 +44,48 @@ test_that("the MMD test holds its level on exchangeable samples and sees covaria
   expect_lt(mmd_test(I, C, bw)$p, 0.01)
 })
 
+test_that("velocity correlation and log jerk of stacked recordings equal the per-recording ones", {
+  # short recordings (skipped), a DoF that does not move in one recording
+  # (its pairs left out there), and ordinary ones
+  set.seed(5)
+  recs <- lapply(c(3, 4, 7, 12, 30, 30), function(n) {
+    t <- seq(0, 1, length.out = n)
+    cbind(sin(3 * t) + stats::rnorm(n, sd = 0.1), cumsum(stats::rnorm(n)), 2 * t + stats::rnorm(n, sd = 0.3))
+  })
+  recs[[5]][, 2] <- 4
+  x <- grasps(recs, rate = 50)
+  vc <- velocity_correlation(x)
+  ref <- velocity_correlation_reference(x)
+  up <- upper.tri(ref)
+  expect_equal(vc[up], ref[up], tolerance = 1e-12)
+  expect_equal(log_jerk(x), log_jerk_reference(x), tolerance = 1e-12)
+  expect_true(is.na(log_jerk(x)[1]))
+})
+
+test_that("the KS distance and the squared distances equal ks.test() and dist()", {
+  set.seed(6)
+  a <- round(stats::rnorm(40), 1)   # ties within and between the samples
+  b <- round(stats::rnorm(25, 0.5), 1)
+  expect_equal(ks_distance(a, b), suppressWarnings(stats::ks.test(a, b)$statistic[[1]]), tolerance = 1e-14)
+  expect_equal(ks_distance(a, a), 0)
+  A <- matrix(stats::rnorm(30 * 4, mean = 5), 30)
+  expect_equal(squared_distances(A), unname(as.matrix(stats::dist(A))^2), tolerance = 1e-10)
+})
+
+test_that("the MMD test by quadratic forms equals the former permutation-by-indexing one", {
+  # unequal sample sizes, a shift that gives a p-value between the extremes
+  set.seed(4)
+  X <- matrix(stats::rnorm(25 * 3, mean = 0.1), 25)
+  Y <- matrix(stats::rnorm(40 * 3), 40)
+  bw <- stats::median(stats::dist(Y))
+  new <- withr::with_seed(9, mmd_test(X, Y, bw, permutations = 300))
+  old <- withr::with_seed(9, mmd_test_reference(X, Y, bw, permutations = 300))
+  expect_equal(new$mmd, old$mmd, tolerance = 1e-12)
+  expect_equal(new$p, old$p)
+  expect_gt(old$p, 0.01)
+  expect_lt(old$p, 0.9)
+})
+
 test_that("evaluate_generation() flags independent DoFs and returns a tidy table", {
   g <- simulate_grasps(subjects = 24, grasps = c(1, 9, 14), seed = 2)
   s <- subject_no(g)

@@ -89,7 +89,9 @@ test_that("the caller's RNG kind and stream are left untouched", {
 
 test_that("progress is reported through progressr, one step per fold", {
   g <- planted_types(types = c(1, 17), subjects = 3, trials = 2)
-  withr::local_options(progressr.enable = TRUE)
+  # (as an outer listener such as reproduce_thesis() hears them; the call
+  # itself would otherwise draw the bar: R/progress.R)
+  withr::local_options(progressr.enable = TRUE, handmotion.progress = TRUE, handmotion.progress_listener = TRUE)
   steps <- 0
   withCallingHandlers(
     evaluate_loso(g, "last_frame", fit_args = list(k = 2), in_sample = FALSE),

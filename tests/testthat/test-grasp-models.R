@@ -117,7 +117,9 @@ test_that("the SLURM template is shipped and fills in with batchtools' fields", 
 })
 
 test_that("progress is reported through progressr, once per type", {
-  withr::local_options(progressr.enable = TRUE)
+  # (as an outer listener such as reproduce_thesis() hears them; the call
+  # itself would otherwise draw the bar: R/progress.R)
+  withr::local_options(progressr.enable = TRUE, handmotion.progress = TRUE, handmotion.progress_listener = TRUE)
   n <- 0L
   withCallingHandlers(
     fit_grasp_models(three_types(), warping = "linear", seed = 1),

@@ -115,3 +115,39 @@ test_that("fitting only the horizons a fold needs changes no prediction", {
   }, numeric(3)))
   expect_equal(er$accuracy, correct / length(g))
 })
+
+test_that("the features and the shrinkage LDA equal the former prefix arrays and residual fit", {
+  g <- late_types(n_per = 12, subjects = 4)
+  # recordings of other lengths, one shorter than the horizons asked
+  g <- grasps(unname(c(g$recordings, list(g$recordings[[1]][1:7, ], g$recordings[[2]][rep(1:40, 2), ]))),
+              meta = data.frame(grasp = c(g$meta$grasp, "Tripod", "Ring"),
+                                subject = c(g$meta$subject, "S01", "S02")), rate = 50)
+  at <- c(0, 0.3, 1)
+  old <- prefix_arrays_reference(g, 60)
+  new <- prefix_source(g)
+  for (h in c(1, 2, 7, 33, 60)) {
+    expect_identical(prefix_features(new, h, at), prefix_features_reference(old, h, at))
+  }
+  F <- prefix_features(new, 20, at)
+  F <- cbind(F, const = 3)   # a feature without variance is not whitened
+  for (prior in c("equal", "data")) {
+    a <- fit_shrunk_lda(F, g$meta$grasp, prior)
+    b <- fit_shrunk_lda_reference(F, g$meta$grasp, prior)
+    expect_equal(a$shrinkage, b$shrinkage, tolerance = 1e-9)
+    expect_equal(a$coef, b$coef, tolerance = 1e-9)
+    expect_equal(a$offset, b$offset, tolerance = 1e-9)
+    expect_identical(a$classes, b$classes)
+    expect_identical(a$n, b$n)
+  }
+  # the moments of a fold subtracted from the whole set's give the fit on the rest
+  lev <- levels(factor(g$meta$grasp))
+  cls <- as.integer(factor(g$meta$grasp))
+  Fc <- F - rep(colMeans(F), each = nrow(F))
+  fold <- g$meta$subject == "S02"
+  sub <- lda_from_moments(lda_moments_minus(lda_moments(Fc, cls, 2), lda_moments(Fc[fold, ], cls[fold], 2)),
+                          Fc, which(!fold), cls[!fold], lev, colMeans(F))
+  direct <- fit_shrunk_lda_reference(F[!fold, ], g$meta$grasp[!fold])
+  expect_equal(sub$coef, direct$coef, tolerance = 1e-9)
+  expect_equal(sub$offset, direct$offset, tolerance = 1e-9)
+  expect_equal(sub$shrinkage, direct$shrinkage, tolerance = 1e-9)
+})

@@ -74,3 +74,35 @@ test_that("a model set projects onto every model; DoF mismatch is a clear error"
   expect_error(project(ms$Ring, list()), class = "handmotion_error_bad_input")
   expect_snapshot(print(prs$Ring))
 })
+
+test_that("the kernel's projection equals the former R path (stacked, warp index in R) to rounding", {
+  # a DTW model (non-linear mean warp), recordings of 1, 2 and many frames,
+  # integer storage, DoFs in another order than the model's, and time weights
+  g <- planted_grasps(n = 30, p = 3, seed = 46)
+  m <- fit_grasp_model(g, seed = 1)
+  x <- planted_grasps(n = 12, p = 3, seed = 47, len = 33)
+  recs <- c(x$recordings, list(matrix(5, 1, 3), matrix(c(1, 2, 3, 4, 5, 6), 2, 3),
+                               matrix(1:30, 10, 3), x$recordings[[1]][rep(1:33, 4), , drop = FALSE]))
+  recs <- unname(lapply(recs, function(r) r[, 3:1, drop = FALSE]))
+  x <- grasps(recs, dofs = rev(m$dofs))
+  tw <- seq(0, 2, length.out = m$target_length)
+  for (weights in list(NULL, tw)) {
+    ref <- project_reference(m, x, time_weights = weights)
+    got <- project_recordings(m, x, details = TRUE, time_weights = weights)
+    expect_equal(unname(got$scores), ref$scores, tolerance = 1e-12)
+    expect_equal(unname(got$residual), ref$residual, tolerance = 1e-12)
+    expect_equal(unname(got$distance), ref$distance, tolerance = 1e-12)
+    expect_equal(unname(do.call(rbind, got$warped)), ref$warped, tolerance = 1e-12)
+    only <- project_recordings(m, x, details = FALSE, distance_only = TRUE, time_weights = weights)
+    expect_identical(only$distance, got$distance)
+  }
+})
+
+test_that("classify()'s FPCA distances equal the former R path on a model set", {
+  g <- simulate_grasps(subjects = 4, grasps = c(1, 9, 17), objects = 2, trials = 2, seed = 2)
+  ms <- fit_grasp_models(g, seed = 1)
+  cl <- classify(ms, g)
+  ref <- vapply(fitted_models(ms), function(m) project_reference(m, g)$distance * sqrt(m$target_length - 1),
+                numeric(length(g)))
+  expect_equal(unname(cl$distances), unname(ref), tolerance = 1e-12)
+})

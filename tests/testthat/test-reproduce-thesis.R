@@ -41,6 +41,7 @@ test_that("the report renders on a tiny design with its tables and figures", {
   skip_on_cran()
   skip_if_not(rmarkdown::pandoc_available("1.12.3"), "pandoc is not available")
   out <- withr::local_tempdir()
+  withr::local_options(handmotion.progress = TRUE)  # (helper-progress.R turns it off for the tests)
   said <- capture.output(html <- reproduce_thesis(out, subjects = 2, grasps = c(17, 25), loso_folds = 2, seed = 1),
                          type = "message")
   expect_equal(normalizePath(html), normalizePath(file.path(out, "reproduce-thesis.html")))
@@ -174,26 +175,43 @@ test_that("the vignette is a thin wrapper around the report template", {
   expect_true(nzchar(system.file("report", "reproduce-thesis.Rmd", package = "handmotion")))
 })
 
-test_that("the progress lines estimate the time left from the steps' shares", {
+test_that("the progress lines estimate the time left from the measured pace", {
   lines <- character()
   con <- textConnection("lines", "w", local = TRUE)
-  bar <- handmotion:::report_progress(TRUE, out = con)
-  w <- handmotion:::report_step_weights
-  bar$begin(list(subjects = 30, grasps = 1:33, loso_folds = NULL))
-  bar$step(names(w)[1])
-  Sys.sleep(0.6)
-  bar$step(names(w)[2])
+  bar <- handmotion:::report_progress(TRUE, out = con, every = 0)
+  settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
+  cost <- handmotion:::report_step_costs(settings, workers = future::nbrOfWorkers())
+  bar$begin(settings)
+  bar$step(names(cost)[1])
+  Sys.sleep(1.2)
+  bar$step(names(cost)[2])
+  # the first step ran at (1.2 s / its predicted time) of the model's pace:
+  # the rest is predicted at that pace
+  second <- lines[grep("\\[ 2/", lines)]
+  secs_left <- function(line) {
+    left <- as.numeric(sub(".*about ([0-9.]+) (s|min) left.*", "\\1", line))
+    if (grepl("min left", line)) 60 * left else left
+  }
+  expect_equal(secs_left(second), 1.2 / cost[[1]] * sum(cost[-1]), tolerance = 0.3)
+  # within a step, its own progress steps give the rate of what remains of
+  # it, trusted as far as the step has gone (here a quarter: the rest from
+  # the model at the measured pace)
+  bar$tick(list(type = "initiate", steps = 4))
+  Sys.sleep(1.2)
+  bar$tick(list(type = "update", amount = 1))
+  within <- lines[length(lines)]
+  expect_match(within, "fit the grasp models: 25%", fixed = TRUE)
+  pace <- 1.2 / cost[[1]]
+  expect_equal(secs_left(within),
+               0.75 * max(0, cost[[2]] * pace - 1.2) + 0.25 * 3 * 1.2 + pace * sum(cost[-(1:2)]), tolerance = 0.3)
   bar$done("/somewhere/reproduce-thesis.html")
   close(con)
   expect_match(lines[1], "30 subjects x 33 grasp types, leave-one-subject-out", fixed = TRUE)
   expect_match(lines[grep("\\[ 1/", lines)], "simulate the data (0 s so far)", fixed = TRUE)
-  # after the first step (its share of the whole), the rest takes (total / share - 1) times as long
-  second <- lines[grep("\\[ 2/", lines)]
-  left <- as.numeric(sub(".*about ([0-9.]+) (s|min) left.*", "\\1", second))
-  unit <- sub(".*about [0-9.]+ (s|min) left.*", "\\1", second)
-  secs <- if (unit == "min") 60 * left else left
-  expect_equal(secs, 0.6 * (sum(w) / w[[1]] - 1), tolerance = 0.3)
   expect_match(lines[length(lines) - 1L], "report written in .*: /somewhere/reproduce-thesis.html")
+  # the model grows with the design: ten times the subjects, about ten times the work
+  big <- handmotion:::report_step_costs(list(subjects = 300, grasps = 1:33, loso_folds = NULL), 1)
+  expect_gt(sum(big) / sum(handmotion:::report_step_costs(settings, 1)), 8)
   quiet <- handmotion:::report_progress(FALSE, out = con)
   expect_silent({quiet$step("x"); quiet$done("y")})
 })
