@@ -51,11 +51,11 @@ def test_models_evaluation_and_generation_on_raw_counts(raw):
 
 
 def test_read_glove_files(tmp_path, raw):
-    for i in range(4):
+    for i in range(6):
         pd.DataFrame(raw.recordings[i], columns=raw.dofs).to_csv(
             tmp_path / f"{raw.meta['grasp'][i]}_{i}.csv", index=False)
     with pytest.warns(hm.HandmotionWarning, match="constant over every recording"):
         g = hm.read_glove(str(tmp_path), glove="resistive", rate=100,
                           pattern="^(?<grasp>[a-z]+)_(?<trial>\\d+)$")
-    assert len(g) == 4
+    assert len(g) == 6
     assert g.glove_name == "resistive"
