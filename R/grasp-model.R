@@ -180,7 +180,7 @@
 #'   them, and whether generation enforces them) and `degenerate_data`
 #'   (data frame `class`, `message`; see Degenerate data).
 #' @seealso [fit_grasp_models()] for every type at once, [generate()] and
-#'   [predict.grasp_model()] to project recordings onto a model, [autoplot.grasp_model()] to look at it.
+#'   [project()] to project recordings onto a model, [autoplot.grasp_model()] to look at it.
 #' @export
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
