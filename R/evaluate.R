@@ -106,6 +106,10 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
   fold_results <- with_progress_shown({
     p <- hm_progressor(length(groups))
     future.apply::future_lapply(seq_along(groups), function(f) {
+      # inside a fold the package's long calls only count (a worker showing
+      # its own bar would swallow the fold's updates)
+      old <- options(handmotion.progress_listener = TRUE)
+      on.exit(options(old), add = TRUE)
       res <- run_fold(x, groups[[f]], method, fit_args)
       p(sprintf("fold %d of %d", f, length(groups)))
       res

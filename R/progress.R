@@ -18,7 +18,9 @@ progress_wanted <- function() isTRUE(getOption("handmotion.progress", TRUE))
 
 # Evaluate `expr` showing the progress of the package's progressors in it.
 with_progress_shown <- function(expr) {
-  if (!progress_wanted() || isTRUE(getOption("handmotion.progress_listener"))) return(expr)
+  if (!progress_wanted() || isTRUE(getOption("handmotion.progress_listener")) || inside_with_progress()) {
+    return(expr)
+  }
   opts <- list(handmotion.progress_listener = TRUE)
   if (is.null(getOption("progressr.enable_after"))) opts$progressr.enable_after <- 2
   old <- options(opts)
@@ -44,3 +46,13 @@ progress_state <- new.env(parent = emptyenv())
 progress_state$active <- FALSE
 
 progress_release <- function() progress_state$active <- FALSE
+
+# Is the call inside the user's own progressr::with_progress()? Then the
+# progress goes to the user's handlers: a second with_progress() here would
+# catch (and muffle) every update before it reached them.
+inside_with_progress <- function() {
+  wp <- progressr::with_progress
+  n <- sys.nframe()
+  for (i in seq_len(max(0L, n - 1L))) if (identical(sys.function(i), wp)) return(TRUE)
+  FALSE
+}

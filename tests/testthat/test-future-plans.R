@@ -72,6 +72,8 @@ test_that("evaluate_generation() on models fitted under every plan gives the sam
 test_that("progress reaches a progressr handler from every plan: multisession, cluster, batchtools", {
   skip_without_installed_workers()
   skip_if_not_installed("progressr")
+  # (the test helpers turn the package's progress off; here it is the subject)
+  withr::local_options(handmotion.progress = TRUE)
   g <- planted_types(types = c(1, 17), subjects = 3, trials = 2)
   counts <- under_plans({
     h <- counting_handler()

@@ -39,3 +39,16 @@ test_that("progress is shown without set-up and is silent when turned off", {
   expect_equal(withr::with_options(list(handmotion.progress.test = FALSE),
                                    count_progressions(classify(ms, g))), 0L)
 })
+
+test_that("inside the user's own with_progress() the updates reach the user's handler", {
+  withr::local_options(handmotion.progress = TRUE)
+  g <- planted_types(types = c(1, 17), subjects = 3, trials = 2)
+  seen <- 0L
+  count <- function(p) if (inherits(p, "progression") && identical(p$type, "update")) seen <<- seen + 1L
+  withCallingHandlers(
+    progressr::with_progress(fit_grasp_models(g, warping = "linear", seed = 1),
+                             handlers = progressr::handler_void(), enable = TRUE),
+    progression = count)
+  # one update per type reaches the user's with_progress() (the package adds none of its own)
+  expect_equal(seen, 2L)
+})
