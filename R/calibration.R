@@ -121,7 +121,7 @@ calibration_measure <- function(x, models, last_frame) {
   cv <- cumulative_variance(last_frame)
   cl_fp <- classify(models, x)
   cl_lf <- classify(last_frame, x)
-  types <- feix_order(unique(c(s$grasp, cv$grasp)))
+  types <- label_order(unique(c(s$grasp, cv$grasp)))
   accuracy <- function(cl) {
     p <- cl$predictions[!is.na(cl$predictions$truth), ]
     mean(!is.na(p$predicted) & as.character(p$truth) == as.character(p$predicted))

@@ -318,7 +318,7 @@ distance_table <- function(models, x = NULL) {
   d <- cl$distances
   scale <- if (cl$method == "fpca") 100 / cl$target_length[colnames(d)] else rep(1, ncol(d))
   truth <- cl$predictions$truth
-  types <- feix_order(unique(as.character(stats::na.omit(truth))))
+  types <- label_order(unique(as.character(stats::na.omit(truth))))
   if (length(types) == 0L) {
     hm_abort("No labelled recordings: a distance table needs true grasp types.", "no_labels",
              argument = "x", call = call)

@@ -128,7 +128,7 @@ as_grasp_confusion.grasp_confusion <- function(x, ..., call = rlang::caller_env(
 as_grasp_confusion.grasp_classification <- function(x, ..., call = rlang::caller_env()) {
   p <- x$predictions
   # every model type and every true type present is a class of the matrix
-  lev <- feix_order(unique(c(colnames(x$distances), as.character(stats::na.omit(p$truth)))))
+  lev <- label_order(unique(c(colnames(x$distances), as.character(stats::na.omit(p$truth)))))
   new_confusion(p$truth, p$predicted, levels = lev)
 }
 
@@ -154,11 +154,6 @@ as_grasp_confusion.matrix <- function(x, ..., call = rlang::caller_env()) {
   }
   lev <- rownames(x) %||% colnames(x) %||% as.character(seq_len(nrow(x)))
   new_grasp_confusion(as.table(matrix(as.integer(x), nrow(x), dimnames = list(Prediction = lev, Truth = lev))))
-}
-
-feix_order <- function(types) {
-  feix <- feix_levels()
-  if (all(types %in% feix)) feix[feix %in% types] else types
 }
 
 # Short labels for compact printing/plotting: Feix ids for Feix names, else

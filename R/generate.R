@@ -156,11 +156,15 @@ generate_models <- function(models, n, seed, warp, limits, chunk, callback, call
   }
   draw <- function(m, n) {
     got <- draw_batch(m, n, warp = warp, limits = limits, call = call)
+    lim <- generation_limits(m, limits)
+    # what the kernel draws stays inside the limits by its smooth map; what
+    # is added here (residuals, rest and hold) is clipped to them, and a
+    # zero-width range (a stuck channel) is held exactly
+    if (!is.null(m$residuals)) got <- clip_draws(add_residuals(got, m), lim)
     # a model of trimmed recordings puts their rest and hold back around the
     # motion, so generated grasps look like the recordings (see phases)
-    if (!is.null(m$residuals)) got <- add_residuals(got, m, limits)
-    if (warp && isTRUE(phases) && !is.null(m$phases)) got <- add_still_phases(got, m, limits)
-    hold_flat_limits(got, m, limits)
+    if (warp && isTRUE(phases) && !is.null(m$phases)) got <- clip_draws(add_still_phases(got, m), lim)
+    hold_flat_limits(got, lim)
   }
   if (!streaming) {
     return(with_seed(seed, assemble_generated(models, lapply(models, draw, n = n))))
@@ -406,13 +410,12 @@ stack_scores <- function(parts, N, ids, model) {
 
 # Rest before and hold after each generated motion: lengths resampled from
 # the training recordings' own, the first and last posture held with the
-# tremor measured in the recordings' still phases, inside the model's limits.
-add_still_phases <- function(got, model, limits) {
+# tremor measured in the recordings' still phases.
+add_still_phases <- function(got, model) {
   ph <- model$phases
   n <- length(got$recordings)
   rest <- ph$rest[sample.int(length(ph$rest), n, replace = TRUE)]
   hold <- ph$hold[sample.int(length(ph$hold), n, replace = TRUE)]
-  lim <- generation_limits(model, limits)
   p <- length(model$dofs)
   still <- function(row, m) {
     if (m == 0L) return(NULL)
@@ -421,9 +424,6 @@ add_still_phases <- function(got, model, limits) {
   got$recordings <- lapply(seq_len(n), function(i) {
     r <- got$recordings[[i]]
     out <- rbind(still(r[1, ], rest[i]), r, still(r[nrow(r), ], hold[i]))
-    lo <- ifelse(is.na(lim$lo), -Inf, lim$lo)
-    hi <- ifelse(is.na(lim$hi), Inf, lim$hi)
-    out <- sweep(sweep(out, 2, lo, pmax), 2, hi, pmin)
     colnames(out) <- colnames(r)
     out
   })
@@ -433,22 +433,28 @@ add_still_phases <- function(got, model, limits) {
 
 # Residual resampling (fit_grasp_model(residuals = "resample")): each
 # generated motion gets the residual curves of one training recording drawn
-# at random, stretched to its length, then is kept inside the limits.
-add_residuals <- function(got, model, limits) {
+# at random, stretched to its length.
+add_residuals <- function(got, model) {
   res <- model$residuals
   n <- length(got$recordings)
   pick <- sample.int(dim(res)[1], n, replace = TRUE)
-  lim <- generation_limits(model, limits)
-  lo <- ifelse(is.na(lim$lo), -Inf, lim$lo)
-  hi <- ifelse(is.na(lim$hi), Inf, lim$hi)
   L <- dim(res)[2]
   got$recordings <- lapply(seq_len(n), function(i) {
     r <- got$recordings[[i]]
     ix <- fraction_index(L, seq(0, 1, length.out = nrow(r)))
     e <- res[pick[i], ix$lo, , drop = TRUE] * (1 - ix$w) + res[pick[i], ix$hi, , drop = TRUE] * ix$w
-    out <- r + matrix(e, nrow(r), ncol(r))
-    out <- sweep(sweep(out, 2, lo, pmax), 2, hi, pmin)
-    colnames(out) <- colnames(r)
+    r + matrix(e, nrow(r), ncol(r))
+  })
+  got
+}
+
+# Every generated value inside the limits `lim` (generation_limits()).
+clip_draws <- function(got, lim) {
+  lo <- ifelse(is.na(lim$lo), -Inf, lim$lo)
+  hi <- ifelse(is.na(lim$hi), Inf, lim$hi)
+  got$recordings <- lapply(got$recordings, function(r) {
+    out <- sweep(sweep(r, 2, lo, pmax), 2, hi, pmin)
+    dimnames(out) <- dimnames(r)
     out
   })
   got
@@ -456,8 +462,7 @@ add_residuals <- function(got, model, limits) {
 
 # Channels whose range has no width (a stuck sensor: every training value the
 # same) read exactly that value in every generated frame.
-hold_flat_limits <- function(got, model, limits) {
-  lim <- generation_limits(model, limits)
+hold_flat_limits <- function(got, lim) {
   flat <- which(!is.na(lim$lo) & lim$hi <= lim$lo)
   if (!length(flat)) return(got)
   got$recordings <- lapply(got$recordings, function(r) {

@@ -270,9 +270,10 @@ glove_degrees <- function(recordings, glove) {
   ch <- glove$channels
   a <- ifelse(ch$unit == "rad", 180 / pi, 1)
   b <- rep(0, nrow(ch))
-  raw <- ch$unit == "raw" & !is.na(ch$angle_min) & !is.na(ch$min)
-  a[raw] <- (ch$angle_max[raw] - ch$angle_min[raw]) / (ch$max[raw] - ch$min[raw])
-  b[raw] <- ch$angle_min[raw] - a[raw] * ch$min[raw]
+  map <- nominal_map(ch)
+  raw <- !is.na(map$gain)
+  a[raw] <- map$gain[raw]
+  b[raw] <- map$offset[raw]
   if (all(a == 1) && all(b == 0)) return(recordings)
   lapply(recordings, function(r) sweep(sweep(r, 2, a, "*"), 2, b, "+"))
 }
@@ -282,10 +283,15 @@ glove_degrees <- function(recordings, glove) {
 # any channel of the same unit (exactly zero for a set of one channel).
 find_stuck <- function(recordings, tol = 1e-9) {
   if (!length(recordings)) return(logical())
-  lo <- Reduce(pmin, lapply(recordings, function(r) apply(r, 2, min)))
-  hi <- Reduce(pmax, lapply(recordings, function(r) apply(r, 2, max)))
-  span <- hi - lo
+  r <- channel_ranges(recordings)
+  span <- r$hi - r$lo
   span <= tol * max(c(span, 1))
+}
+
+# The smallest and largest value of each channel over every frame of a set.
+channel_ranges <- function(recordings) {
+  list(lo = Reduce(pmin, lapply(recordings, function(r) apply(r, 2, min))),
+       hi = Reduce(pmax, lapply(recordings, function(r) apply(r, 2, max))))
 }
 
 # Recordings a set needs before a channel constant over all of them counts
@@ -315,30 +321,28 @@ stuck_channels <- function(x) {
 
 # --- the shipped profiles ----------------------------------------------------
 
-hust_glove_channels <- function() {
-  m <- hust_joint_map()
-  data.frame(channel = m$dof, joint = m$joint, axis = m$axis, sign = m$sign, scale = m$scale,
-             frame = m$frame, unit = "deg", min = NA_real_, max = NA_real_, angle_min = NA_real_,
+# The channels of a joint map (joint_map() format) in one unit, ranges unknown.
+channels_from_map <- function(m, unit, sign = m$sign) {
+  data.frame(channel = m$dof, joint = m$joint, axis = m$axis, sign = sign, scale = m$scale,
+             frame = m$frame, unit = unit, min = NA_real_, max = NA_real_, angle_min = NA_real_,
              angle_max = NA_real_, stuck = FALSE, stringsAsFactors = FALSE)
 }
 
-graspdb14_glove_channels <- function() {
-  m <- graspdb14_joint_map()
-  data.frame(channel = m$dof, joint = m$joint, axis = m$axis, sign = m$sign, scale = m$scale,
-             frame = m$frame, unit = "rad", min = NA_real_, max = NA_real_, angle_min = NA_real_,
-             angle_max = NA_real_, stuck = FALSE, stringsAsFactors = FALSE)
-}
+# Flexion signs of a joint map for a glove whose readings rise with bending
+# (a calibrated CyberGlove, raw counts): +1 for flexion, the map's own sign
+# elsewhere (GraspDB14's files store flexion negated, hence its map's -1).
+flexion_positive <- function(m) ifelse(!is.na(m$axis) & m$axis == "x", 1, m$sign)
 
-# CyberGlove sensors calibrated to degrees (the GraspDB14 mapping, whose
-# files store flexion negated; a calibrated CyberGlove reports flexion
-# positive, so sign +1 except the abduction sensors' side).
+hust_glove_channels <- function() channels_from_map(hust_joint_map(), "deg")
+
+graspdb14_glove_channels <- function() channels_from_map(graspdb14_joint_map(), "rad")
+
+# CyberGlove sensors calibrated to degrees: the GraspDB14 mapping with
+# flexion positive.
 cyberglove_channels <- function(sensors) {
   m <- graspdb14_joint_map()
   m <- m[match(sensors, m$dof), ]
-  flex <- !is.na(m$axis) & m$axis == "x"
-  data.frame(channel = m$dof, joint = m$joint, axis = m$axis, sign = ifelse(flex, 1, m$sign),
-             scale = 1, frame = m$frame, unit = "deg", min = NA_real_, max = NA_real_,
-             angle_min = NA_real_, angle_max = NA_real_, stuck = FALSE, stringsAsFactors = FALSE)
+  channels_from_map(m, "deg", sign = flexion_positive(m))
 }
 
 cyberglove18_sensors <- c("T-TMCJ", "T-MCPJ", "T-IPJ", "TI-AA", "I-MCPJ", "I-PIPJ", "M-MCPJ", "M-PIPJ",
@@ -409,16 +413,16 @@ guess_raw_glove <- function(dofs, recordings, template = NULL) {
   if (is.null(map) || !nrow(map)) return(NULL)
   map <- map[dof_key(map$dof) %in% dof_key(dofs), , drop = FALSE]
   map$dof <- dofs[match(dof_key(map$dof), dof_key(dofs))]
-  X <- do.call(rbind, recordings)
+  range <- channel_ranges(recordings)
   ch <- data.frame(channel = dofs, joint = NA_character_, axis = NA_character_, sign = 1, scale = 1,
-                   frame = "joint", unit = "raw", min = apply(X, 2, min), max = apply(X, 2, max),
+                   frame = "joint", unit = "raw", min = unname(range$lo), max = unname(range$hi),
                    angle_min = NA_real_, angle_max = NA_real_, stuck = FALSE, stringsAsFactors = FALSE)
   i <- match(map$dof, dofs)
   ch$joint[i] <- map$joint
   ch$axis[i] <- map$axis
   ch$frame[i] <- map$frame
   # (a joint map's flexion sign follows its files' convention; counts rise with bending)
-  ch$sign[i] <- ifelse(!is.na(map$axis) & map$axis == "x", 1, map$sign)
+  ch$sign[i] <- flexion_positive(map)
   ch$scale[i] <- map$scale
   typical <- function(joint, axis) {
     if (is.na(axis)) return(c(NA, NA))

@@ -61,7 +61,7 @@ last_frame_heldout_distances <- function(fit, x, last) {
 # Grasp types to model: the requested ones (validated) or all labelled types
 # present, in Feix order.
 labelled_types <- function(x, grasps = NULL, call = rlang::caller_env()) {
-  have <- check_some_types(feix_order(unique(as.character(stats::na.omit(x$meta$grasp)))), x, call = call)
+  have <- check_some_types(label_order(unique(as.character(stats::na.omit(x$meta$grasp)))), x, call = call)
   want <- check_grasp_selection(grasps, "grasps", levels = levels(x$meta$grasp), call = call)
   if (is.null(want)) return(have)
   absent <- setdiff(want, have)

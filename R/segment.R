@@ -62,7 +62,7 @@ find_motion <- function(x, high = 0.15, low = 0.03, smooth = 0.08, min_still = 0
   smooth <- check_number(smooth, "smooth", min = 0, max = 10, call = call)
   min_still <- check_number(min_still, "min_still", min = 0, max = 60, call = call)
   spread <- channel_spread(x)
-  width <- max(1L, round(smooth * x$rate))
+  width <- smoothing_width(smooth, x$rate)
   rows <- lapply(seq_along(x), function(i) {
     s <- motion_speed(x$recordings[[i]], spread, width)
     motion_span(s, high, low, max(1L, round(min_still * x$rate)))
@@ -100,13 +100,13 @@ cut_motion <- function(x, min_motion = 0.3, min_gap = 0.3, high = 0.15, low = 0.
   min_motion <- check_number(min_motion, "min_motion", min = 0, max = 600, call = call)
   min_gap <- check_number(min_gap, "min_gap", min = 0, max = 600, call = call)
   spread <- channel_spread(x)
-  width <- max(1L, round(smooth * x$rate))
+  width <- smoothing_width(smooth, x$rate)
   pieces <- list()
   meta_rows <- list()
   for (i in seq_along(x)) {
     s <- motion_speed(x$recordings[[i]], spread, width)
-    runs <- motion_runs(s, high, low, round(min_gap * x$rate), round(min_motion * x$rate))
     lv <- speed_levels(s, high, low)
+    runs <- motion_runs(s, lv, round(min_gap * x$rate), round(min_motion * x$rate))
     for (k in seq_len(nrow(runs))) {
       runs$start[k] <- edge_extrapolate(s, runs$start[k], lv, forward = TRUE)
       runs$end[k] <- edge_extrapolate(s, runs$end[k], lv, forward = FALSE)
@@ -127,6 +127,9 @@ cut_motion <- function(x, min_motion = 0.3, min_gap = 0.3, high = 0.15, low = 0.
   meta <- do.call(rbind, meta_rows)
   new_grasps(pieces, meta, x$dofs, x$rate, x$unit, glove = x$glove)
 }
+
+# Frames of the speed's moving average: `smooth` seconds, at least one.
+smoothing_width <- function(smooth, rate) max(1L, round(smooth * rate))
 
 # The spread of each channel over every frame of a set (interquartile range,
 # else the range), zero for a constant channel.
@@ -194,10 +197,9 @@ motion_span <- function(s, high, low, min_still) {
   list(start = as.integer(a), end = as.integer(b), found = TRUE)
 }
 
-# Every motion of a stream: runs above the low level that reach the high
-# level, joined across gaps shorter than `min_gap`, at least `min_len` long.
-motion_runs <- function(s, high, low, min_gap, min_len) {
-  lv <- speed_levels(s, high, low)
+# Every motion of a stream: runs above the low level of `lv` (speed_levels())
+# that reach its high level, joined across gaps shorter than `min_gap`, at least `min_len` long.
+motion_runs <- function(s, lv, min_gap, min_len) {
   empty <- data.frame(start = integer(), end = integer())
   if (!lv$clear) return(empty)
   r <- rle(s > lv$lo)
@@ -291,7 +293,7 @@ still_phases <- function(x, motion) {
 # detector looks `lag + width / 2` frames ahead (about 80 ms).
 fit_onset_detector <- function(x, high = 0.15, low = 0.03, smooth = 0.08) {
   spread <- channel_spread(x)
-  width <- max(1L, round(smooth * x$rate))
+  width <- smoothing_width(smooth, x$rate)
   lv <- lapply(x$recordings, function(r) speed_levels(motion_speed(r, spread, width), high, low))
   list(spread = spread, width = width, hi = stats::median(vapply(lv, `[[`, 0, "hi")),
        lo = stats::median(vapply(lv, `[[`, 0, "lo")), rate = x$rate)
