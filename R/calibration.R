@@ -52,7 +52,7 @@
 #' @param x A labelled [grasps()] object; `NULL` simulates the default data.
 #' @param models A [fit_grasp_models()] result for `x`, or `NULL` to fit one
 #'   (with `seed`).
-#' @param last_frame A [fit_last_frame_pca()] result for `x` with `k = 5`, or
+#' @param last_frame A [fit_last_frame_pca()] result for `x` with `ncomp = 5`, or
 #'   `NULL` to fit one.
 #' @param seed Seed of the model fits.
 #' @param held_out Also run the leave-subject-out evaluations (slow for the
@@ -94,7 +94,7 @@ calibration_report <- function(x = NULL, models = NULL, last_frame = NULL, seed 
     hm_abort("{.arg models} must be a {.cls grasp_models} object from {.fn fit_grasp_models}, not {.obj_type_friendly {models}}.",
              "bad_input", argument = "models", call = call)
   }
-  if (is.null(last_frame)) last_frame <- fit_grasp_classifier(x, method = "last_frame", k = 5)
+  if (is.null(last_frame)) last_frame <- fit_grasp_classifier(x, method = "last_frame", ncomp = 5)
   if (!inherits(last_frame, "last_frame_pca")) {
     hm_abort("{.arg last_frame} must be a {.cls last_frame_pca} object from {.code fit_grasp_classifier(method = \"last_frame\")}, not {.obj_type_friendly {last_frame}}.",
              "bad_input", argument = "last_frame", call = call)
@@ -102,7 +102,7 @@ calibration_report <- function(x = NULL, models = NULL, last_frame = NULL, seed 
   ours <- calibration_measure(x, models, last_frame)
   loso <- NULL
   if (isTRUE(held_out)) {
-    ev_lf <- evaluate_loso(x, "last_frame", fit_args = list(k = 5), folds = folds, seed = seed)
+    ev_lf <- evaluate_loso(x, "last_frame", fit_args = list(ncomp = 5), folds = folds, seed = seed)
     ev_fp <- evaluate_loso(x, "fpca", fit_args = list(seed = seed), folds = folds, seed = seed)
     loso <- data.frame(classifier = c("last_frame", "fpca"),
                        in_sample = c(ours$accuracy[["last_frame"]], ours$accuracy[["fpca"]]),
@@ -249,7 +249,7 @@ calibration_report_seeds <- function(seeds, x, models, last_frame, seed, held_ou
   }
   reps <- lapply(seeds, function(s) {
     g <- simulate_grasps(seed = s)
-    calibration_report(g, models = fit_grasp_models(g, seed = seed), last_frame = fit_last_frame_pca(g, k = 5))
+    calibration_report(g, models = fit_grasp_models(g, seed = seed), last_frame = fit_last_frame_pca(g, ncomp = 5))
   })
   calibration_combine(reps, seeds)
 }

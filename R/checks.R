@@ -140,10 +140,34 @@ check_dots_for <- function(dots, fun, fun_name, exclude = character(), call = rl
     set_here <- intersect(unknown, exclude)
     hm_abort(c(if (length(set_here)) "{.arg ...} cannot set {.val {set_here}}: this function sets {?it/them} itself."
                else "{.arg ...} is passed to {.fn {fun_name}}, which has no argument{?s} {.val {shown}}.",
+               renamed_argument_hints(unknown),
                i = "Arguments passed on must be named; see {.help [{.fn {fun_name}}](handmotion::{fun_name})}."),
              "bad_input", argument = "...", call = call)
   }
   invisible(dots)
+}
+
+# A renamed argument given to a verb by its old name is an error that says
+# the new one, instead of R's "unused argument" or, worse, a partial match
+# (fit_grasp_model(k = 2) of development versions would set `keep_data`).
+check_renamed_args <- function(given, fun_name, call = rlang::caller_env()) {
+  old <- intersect(given, names(renamed_arguments))
+  if (length(old) == 0L) return(invisible())
+  hm_abort(c("{.fn {fun_name}} has no argument{?s} {.val {old}}.", renamed_argument_hints(old),
+             i = "See {.help [{.fn {fun_name}}](handmotion::{fun_name})}."),
+           "bad_input", argument = old[1], call = call)
+}
+
+# Arguments renamed before the first release (see ?handmotion-renamed), by
+# what they count: one bullet per old name the caller used.
+renamed_arguments <- c(
+  k = paste("{.arg k} was renamed by what it counts: {.arg mixture_components} (fit_grasp_model(),",
+            "fit_grasp_models()), {.arg ncomp} (last-frame PCs) or {.arg neighbours} (fit_handover()).")
+)
+
+renamed_argument_hints <- function(nms) {
+  hit <- intersect(nms, names(renamed_arguments))
+  stats::setNames(unname(renamed_arguments[hit]), rep("i", length(hit)))
 }
 
 # Class labels asked for by name (or, for Feix-labelled data, by id):

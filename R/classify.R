@@ -77,7 +77,7 @@
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' lf <- fit_grasp_classifier(g, method = "last_frame", k = 2)
+#' lf <- fit_grasp_classifier(g, method = "last_frame", ncomp = 2)
 #' cl <- classify(lf, g)
 #' cl
 #' grasp_confusion(cl)
@@ -125,10 +125,10 @@ resolve_method <- function(models, method, defaulted, call = rlang::caller_env()
 fit_classifier <- function(train, method, fit_args) {
   if (method != "fpca") return(do.call(fit_grasp_classifier, c(list(train, method = method), fit_args)))
   # The FPCA distance reads only each model's mean curves and FPCs, never
-  # its score mixtures; one Gaussian (k = 1, closed form) instead of the EM
+  # its score mixtures; one Gaussian (mixture_components = 1, closed form) instead of the EM
   # for two components halves the refit without changing one prediction.
   # Held-out classification needs no probabilities, so no temperature.
-  if (is.null(fit_args$k)) fit_args$k <- 1L
+  if (is.null(fit_args$mixture_components)) fit_args$mixture_components <- 1L
   do.call(fit_model_set, c(list(train), fit_args, calibrate = FALSE))
 }
 
@@ -260,7 +260,7 @@ print.grasp_classification <- function(x, ...) {
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' lf <- fit_grasp_classifier(g, method = "last_frame", k = 2)
+#' lf <- fit_grasp_classifier(g, method = "last_frame", ncomp = 2)
 #' cl <- classify(lf, g)
 #' summary(cl)
 #' head(as.data.frame(cl))
@@ -303,7 +303,7 @@ as.data.frame.grasp_classification <- function(x, row.names = NULL, optional = F
 #' set.seed(1)
 #' recs <- lapply(1:12, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 6)))
-#' distance_table(classify(fit_grasp_classifier(g, method = "last_frame", k = 2), g))
+#' distance_table(classify(fit_grasp_classifier(g, method = "last_frame", ncomp = 2), g))
 distance_table <- function(models, x = NULL) {
   call <- rlang::caller_env()
   cl <- if (inherits(models, "grasp_classification")) models else {

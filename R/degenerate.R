@@ -69,7 +69,7 @@ model_degeneracies <- function(model, n_frames) {
     where <- ifelse(is.na(fb$dof[small]), "warps", fb$dof[small])
     notes <- add_degenerate_note(notes, "small_mixture", sprintf(
       "%d mixture%s cannot carry %d components and %s one Gaussian (%s): %s",
-      sum(small), if (sum(small) == 1L) "" else "s", model$settings$k,
+      sum(small), if (sum(small) == 1L) "" else "s", model$settings$mixture_components,
       if (sum(small) == 1L) "is" else "are", name_list(where), sub("^single Gaussian: ", "", fb$reason[small][1])))
   }
   notes

@@ -18,10 +18,10 @@
 #' models once per subject (30 times 33 models for HUST: about a minute on
 #' two cores for the default data). The FPCA distance uses only the models'
 #' mean curves and FPCs, so its folds fit one Gaussian to the scores
-#' (`k = 1`, no EM) unless `fit_args` sets `k`; the predictions are those of
-#' the thesis' two-component models. `folds = k` is the cheaper option:
-#' subjects are split at random (seeded) into `k` groups and each group is
-#' held out in turn (leave-one-group-of-subjects-out), so only `k` refits are
+#' (`mixture_components = 1`, no EM) unless `fit_args` sets it; the predictions are those of
+#' the thesis' two-component models. `folds = n` is the cheaper option:
+#' subjects are split at random (seeded) into `n` groups and each group is
+#' held out in turn (leave-one-group-of-subjects-out), so only `n` refits are
 #' needed; it is still subject-independent, slightly pessimistic because each
 #' fit sees fewer subjects.
 #'
@@ -50,11 +50,11 @@
 #'   or `"last_frame"`, `"discriminant"` or `"weighted_fpca"`
 #'   ([fit_grasp_classifier()] with that `method`).
 #' @param fit_args A list of arguments for the fitting function (e.g.
-#'   `list(k = 5)` for last-frame PCA: the `...` of [fit_grasp_classifier()]).
+#'   `list(ncomp = 5)` for last-frame PCA: the `...` of [fit_grasp_classifier()]).
 #' @param subjects Subjects to hold out (default: all). Other subjects are
 #'   always in the training set.
 #' @param folds By subject: `NULL` for one fold per subject (LOSO), or a
-#'   number `k` of subject groups. By recording: the number of folds
+#'   number `n` of subject groups. By recording: the number of folds
 #'   (`NULL`: 5).
 #' @param in_sample Also compute the in-sample (thesis) confusion matrix.
 #' @param seed Seed for the random grouping of subjects or recordings into
@@ -77,9 +77,9 @@
 #' recs <- lapply(1:24, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 12),
 #'                                     subject = rep(paste0("s", 1:6), each = 4)))
-#' ev <- evaluate_loso(g, method = "last_frame", fit_args = list(k = 2))
+#' ev <- evaluate_loso(g, method = "last_frame", fit_args = list(ncomp = 2))
 #' ev
-#' evaluate_loso(g, method = "last_frame", fit_args = list(k = 2), folds = 3)$accuracy
+#' evaluate_loso(g, method = "last_frame", fit_args = list(ncomp = 2), folds = 3)$accuracy
 evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "weighted_fpca"), fit_args = list(), subjects = NULL,
                           folds = NULL, in_sample = TRUE, seed = 1, split = c("auto", "subject", "recording")) {
   call <- rlang::caller_env()
@@ -240,7 +240,7 @@ print.grasp_evaluation <- function(x, ...) {
 #' recs <- lapply(1:24, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 12),
 #'                                     subject = rep(paste0("s", 1:6), each = 4)))
-#' summary(evaluate_loso(g, method = "last_frame", fit_args = list(k = 2)))
+#' summary(evaluate_loso(g, method = "last_frame", fit_args = list(ncomp = 2)))
 summary.grasp_evaluation <- function(object, ...) {
   h <- as.data.frame(unclass(summary(object$confusion)))
   out <- data.frame(metric = h$metric, class = h$class, held_out = h$estimate, stringsAsFactors = FALSE)
@@ -262,7 +262,7 @@ summary.grasp_evaluation <- function(object, ...) {
 #' recs <- lapply(1:24, function(i) matrix(rnorm(10 * 16, mean = i %% 2 * 40), 10, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c("Tripod", "Ring"), 12),
 #'                                     subject = rep(paste0("s", 1:6), each = 4)))
-#' ggplot2::autoplot(evaluate_loso(g, method = "last_frame", fit_args = list(k = 2)))
+#' ggplot2::autoplot(evaluate_loso(g, method = "last_frame", fit_args = list(ncomp = 2)))
 autoplot.grasp_evaluation <- function(object, ...) {
   autoplot.grasp_confusion(object$confusion, ...) +
     ggplot2::labs(title = sprintf("Held-out (%s) confusion matrix", object$scheme))

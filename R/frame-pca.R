@@ -31,8 +31,8 @@
 #'
 #' @param x A [grasps()] object of one grasp type, or an alignment from
 #'   `align_recordings()`.
-#' @param d Number of PCs kept in each frame.
-#' @param k Number of FPCs of each PC's weight curve (and of each DoF in the
+#' @param frame_ncomp Number of PCs kept in each frame (`d` in the thesis).
+#' @param ncomp Number of FPCs of each PC's weight curve (and of each DoF in the
 #'   comparison).
 #' @param align_signs Flip each frame's PCs to agree with the previous frame's.
 #' @param nbasis Each weight curve is "approximated as a continuous function"
@@ -50,7 +50,7 @@
 #'   `sign_flips` (data frame: `component`, `raw`, `aligned` counts),
 #'   `flip_frames` (logical L x d, raw flips), `fpca` (one `fpca_fit()` per
 #'   PC), `gmm` (one `gmm_fit()` per PC), `reconstruction` (data frame: `id`,
-#'   `frame_pca_rmse`, `fpca_rmse`), `align_signs`, `d`, `k`, `ids`, `dofs`,
+#'   `frame_pca_rmse`, `fpca_rmse`), `align_signs`, `frame_ncomp`, `ncomp`, `ids`, `dofs`,
 #'   `grasp`.
 #' @seealso `autoplot.frame_pca_model()`, [fit_grasp_model()] (the model that
 #'   was kept).
@@ -61,10 +61,10 @@
 #' fixed <- fit_frame_pca_model(g, align_signs = TRUE)
 #' raw$sign_flips
 #' colMeans(fixed$reconstruction[, -1])
-fit_frame_pca_model <- function(x, d = 3, k = 2, align_signs = FALSE, nbasis = 10, ...) {
+fit_frame_pca_model <- function(x, frame_ncomp = 3, ncomp = 2, align_signs = FALSE, nbasis = 10, ...) {
   call <- rlang::caller_env()
-  check_whole(d, "d", max = 50, call = call)
-  check_whole(k, "k", max = 50, call = call)
+  d <- check_whole(frame_ncomp, "frame_ncomp", max = 50, call = call)
+  ncomp <- check_whole(ncomp, "ncomp", max = 50, call = call)
   check_whole(nbasis, "nbasis", max = 1000, allow_null = TRUE, call = call)
   if (inherits(x, "grasp_alignment")) {
     aln <- x
@@ -80,10 +80,10 @@ fit_frame_pca_model <- function(x, d = 3, k = 2, align_signs = FALSE, nbasis = 1
   L <- dim(W)[2]
   p <- dim(W)[3]
   if (d > p) {
-    hm_abort("{.arg d} = {d} exceeds the number of DoFs ({p}).", "bad_input", argument = "d", call = call)
+    hm_abort("{.arg frame_ncomp} = {d} exceeds the number of DoFs ({p}).", "bad_input", argument = "frame_ncomp", call = call)
   }
-  if (n < k + 1L || n < 2L) {
-    hm_abort("The frame-PCA model needs at least {max(2, k + 1)} aligned recordings, not {n}.",
+  if (n < ncomp + 1L || n < 2L) {
+    hm_abort("The frame-PCA model needs at least {max(2, ncomp + 1)} aligned recordings, not {n}.",
              "too_few_recordings", call = call)
   }
   ids <- dimnames(W)[[1]] %||% paste0("r", seq_len(n))
@@ -101,7 +101,7 @@ fit_frame_pca_model <- function(x, d = 3, k = 2, align_signs = FALSE, nbasis = 1
   argvals <- seq(0, 1, length.out = L)
   S <- cosine_smoother(L, nbasis)
   fpca <- lapply(seq_len(d), function(i) {
-    fit_fpca_or_constant(matrix(weights[, , i], n, L) %*% S, argvals, k, "fast")
+    fit_fpca_or_constant(matrix(weights[, , i], n, L) %*% S, argvals, ncomp, "fast")
   })
   gmm <- lapply(fpca, fit_mixture, k = 2L, engine = "fast")
   names(fpca) <- names(gmm) <- paste0("PC", seq_len(d))
@@ -113,12 +113,12 @@ fit_frame_pca_model <- function(x, d = 3, k = 2, align_signs = FALSE, nbasis = 1
     for (t in seq_len(L)) recon[, t, ] <- recon[, t, ] + outer(a_hat[, t], loadings[t, , i])
   }
   rmse_frame <- sqrt(apply((W - recon)^2, 1, mean))
-  rmse_fpca <- per_dof_fpca_rmse(W, argvals, k)
+  rmse_fpca <- per_dof_fpca_rmse(W, argvals, ncomp)
 
   dimnames(loadings) <- dimnames(per_frame$loadings) <- list(NULL, dofs, paste0("PC", seq_len(d)))
   dimnames(weights) <- dimnames(per_frame$weights) <- list(ids, NULL, paste0("PC", seq_len(d)))
   structure(list(
-    grasp = grasp, ids = ids, dofs = dofs, d = as.integer(d), k = as.integer(k), nbasis = nbasis,
+    grasp = grasp, ids = ids, dofs = dofs, frame_ncomp = as.integer(d), ncomp = as.integer(ncomp), nbasis = nbasis,
     align_signs = isTRUE(align_signs),
     loadings = loadings, weights = weights,
     loadings_raw = per_frame$loadings, weights_raw = per_frame$weights,
@@ -236,7 +236,7 @@ per_dof_fpca_rmse <- function(W, argvals, k) {
 #' @export
 print.frame_pca_model <- function(x, ...) {
   cat(sprintf("<frame_pca_model> %s: %d recordings, %d PCs per frame, %d FPCs per PC%s\n",
-              if (is.na(x$grasp)) "alignment" else x$grasp, length(x$ids), x$d, x$k,
+              if (is.na(x$grasp)) "alignment" else x$grasp, length(x$ids), x$frame_ncomp, x$ncomp,
               if (x$align_signs) ", signs aligned" else ""))
   cat("  sign flips between frames (raw / after repair): ",
       paste0(x$sign_flips$component, " ", x$sign_flips$raw, "/", x$sign_flips$aligned, collapse = ", "),

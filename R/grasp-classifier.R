@@ -34,10 +34,10 @@
 #'   recordings, centred on the type's mean last frame, and their principal
 #'   components (no scaling: all DoFs share the angle unit). A recording is
 #'   scored against each type by the Euclidean distance between its last frame
-#'   and that frame's projection on the type's first `k` PCs
+#'   and that frame's projection on the type's first `ncomp` PCs
 #'   ([predict.last_frame_pca()]). A type with `n` recordings has at most
-#'   `n - 1` informative PCs; when `n - 1 < k` it uses `n - 1` (0 for a single
-#'   recording: distance to the mean), recorded in `$k_used` and announced by
+#'   `n - 1` informative PCs; when `n - 1 < ncomp` it uses `n - 1` (0 for a single
+#'   recording: distance to the mean), recorded in `$ncomp_used` and announced by
 #'   a warning of class `handmotion_warning_few_recordings`. Unlabelled
 #'   recordings are ignored and counted in `$n_unlabelled`.
 #' * `"weighted_fpca"` (the thesis' own proposals, its chapter 6; class
@@ -70,12 +70,12 @@
 #'     16 equal steps held out by subject on the default data); `prior`,
 #'     `"equal"` (default: every type equally likely a priori) or `"data"`
 #'     (the training shares).
-#'   * `"last_frame"`: `k`, the number of PCs used (default 5, as the
+#'   * `"last_frame"`: `ncomp`, the number of PCs used (default 5, as the
 #'     thesis); `grasps`, an optional subset of grasp types to fit (names or
 #'     ids; all types present by default).
 #'   * `"weighted_fpca"`: `models`, a [fit_grasp_models()] fit on `x`, or
 #'     `NULL` (default) to fit one with one Gaussian per DoF for the scores
-#'     (`k = 1`: on the default data, subjects 1-20 fitted and 21-30
+#'     (`mixture_components = 1`: on the default data, subjects 1-20 fitted and 21-30
 #'     classified, it recognises 64.2% against 62.5% with the thesis' two
 #'     components, at half the fitting cost); `time`, `"uniform"` (default) or
 #'     `"end"`; any other argument is passed to [fit_grasp_models()] when
@@ -87,7 +87,7 @@
 #'     class centres, log priors, `shrinkage`) and `n` (training recordings
 #'     per type);
 #'   * `"last_frame"`: class `last_frame_pca`, a list with `models` (one per
-#'     type: `mean`, `rotation`, `sdev`, `cumvar`, `n`), `k`, `k_used` (named
+#'     type: `mean`, `rotation`, `sdev`, `cumvar`, `n`), `ncomp`, `ncomp_used` (named
 #'     integer), `dofs` and `n_unlabelled`;
 #'   * `"weighted_fpca"`: class `weighted_fpca`, a list with `models` (the
 #'     `grasp_models`), `time`, `scale` (types x DoFs matrix of `s2`) and `n`
@@ -107,7 +107,7 @@
 #' predict(cl, test)
 #' head(predict(cl, test, type = "prob"))
 #' classify(cl, test)
-#' lf <- fit_grasp_classifier(train, method = "last_frame", k = 2)
+#' lf <- fit_grasp_classifier(train, method = "last_frame", ncomp = 2)
 #' lf
 #' classify(lf, test)
 #' w <- fit_grasp_classifier(train, method = "weighted_fpca", seed = 1)
@@ -233,7 +233,7 @@ print.grasp_classifier <- function(x, ...) {
 #' @param ... Unused.
 #' @return A data frame with columns `class` and `n` (training recordings),
 #'   and by classifier: `"discriminant"` and the recogniser `log_prior`;
-#'   `"last_frame"` `k_used` (PCs used) and `var_explained` (the fraction of
+#'   `"last_frame"` `ncomp_used` (PCs used) and `var_explained` (the fraction of
 #'   the type's last-frame variance they explain); `"weighted_fpca"`
 #'   `top_dofs` (the two DoFs it weighs most for the type) and `weight_range`
 #'   (largest over smallest DoF weight).
@@ -241,7 +241,7 @@ print.grasp_classifier <- function(x, ...) {
 #' @examples
 #' g <- simulate_grasps(subjects = 4, grasps = 1:3, objects = 2, trials = 2, seed = 1)
 #' summary(fit_grasp_classifier(g))
-#' summary(fit_grasp_classifier(g, method = "last_frame", k = 2))
+#' summary(fit_grasp_classifier(g, method = "last_frame", ncomp = 2))
 #' summary(fit_grasp_recognizer(g))
 summary.grasp_classifier <- function(object, ...) {
   data.frame(class = object$classes, n = as.integer(object$n[object$classes]),

@@ -20,7 +20,7 @@
 #' 4. functional PCA with `warp_ncomp` components on the warping functions,
 #'    which are kept in original frames so that one component captures the
 #'    variation in duration;
-#' 5. a `k`-component Gaussian mixture per DoF on the FPC scores, and one on
+#' 5. a `mixture_components`-component Gaussian mixture per DoF on the FPC scores, and one on
 #'    the warp scores (`gmm_fit()`, with EM capped at 5000 iterations,
 #'    recorded as `settings$gmm_max_iter`); when EM fails the mixture is
 #'    replaced by a single Gaussian with the sample mean and covariance
@@ -58,7 +58,7 @@
 #' **Defaults.** Arguments left `NULL` take the defaults of the chosen
 #' `dependence`:
 #'
-#' | | `ncomp` | `warp_ncomp` | `k` | `warping` | `fpc_scores` | `mixture_guard` |
+#' | | `ncomp` | `warp_ncomp` | `mixture_components` | `warping` | `fpc_scores` | `mixture_guard` |
 #' |---|---|---|---|---|---|---|
 #' | `"independent"` (the thesis) | 2 | 1 | 2 | `"dtw"` | `"trapezoid"` | `"none"` |
 #' | `"copula"` | 4 | 1 | 1 | `"linear"` | `"least_squares"` | `"bic"` |
@@ -90,7 +90,8 @@
 #' @param warp_ncomp Number of FPCs of the warping functions. `NULL`
 #'   (default): 1 (the thesis; with linear time normalisation the warps vary
 #'   only by their duration, which one FPC carries exactly).
-#' @param k Number of mixture components per score mixture. `NULL`
+#' @param mixture_components Number of Gaussian components of each score
+#'   mixture (`k` in development versions). `NULL`
 #'   (default): 2 for the independent model (the thesis), 1 for the copula
 #'   model (see Defaults).
 #' @param engine `"fast"` or `"reference"`, passed to the alignment, FPCA and
@@ -126,13 +127,13 @@
 #'   their fingers together as the recorded ones do
 #'   ([evaluate_generation()] measures it), and [generate()] keeps them
 #'   inside the joint limits by default.
-#' @param mixture_guard `"bic"` keeps a `k`-component mixture only if every
+#' @param mixture_guard `"bic"` keeps a mixture of `mixture_components` only if every
 #'   component holds at least `max(2 (d + 1), 0.05 n)` of the `n` recordings
 #'   and its BIC beats one Gaussian's; otherwise one Gaussian replaces it
 #'   (listed in `fallbacks` as `"mixture_guard"`). It removes the slivers
 #'   fitted to two or three outlying recordings (the thesis' Figure 5.6).
 #'   `"none"` fits the thesis' mixtures as they come. `NULL` (default):
-#'   `"bic"` for the copula model (it matters there only with `k > 1`),
+#'   `"bic"` for the copula model (it matters there only with `mixture_components > 1`),
 #'   `"none"` for the independent one.
 #' @param fpc_scores How FPC scores integrate over time (`fpca_fit()`):
 #'   `"trapezoid"`, fda.usc's rule as in the thesis, or `"least_squares"`,
@@ -190,19 +191,28 @@
 #' # fingers that move together
 #' mc <- fit_grasp_model(g, seed = 1, dependence = "copula")
 #' mc
-fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k = NULL,
+fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, mixture_components = NULL,
                             engine = c("fast", "reference"), overlong = c(iqr_mult = 3, median_mult = 1.5),
                             warping = NULL, max_stall = 0.25, seed = 1,
                             keep_data = TRUE, dependence = c("independent", "copula"),
                             mixture_guard = NULL, fpc_scores = NULL, motion = c("auto", "trim", "as_recorded"),
                             residuals = NULL) {
   call <- rlang::caller_env()
+  # (an old `k = 2` would otherwise be taken for `keep_data` by partial matching)
+  check_renamed_args(names(sys.call()), "fit_grasp_model", call = call)
   check_grasps(x, call = call)
   dependence <- check_choice(dependence, arg = "dependence", call = call)
   # what NULL means depends on the model (see model_defaults)
   def <- model_defaults[[dependence]]
+  # which settings the caller left to the defaults, for print()
+  defaulted <- c(ncomp = is.null(ncomp), warp_ncomp = is.null(warp_ncomp),
+                 mixture_components = is.null(mixture_components), warping = is.null(warping),
+                 fpc_scores = is.null(fpc_scores), mixture_guard = is.null(mixture_guard),
+                 residuals = is.null(residuals))
+  motion_asked <- motion[1]
   ncomp <- check_whole(ncomp %||% def$ncomp, "ncomp", max = 50, call = call)
-  k <- check_whole(k %||% def$k, "k", max = 50, call = call)
+  mixture_components <- check_whole(mixture_components %||% def$mixture_components,
+                                    "mixture_components", max = 50, call = call)
   warp_ncomp <- check_whole(warp_ncomp %||% def$warp_ncomp, "warp_ncomp", max = 50, call = call)
   engines <- resolve_engines(engine, call)
   if (!is.null(warping)) warping <- check_choice(warping, c("dtw", "linear"), arg = "warping", call = call)
@@ -227,30 +237,17 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, k 
   warping <- warping %||% if (motion == "trim") "linear" else def$warping
   residuals <- check_choice(residuals %||% "none", c("none", "resample"), arg = "residuals", call = call)
   settings <- list(ncomp = as.integer(ncomp), warp_ncomp = as.integer(warp_ncomp),
-                   k = as.integer(k), overlong = overlong, warping = warping, max_stall = max_stall,
+                   mixture_components = as.integer(mixture_components), overlong = overlong, warping = warping, max_stall = max_stall,
                    keep_data = keep_data, gmm_max_iter = gmm_model_max_iter,
                    dependence = dependence, mixture_guard = mixture_guard, fpc_scores = fpc_scores,
-                   motion = motion, residuals = residuals)
+                   motion = motion, residuals = residuals,
+                   defaulted = names(defaulted)[defaulted], motion_asked = motion_asked)
   model <- with_seed(seed, fit_grasp_model_impl(x, settings, engines, call, phases))
   warn_degenerate(model$degenerate_data,
                   sprintf("The model of grasp type \"%s\" rests on degenerate data:", model$grasp))
   model
 }
 
-# The settings each model takes when its arguments are left NULL. The
-# independent model is the thesis' (section 4.1); the copula model's were
-# chosen by measurement on held-out subjects (vignette("natural-grasps") and
-# NEWS): linear time normalisation keeps the timing in the curves, where the
-# FPCs and the copula carry it with the rest, instead of in DTW warps that
-# the inverse map cannot reproduce; least-squares scores reconstruct the
-# final posture in full; four FPCs per DoF carry the mid-motion variation;
-# one Gaussian per score is as good as two-component mixtures there at a
-# fraction of the cost (the guard still applies with k > 1).
-model_defaults <- list(
-  independent = list(ncomp = 2L, warp_ncomp = 1L, k = 2L, warping = "dtw",
-                     mixture_guard = "none", fpc_scores = "trapezoid"),
-  copula = list(ncomp = 4L, warp_ncomp = 1L, k = 1L, warping = "linear",
-                mixture_guard = "bic", fpc_scores = "least_squares"))
 
 fit_grasp_model_impl <- function(x, settings, engines, call, phases = NULL) {
   t0 <- proc.time()[["elapsed"]]
@@ -301,7 +298,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call, phases = NULL) {
   names(gmm) <- dofs
   guard <- settings$mixture_guard %||% "none"
   for (j in seq_len(p)) {
-    gmm[[j]] <- fit_mixture(fpca[[j]], settings$k, engines$gmm, settings$gmm_max_iter, guard)
+    gmm[[j]] <- fit_mixture(fpca[[j]], settings$mixture_components, engines$gmm, settings$gmm_max_iter, guard)
     if (isTRUE(gmm[[j]]$fallback) && !isTRUE(fpca[[j]]$constant)) {
       fallbacks <- add_fallback(fallbacks, "mixture", dofs[j],
                                 paste("single Gaussian:", gmm_reason(gmm[[j]])))
@@ -310,7 +307,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call, phases = NULL) {
       fallbacks <- add_fallback(fallbacks, "mixture_guard", dofs[j], paste("single Gaussian:", gmm[[j]]$guard))
     }
   }
-  warp_gmm <- fit_mixture(warp_fit, settings$k, engines$gmm, settings$gmm_max_iter, guard)
+  warp_gmm <- fit_mixture(warp_fit, settings$mixture_components, engines$gmm, settings$gmm_max_iter, guard)
   if (isTRUE(warp_gmm$fallback) && !isTRUE(warp_fit$constant)) {
     fallbacks <- add_fallback(fallbacks, "warp_mixture", NA_character_,
                               paste("single Gaussian:", gmm_reason(warp_gmm)))
@@ -348,457 +345,4 @@ fit_grasp_model_impl <- function(x, settings, engines, call, phases = NULL) {
     # functions, frame counts, degenerate warps): the model's data, kept once
     alignment = if (isTRUE(settings$keep_data)) aln
   )
-}
-
-# The one constructor of class "grasp_model": the fitted parts in (one FPCA
-# and one mixture per DoF, the warp model), each stored once. The stacked
-# views are derived when needed (model_basis(), model_scores(),
-# model_var_explained(): a few arrays of L x p x ncomp numbers, microseconds).
-# Two derived parts are kept: the generation `sampler` (the mixtures'
-# cumulative weights and covariance roots; rebuilding it costs about 1 ms,
-# four times a one-grasp generate()) and the cross-DoF `dependence` (a fit of
-# its own); nothing sets them apart from the mixtures and scores they come
-# from.
-new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, argvals, n_input, n_used,
-                            ids, removed, warping, fpca, gmm, warp, fallbacks, settings, engine, timing,
-                            limits, alignment = NULL, degenerate_data = empty_degenerate_notes(),
-                            levels = feix_levels(), glove = NULL, phases = NULL, residuals = NULL) {
-  model <- list(grasp = grasp, grasp_id = grasp_id, dofs = dofs, rate = rate, unit = unit,
-                target_length = target_length, argvals = argvals, n_input = n_input, n_used = n_used,
-                ids = ids, removed = removed, warping = warping, fpca = fpca, gmm = gmm, warp = warp, fallbacks = fallbacks, settings = settings, engine = engine,
-                timing = timing)
-  model$sampler <- build_sampler(model)
-  model$dependence <- list(type = settings$dependence,
-                           copula = if (settings$dependence == "copula") fit_score_copula(model))
-  model$limits <- limits
-  # the labels the model was fitted among (its own is `grasp`) and the glove
-  # of its recordings, so generated grasps carry both
-  model$levels <- levels
-  model$glove <- glove
-  model$phases <- phases
-  model$residuals <- residuals
-  model$degenerate_data <- degenerate_data
-  model$alignment <- alignment
-  validate_grasp_model(structure(model, class = "grasp_model"))
-}
-
-# Shapes that fit together: p DoFs, L template frames, n recordings used,
-# ncomp FPCs per DoF; one FPCA and one mixture per DoF; the kept alignment
-# (if any) holds exactly the recordings used.
-validate_grasp_model <- function(x) {
-  p <- length(x$dofs)
-  L <- x$target_length
-  n <- x$n_used
-  q <- x$settings$ncomp
-  stopifnot(
-    is.character(x$grasp), length(x$grasp) == 1L,
-    length(x$argvals) == L, n == length(x$ids), n <= x$n_input,
-    identical(names(x$fpca), x$dofs), identical(names(x$gmm), x$dofs),
-    all(vapply(x$fpca, inherits, logical(1), "fpca_fit")),
-    all(vapply(x$gmm, inherits, logical(1), "gmm_fit")),
-    is.null(fpca_shape_fault(x)), has_dim(model_scores(x), c(n, p, q)),
-    inherits(x$warp$fpca, "fpca_fit"), length(x$warp$fpca$mean) == L,
-    nrow(warp_basis(x)$components) == L, nrow(warp_basis(x)$scores) == n,
-    is.data.frame(x$removed), is.data.frame(x$fallbacks), is.data.frame(x$degenerate_data),
-    x$dependence$type %in% c("independent", "copula"),
-    is.null(x$alignment) || (inherits(x$alignment, "grasp_alignment") && dim(x$alignment$warped)[1] == n)
-  )
-  x
-}
-
-has_dim <- function(a, d) length(dim(a)) == length(d) && all(dim(a) == d)
-
-# Steps 1-2 (also used by the frame-PCA alternative): over-long removal, then
-# alignment to the mean frame count, with degenerate warps dropped and a
-# linear fallback if the aligner itself fails.
-prepare_alignment <- function(x, settings, engines, call) {
-  meta <- x$meta
-  recs <- x$recordings
-  type <- as.character(meta$grasp[1])
-  removed <- empty_removed()
-  fallbacks <- empty_fallbacks()
-  long <- find_overlong(meta$n_frames, rule = settings$overlong)
-  if (any(long)) {
-    removed <- rbind(removed, data.frame(id = meta$id[long], n_frames = meta$n_frames[long],
-                                         reason = "overlong", detail = NA_real_, stringsAsFactors = FALSE))
-  }
-  keep <- !long
-  if (sum(keep) < 2L) {
-    hm_abort(c("Grasp type {.val {type}} has {sum(keep)} recording{?s} left after over-long removal; alignment needs 2 or more.",
-               i = "Recordings in: {length(recs)}."),
-             "too_few_recordings", grasp = type, call = call)
-  }
-  recs <- recs[keep]
-  L <- max(2L, as.integer(round(mean(meta$n_frames[keep]))))
-  if (identical(settings$warping, "linear")) {
-    aln <- align_linear_fallback(recs, L, engines$align, reason = "requested")
-  } else {
-    # (the model records degenerate data itself, see model_degeneracies())
-    aln <- tryCatch(
-      withCallingHandlers(
-        align_recordings(recs, target_length = L, engine = engines$align, max_stall = settings$max_stall),
-        handmotion_warning_degenerate = function(w) invokeRestart("muffleWarning")),
-      error = function(e) e
-    )
-    if (inherits(aln, "error")) {
-      reason <- paste("alignment failed:", cli::ansi_strip(conditionMessage(aln)))
-      aln <- align_linear_fallback(recs, L, engines$align, reason = reason)
-    }
-  }
-  if (identical(aln$method, "linear") && !identical(settings$warping, "linear")) {
-    fallbacks <- add_fallback(fallbacks, "warping", NA_character_,
-                              paste("linear warping:", (aln$fallback_reason %||% "unspecified")))
-  }
-  deg <- aln$degenerate
-  if (!is.null(deg) && nrow(deg) > 0L) {
-    removed <- rbind(removed, data.frame(id = as.character(deg$id),
-                                         n_frames = meta$n_frames[match(deg$id, meta$id)],
-                                         reason = "degenerate warp", detail = as.numeric(deg$stall),
-                                         stringsAsFactors = FALSE))
-  }
-  ids <- dimnames(aln$warped)[[1]]
-  if (is.null(ids)) ids <- setdiff(names(recs), removed$id)
-  list(alignment = aln, ids = ids, removed = removed, fallbacks = fallbacks,
-       n_input = length(x$recordings))
-}
-
-# FPCA of one set of curves, or a zero-component stand-in when the curves do
-# not vary (a constant DoF or identical warps), so later steps never divide
-# by a zero variance.
-fit_fpca_or_constant <- function(Y, argvals, ncomp, engine, score_rule = "trapezoid") {
-  # total variance over time points (colSums rather than apply(Y, 2, var):
-  # this runs once per DoF and type)
-  n <- nrow(Y)
-  v <- if (n > 1L) sum(colSums((Y - rep(colMeans(Y), each = n))^2)) / (n - 1L) else NA_real_
-  scale <- max(1, mean(Y^2))
-  if (!is.finite(v) || v <= 1e-12 * scale) {
-    return(new_fpca_fit(mean = colMeans(Y), components = matrix(0, ncol(Y), ncomp),
-                        scores = matrix(0, n, ncomp), eigenvalues = rep(0, ncomp),
-                        var_explained = rep(NA_real_, ncomp), argvals = argvals,
-                        weights = fpca_weights(argvals, fpca_delta(argvals, range(argvals)), score_rule),
-                        delta = fpca_delta(argvals, range(argvals)), rangeval = range(argvals),
-                        engine = engine, notes = "constant: the curves do not vary",
-                        constant = TRUE, score_rule = score_rule))
-  }
-  fit <- fpca_fit(Y, argvals = argvals, ncomp = ncomp, engine = engine, scores = score_rule)
-  fit$constant <- FALSE
-  fit
-}
-
-# Sign convention for the DoF components. fpca_fit() makes each component's
-# integral positive, which is arbitrary for a component whose integral is
-# near zero (an S-shaped second component): refits then flip it at random.
-# Here each component is flipped so that its largest projection onto the
-# first three Legendre polynomials on [0, 1] (constant, ramp, parabola) is
-# positive: one of the three is always clearly non-zero, so the sign is
-# stable across refits and subsets. Scores are flipped with it.
-orient_components <- function(fit) {
-  if (isTRUE(fit$constant)) return(fit)
-  s <- (fit$argvals - min(fit$argvals)) / diff(range(fit$argvals))
-  legendre <- cbind(1, sqrt(3) * (2 * s - 1), sqrt(5) * (6 * s^2 - 6 * s + 1))
-  comps <- as.matrix(fit$components)
-  proj <- crossprod(comps * fit$weights, legendre)        # ncomp x 3
-  for (c in seq_len(ncol(comps))) {
-    pick <- which.max(abs(proj[c, ]))
-    if (proj[c, pick] < 0) {
-      fit$components[, c] <- -fit$components[, c]
-      fit$scores[, c] <- -fit$scores[, c]
-    }
-  }
-  fit
-}
-
-# Sign convention for the warp FPC: a positive score means a longer grasp
-# (the component is positive at the last template frame).
-orient_warp_fpca <- function(fit) {
-  if (isTRUE(fit$constant)) return(fit)
-  comps <- as.matrix(fit$components)
-  L <- nrow(comps)
-  for (c in seq_len(ncol(comps))) {
-    if (comps[L, c] < 0) {
-      fit$components[, c] <- -fit$components[, c]
-      fit$scores[, c] <- -fit$scores[, c]
-    }
-  }
-  fit
-}
-
-# EM iteration cap of the models' mixtures. On strongly overlapping score
-# clouds EM crawls: with gmm_fit()'s default of 500 the cap, not a failure,
-# caused nearly all single-Gaussian fallbacks of the full default fit
-# (fit_grasp_models(simulate_grasps(), seed = 1): 107 DoF and 26 warp
-# mixtures at 500, 1 and 2 at 5000). mixtools' own default, which the thesis
-# probably used, is 10000; with the compiled EM 5000 costs little, and the
-# fallbacks left are real failures.
-gmm_model_max_iter <- 5000L
-
-# A mixture on the FPC scores, or a point mass at zero for a constant DoF;
-# with guard = "bic", a mixture that does not describe the data (see
-# guard_mixture()) is replaced by one Gaussian, its reason in $guard.
-fit_mixture <- function(fpca, k, engine, max_iter = gmm_model_max_iter, guard = "none") {
-  S <- as.matrix(fpca$scores)
-  if (isTRUE(fpca$constant)) return(point_mass_gmm(ncol(S), engine, n = nrow(S)))
-  if (is.null(max_iter)) max_iter <- gmm_model_max_iter # settings from before the cap existed
-  fit <- gmm_fit(S, k = k, engine = engine, max_iter = max_iter)
-  if (identical(guard, "bic")) guard_mixture(fit, S, engine) else fit
-}
-
-# The mixture guard (fit_grasp_model(mixture_guard = "bic")): a fit of k > 1
-# components is kept only if every component holds at least
-# max(2 (d + 1), 5% of n) recordings (its weight times n) and it has a lower
-# BIC than one Gaussian; otherwise one Gaussian (the maximum-likelihood fit)
-# replaces it, with the reason in $guard. Slivers fitted to two or three
-# outlying recordings (the thesis' Figure 5.6) fail the size rule; a second
-# component that only bends a unimodal cloud fails BIC.
-guard_mixture <- function(fit, S, engine) {
-  k <- length(fit$weights)
-  if (k < 2L || isTRUE(fit$fallback)) return(fit)
-  n <- nrow(S)
-  d <- ncol(S)
-  one <- gmm_fit(S, k = 1L, engine = engine)
-  min_size <- max(2 * (d + 1), 0.05 * n)
-  npar <- function(k) (k - 1) + k * d + k * d * (d + 1) / 2
-  bic_k <- -2 * fit$loglik + npar(k) * log(n)
-  bic_1 <- -2 * one$loglik + npar(1) * log(n)
-  reason <- if (min(fit$weights) * n < min_size) {
-    sprintf("smallest component holds %.1f recordings (< %.1f)", min(fit$weights) * n, min_size)
-  } else if (!is.finite(bic_k) || bic_k >= bic_1) {
-    sprintf("BIC prefers one Gaussian (%.1f vs %.1f for %d components)", bic_1, bic_k, k)
-  }
-  if (is.null(reason)) return(fit)
-  one$guard <- reason
-  one
-}
-
-point_mass_gmm <- function(d, engine, n = NA_integer_) {
-  new_gmm_fit(weights = 1, means = matrix(0, 1, d), covs = array(0, c(d, d, 1)),
-              loglik = NA_real_, iterations = 0L, converged = FALSE, fallback = TRUE,
-              reason = "constant: point mass at zero", engine = engine, n = n, point_mass = TRUE)
-}
-
-gmm_reason <- function(fit) {
-  r <- fit$reason
-  if (is.null(r) || length(r) == 0L || is.na(r[1]) || !nzchar(r[1])) "EM failed" else as.character(r[1])
-}
-
-# Mean curves (L x p) and components (L x p x ncomp) of every DoF, laid out
-# for vectorised generation and projection.
-# The views of a model's per-DoF FPCAs that the kernels and methods read,
-# stacked over DoFs: the basis (`mean` L x p, `components` L x p x ncomp),
-# the training scores (n x p x ncomp) and the variance explained (p x ncomp).
-model_basis <- function(model) {
-  dofs <- model$dofs
-  q <- model$settings$ncomp
-  L <- model$target_length
-  mean <- matrix(0, L, length(dofs), dimnames = list(NULL, dofs))
-  comps <- array(0, c(L, length(dofs), q), dimnames = list(NULL, dofs, paste0("FPC", seq_len(q))))
-  for (j in seq_along(dofs)) {
-    mean[, j] <- model$fpca[[j]]$mean
-    comps[, j, ] <- model$fpca[[j]]$components
-  }
-  list(mean = mean, components = comps)
-}
-
-model_scores <- function(model) {
-  dofs <- model$dofs
-  q <- model$settings$ncomp
-  scores <- array(0, c(model$n_used, length(dofs), q), dimnames = list(model$ids, dofs, paste0("FPC", seq_len(q))))
-  for (j in seq_along(dofs)) scores[, j, ] <- model$fpca[[j]]$scores
-  scores
-}
-
-# The warping FPCA's views, as the kernels take them (stored once, in
-# model$warp$fpca): mean (L), components (L x q) and scores (n x q).
-warp_basis <- function(model) {
-  f <- model$warp$fpca
-  L <- model$target_length
-  list(mean = as.numeric(f$mean), components = matrix(as.numeric(f$components), L),
-       scores = matrix(as.numeric(f$scores), model$n_used))
-}
-
-model_var_explained <- function(model) {
-  q <- model$settings$ncomp
-  matrix(vapply(model$fpca, function(f) as.numeric(f$var_explained), numeric(q)),
-         length(model$dofs), q, byrow = TRUE, dimnames = list(model$dofs, paste0("FPC", seq_len(q))))
-}
-
-# What in a model's FPCAs the kernels could not take (NULL when nothing): a
-# model changed by hand gets a classed error naming it (see model_fault()),
-# not a crash or an R error from model_basis().
-fpca_shape_fault <- function(model, ncomp = model$settings$ncomp) {
-  L <- model$target_length
-  if (length(model$fpca) != length(model$dofs)) return("it does not hold one FPCA per DoF")
-  for (j in seq_along(model$fpca)) {
-    f <- model$fpca[[j]]
-    if (!is.numeric(f$mean) || length(f$mean) != L) {
-      return(sprintf("the FPCA mean of DoF %s does not have %d frames", model$dofs[j], L))
-    }
-    if (!is.numeric(f$components) || length(f$components) != L * ncomp) {
-      return(sprintf("the FPCs of DoF %s are not %d frames x %d", model$dofs[j], L, ncomp))
-    }
-  }
-  NULL
-}
-
-empty_removed <- function() {
-  data.frame(id = character(), n_frames = integer(), reason = character(), detail = numeric(),
-             stringsAsFactors = FALSE)
-}
-
-empty_fallbacks <- function() {
-  data.frame(step = character(), dof = character(), reason = character(), stringsAsFactors = FALSE)
-}
-
-add_fallback <- function(fallbacks, step, dof, reason) {
-  rbind(fallbacks, data.frame(step = step, dof = dof, reason = reason, stringsAsFactors = FALSE))
-}
-
-# engine: one of "fast"/"reference" for every step, or a named list per step.
-resolve_engines <- function(engine, call) {
-  steps <- c("align", "fpca", "gmm")
-  choices <- c("fast", "reference")
-  if (is.list(engine)) {
-    bad <- setdiff(names(engine), steps)
-    if (is.null(names(engine)) || length(bad)) {
-      hm_abort(c("A list {.arg engine} must be named by step ({.val {steps}}).",
-                 x = if (length(bad)) "Unknown step{?s}: {.val {bad}}."),
-               "bad_input", argument = "engine", call = call)
-    }
-    out <- stats::setNames(as.list(rep("fast", 3)), steps)
-    for (s in names(engine)) out[[s]] <- check_choice(engine[[s]], c("fast", "reference"), "engine", call = call)
-    return(out)
-  }
-  if (is.character(engine) && identical(engine, choices)) engine <- "fast"
-  e <- check_choice(engine, c("fast", "reference"), "engine", call = call)
-  stats::setNames(as.list(rep(e, 3)), steps)
-}
-
-# Select the recordings of one type; refuse a set that mixes types.
-select_one_type <- function(x, grasp, call) {
-  if (!is.null(grasp)) {
-    if (length(grasp) != 1L || is.na(grasp)) {
-      hm_abort("{.arg grasp} must name one class label.", "bad_input", argument = "grasp", call = call)
-    }
-    g <- resolve_labels(grasp, levels(x$meta$grasp), "grasp", call = call)
-    x <- x[!is.na(x$meta$grasp) & x$meta$grasp == g]
-    if (length(x) == 0L) {
-      hm_abort("No recordings of grasp type {.val {as.character(g)}} in {.arg x}.",
-               "too_few_recordings", argument = "grasp", call = call)
-    }
-  }
-  unlabelled <- is.na(x$meta$grasp)
-  if (any(unlabelled)) {
-    hm_abort(c("{sum(unlabelled)} of the {length(x)} recording{?s} in {.arg x} ha{?s/ve} no grasp type label.",
-               i = "A model is fitted to the recordings of one labelled type; first unlabelled: {.val {x$meta$id[unlabelled][1]}}."),
-             "no_labels", argument = "x", call = call)
-  }
-  types <- unique(as.character(x$meta$grasp))
-  if (length(types) > 1L) {
-    hm_abort(c("{.arg x} holds {length(types)} grasp types; {.fn fit_grasp_model} fits one.",
-               i = "Types: {.val {types}}.",
-               i = "Give {.arg grasp}, or use {.fn fit_grasp_models} for every type."),
-             "multiple_grasps", argument = "x", call = call)
-  }
-  x
-}
-
-#' @export
-print.grasp_model <- function(x, ...) {
-  cat(sprintf("<grasp_model> %s%s: %d DoFs x %d FPCs + %d warp FPC%s, %d-component mixtures\n",
-              x$grasp, if (!is.na(x$grasp_id)) sprintf(" (type %d)", x$grasp_id) else "",
-              length(x$dofs), x$settings$ncomp, x$settings$warp_ncomp,
-              if (x$settings$warp_ncomp == 1) "" else "s", x$settings$k))
-  rm <- table(factor(x$removed$reason, levels = c("overlong", "degenerate warp")))
-  cat(sprintf("  recordings: %d in, %d used (%d over-long, %d degenerate warps removed)\n",
-              x$n_input, x$n_used, rm[["overlong"]], rm[["degenerate warp"]]))
-  cat(sprintf("  target length: %d frames at %g Hz; warping: %s%s\n", x$target_length, x$rate,
-              x$warping$method, if (identical(x$settings$motion, "trim")) "; recordings trimmed to the motion" else ""))
-  if (!is.null(x$glove) && any(x$glove$channels$stuck)) {
-    cat(sprintf("  stuck channels held constant: %s\n", paste(x$glove$channels$channel[x$glove$channels$stuck], collapse = " ")))
-  }
-  ve <- 100 * rowSums(model_var_explained(x))
-  if (any(is.finite(ve))) {
-    cat(sprintf("  variance explained by %d FPCs per DoF: min %.1f%%, median %.1f%%, max %.1f%%\n",
-                x$settings$ncomp, min(ve, na.rm = TRUE), stats::median(ve, na.rm = TRUE),
-                max(ve, na.rm = TRUE)))
-  }
-  cat("  ", format_dependence(x), "\n", sep = "")
-  dg <- format_degenerate(x$degenerate_data)
-  if (length(dg)) cat(dg, sep = "\n")
-  if (nrow(x$fallbacks) == 0L) {
-    cat("  fallbacks: none\n")
-  } else {
-    cat("  fallbacks:\n")
-    fb <- x$fallbacks
-    cat(paste0("    ", fb$step, ifelse(is.na(fb$dof), "", paste0(" [", fb$dof, "]")), ": ", fb$reason,
-               collapse = "\n"), "\n", sep = "")
-  }
-  invisible(x)
-}
-
-#' Summarise a grasp model
-#'
-#' @param object A `grasp_model` from [fit_grasp_model()].
-#' @param ... Unused.
-#' @return A data frame with one row per DoF: `dof`, the percentage of
-#'   variance explained by each FPC (`FPC1`, `FPC2`, ...) and in total
-#'   (`total`), the mixture used (`"mixture"`, `"single Gaussian"` or
-#'   `"point mass"`) and the fallback reason. The recordings removed and the
-#'   fallbacks are kept as attributes `removed` and `fallbacks` and printed;
-#'   attribute `dependence_matrix` is the DoF x DoF correlation between the
-#'   DoFs' first FPC scores the model generates with (the identity for the
-#'   thesis' independent DoFs, `dependence = "independent"`).
-#' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
-#' summary(fit_grasp_model(g, seed = 1))
-summary.grasp_model <- function(object, ...) {
-  ve <- 100 * model_var_explained(object)
-  mix <- vapply(object$gmm, function(g) {
-    if (isTRUE(g$point_mass)) "point mass" else if (isTRUE(g$fallback)) "single Gaussian" else "mixture"
-  }, character(1))
-  reason <- vapply(object$gmm, function(g) if (isTRUE(g$fallback)) gmm_reason(g) else NA_character_,
-                   character(1))
-  out <- data.frame(dof = object$dofs, as.data.frame(ve, row.names = NULL), total = rowSums(ve),
-                    mixture = unname(mix), reason = unname(reason), stringsAsFactors = FALSE)
-  rownames(out) <- NULL
-  structure(out, class = c("summary_grasp_model", "data.frame"), grasp = object$grasp,
-            removed = object$removed, fallbacks = object$fallbacks,
-            n_used = object$n_used, n_input = object$n_input, target_length = object$target_length,
-            warping = object$warping$method, dependence = format_dependence(object),
-            dependence_matrix = dependence_matrix(object))
-}
-
-# One line on how a model joins its DoFs and guards its mixtures.
-format_dependence <- function(model) {
-  guard <- model$settings$mixture_guard %||% "none"
-  n_guard <- sum(model$fallbacks$step %in% c("mixture_guard", "warp_mixture_guard"))
-  g <- if (guard == "none") "no mixture guard" else
-    sprintf("mixture guard %s (%d of %d mixtures one Gaussian)", guard, n_guard, length(model$dofs) + 1L)
-  if (!identical(model$dependence$type, "copula")) {
-    return(paste0("dependence: independent DoFs (the thesis' model); ", g))
-  }
-  R <- dependence_matrix(model)
-  r <- abs(R[upper.tri(R)])
-  cop <- model$dependence$copula
-  sprintf("dependence: Gaussian copula over %d scores (shrinkage %.2f), |r| between DoFs' FPC1 median %.2f, max %.2f; %s",
-          nrow(cop$columns), cop$shrinkage, stats::median(r), max(r), g)
-}
-
-#' @export
-print.summary_grasp_model <- function(x, ...) {
-  cat(sprintf("Grasp model %s: %d of %d recordings used, %d frames, %s warping\n",
-              attr(x, "grasp"), attr(x, "n_used"), attr(x, "n_input"), attr(x, "target_length"),
-              attr(x, "warping")))
-  cat(attr(x, "dependence") %||% "", "\n", sep = "")
-  print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
-  rm <- attr(x, "removed")
-  if (nrow(rm)) {
-    cat("Removed recordings:\n")
-    print(rm, row.names = FALSE)
-  }
-  fb <- attr(x, "fallbacks")
-  cat(if (nrow(fb)) "Fallbacks:\n" else "Fallbacks: none\n")
-  if (nrow(fb)) print(fb, row.names = FALSE)
-  invisible(x)
 }

@@ -41,7 +41,7 @@
 #' @param x A [grasps()] object with labelled recordings.
 #' @param grasps The grasp types to fit (names or ids 1-33); every type
 #'   present in `x` by default.
-#' @param ... Passed to [fit_grasp_model()] (`dependence`, `ncomp`, `warp_ncomp`, `k`,
+#' @param ... Passed to [fit_grasp_model()] (`dependence`, `ncomp`, `warp_ncomp`, `mixture_components`,
 #'   `warping`, `fpc_scores`, `mixture_guard`, `engine`, `overlong`, `max_stall`,
 #'   `keep_data`).
 #' @param seed Seed of the per-type RNG streams; the same seed gives identical
@@ -89,6 +89,7 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   unknown <- setdiff(names(args) %||% rep("", length(args)), setdiff(names(formals(fit_grasp_model)), c("x", "grasp", "seed")))
   if (length(unknown)) {
     hm_abort(c("{.fn fit_grasp_models} passes {.arg ...} to {.fn fit_grasp_model}, which has no argument{?s} {.val {unknown}}.",
+               renamed_argument_hints(unknown),
                i = "Arguments must be named; see {.help handmotion::fit_grasp_model}."),
              "bad_input", argument = "...", call = call)
   }
@@ -329,6 +330,8 @@ print.grasp_models <- function(x, ...) {
     cat(sprintf("  dependence: %s; mixtures replaced by one Gaussian by the guard: %d\n",
                 paste0(names(dep), " (", dep, " type", ifelse(dep == 1, "", "s"), ")", collapse = ", "),
                 sum(s$n_guarded)))
+    # every type is fitted with the same arguments: the first model's say them
+    cat(format_settings(unclass(fitted_models(x))[[1]]$settings), sep = "\n")
   }
   dg <- models_degeneracies(x)
   if (nrow(dg)) {

@@ -7,7 +7,7 @@
 # exhaustive) selection by the reconstruction error on a held-out part of the
 # reference, split by the metadata column `holdout`.
 search_markers <- function(reference, n = 6, holdout = "grasp", exhaustive = FALSE,
-                           max_frames = 1500, seed = 1, k = 256, ridge = 1e-3,
+                           max_frames = 1500, seed = 1, neighbours = 256, ridge = 1e-3,
                            skeleton = hand_skeleton(), ..., call = rlang::caller_env()) {
   check_grasps(reference, "x", call = call)
   cand <- hand_marker_set()$marker[hand_marker_set()$segment == "hand"]
@@ -43,7 +43,7 @@ search_markers <- function(reference, n = 6, holdout = "grasp", exhaustive = FAL
   val_mk <- mk[split$val]
   val_y <- do.call(rbind, reference$recordings[split$val])
   val_err <- function(set) {
-    model <- handover_build(ref_all, ref_y, set, k = k, ridge = ridge, rate = reference$rate,
+    model <- handover_build(ref_all, ref_y, set, neighbours = neighbours, ridge = ridge, rate = reference$rate,
                             unit = reference$unit, call = call)
     rec <- do.call(rbind, lapply(seq_along(val_mk), function(i) {
       reconstruct_one(model, val_mk[[i]][, marker_columns(set), drop = FALSE], names(val_mk)[i], call)$angles
@@ -108,7 +108,7 @@ unit_factor <- function(unit) if (identical(unit, "rad")) 180 / pi else 1
 #'   `list(markers = , method = )`.
 #' @param ... For `by = "markers"` only: `search` (include the search-based
 #'   set in the default comparison; default `TRUE`, the slow part) and
-#'   arguments of [fit_handover()] (e.g. `k`, `ncomp`).
+#'   arguments of [fit_handover()] (e.g. `neighbours`, `ncomp`).
 #' @return A number (degrees) for `by = "overall"`, else a data frame with
 #'   column `error`. For `by = "ncomp"` a data frame of class
 #'   `handover_pca_error`: `ncomp`, `error` (degrees) and `variance`

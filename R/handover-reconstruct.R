@@ -34,7 +34,7 @@
 #' t <- seq(0, 1, length.out = 40)
 #' ang <- outer(t, runif(16, 10, 60)) + outer(sin(2 * pi * t), runif(16, 0, 10))
 #' ref <- grasps(list(ang, ang[40:1, ] * 0.8), dofs = hust_dofs$name)
-#' fit <- fit_handover(ref, markers = c("index_tip", "ring_tip", "thumb_tip"), k = 30)
+#' fit <- fit_handover(ref, markers = c("index_tip", "ring_tip", "thumb_tip"), neighbours = 30)
 #' mk <- forward_kinematics(ang, markers = fit$markers)
 #' mk[5, 1:3] <- NaN   # the index tip is occluded in frame 5
 #' rec <- predict(fit, mk)
@@ -151,7 +151,7 @@ reconstruct_one <- function(model, m, id, call) {
     keep <- rep(keep_m, each = 3)
     scores[rows, ] <- lwr_predict(model$ref_x[, keep, drop = FALSE],
                                   model$ref_scores[, seq_len(q), drop = FALSE],
-                                  m[rows, keep, drop = FALSE], model$k_used, model$ridge, model$eps)
+                                  m[rows, keep, drop = FALSE], model$neighbours_used, model$ridge, model$eps)
   }
   if (model$smooth) scores <- cone_filter(scores, model$filter_size)
   ang <- sweep(scores %*% t(model$rotation[, seq_len(q), drop = FALSE]), 2, model$center, "+")

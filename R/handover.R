@@ -20,9 +20,9 @@
 #' inverse Euclidean distance between its sparse markers and the query's, and
 #' fits a weighted linear model from marker positions to the first `ncomp`
 #' component scores (centred on the query, so the prediction is the fitted
-#' intercept). The paper weights the whole database; for speed only the `k`
+#' intercept). The paper weights the whole database; for speed only the `neighbours`
 #' nearest reference frames (in marker space) enter each regression. Their
-#' weights dominate anyway, and `k = Inf` restores the paper's all-frame
+#' weights dominate anyway, and `neighbours = Inf` restores the paper's all-frame
 #' weighting. A small ridge penalty (`ridge` times the mean diagonal of the
 #' slope block) keeps the local fit defined when neighbours are nearly
 #' collinear; a reference frame at distance zero gets weight `1 / eps`, so a
@@ -46,7 +46,8 @@
 #'   use `select_markers(reference, n)`.
 #' @param ncomp Number of principal components regressed and back-projected;
 #'   `NULL` for all (one per DoF).
-#' @param k Number of nearest reference frames per regression (`Inf` = all).
+#' @param neighbours Number of nearest reference frames per regression
+#'   (`Inf` = all; `k` in development versions).
 #' @param smooth Smooth the reconstructed component trajectories with a cone
 #'   (triangular) filter.
 #' @param filter_size Cone filter width in frames; by default the paper's 17
@@ -64,11 +65,11 @@
 #' t <- seq(0, 1, length.out = 40)
 #' ang <- outer(t, runif(16, 10, 60)) + outer(sin(2 * pi * t), runif(16, 0, 10))
 #' ref <- grasps(list(ang, ang[40:1, ] * 0.8), dofs = hust_dofs$name)
-#' fit <- fit_handover(ref, markers = c("index_tip", "ring_tip", "thumb_tip"), k = 30)
+#' fit <- fit_handover(ref, markers = c("index_tip", "ring_tip", "thumb_tip"), neighbours = 30)
 #' fit
 #' rec <- predict(fit, ref[1])
 #' handover_error(ref[1], rec)
-fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth = TRUE,
+fit_handover <- function(reference, markers = 6, ncomp = NULL, neighbours = 256, smooth = TRUE,
                          filter_size = NULL, method = c("pca", "direct"), ridge = 1e-3,
                          eps = 1e-6, skeleton = hand_skeleton(), ...) {
   call <- rlang::caller_env()
@@ -93,7 +94,7 @@ fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth =
   ridge <- check_number(ridge, "ridge", min = 0, min_open = TRUE, call = call)
   eps <- check_number(eps, "eps", min = 0, min_open = TRUE, call = call)
   handover_build(ref_all, do.call(rbind, reference$recordings), markers,
-                 ncomp = ncomp, k = k, smooth = smooth, filter_size = filter_size,
+                 ncomp = ncomp, neighbours = neighbours, smooth = smooth, filter_size = filter_size,
                  method = method, ridge = ridge, eps = eps, rate = reference$rate,
                  unit = reference$unit, skeleton = skeleton, fk_args = list(...),
                  reference = data.frame(recordings = length(reference), frames = nrow(ref_all),
@@ -105,7 +106,7 @@ fit_handover <- function(reference, markers = 6, ncomp = NULL, k = 256, smooth =
 # The model proper, from stacked reference marker positions (any superset of
 # the chosen markers' columns) and joint angles; shared by fit_handover() and
 # the marker search, which must not rerun forward kinematics per candidate.
-handover_build <- function(ref_all, ref_y, markers, ncomp = NULL, k = 256, smooth = TRUE,
+handover_build <- function(ref_all, ref_y, markers, ncomp = NULL, neighbours = 256, smooth = TRUE,
                            filter_size = NULL, method = "pca", ridge = 1e-3, eps = 1e-6,
                            rate = 50, unit = "deg", skeleton = NULL, fk_args = list(),
                            reference = NULL, call = rlang::caller_env()) {
@@ -121,8 +122,8 @@ handover_build <- function(ref_all, ref_y, markers, ncomp = NULL, k = 256, smoot
   }
   ncomp <- check_whole(ncomp, "ncomp", max = p, allow_null = TRUE, call = call) %||% p
   # (at least 3 coordinates per marker + 2 neighbours for a local regression)
-  if (!identical(k, Inf)) k <- check_whole(k, "k", min = d + 2, call = call)
-  k_used <- as.integer(min(k, n_ref))
+  if (!identical(neighbours, Inf)) neighbours <- check_whole(neighbours, "neighbours", min = d + 2, call = call)
+  neighbours_used <- as.integer(min(neighbours, n_ref))
   filter_size <- check_number(filter_size, "filter_size", min = 1, allow_null = TRUE, call = call) %||%
     cone_size(rate)
   smooth <- check_flag(smooth, "smooth", call = call)
@@ -133,7 +134,7 @@ handover_build <- function(ref_all, ref_y, markers, ncomp = NULL, k = 256, smoot
   scores <- sweep(ref_y, 2, pca$center) %*% rot
   direct <- if (method == "direct") global_linear_fit(ref_x, ref_y, ridge) else NULL
   new_handover_model(
-    markers = markers, method = method, ncomp = ncomp, k = k, k_used = k_used,
+    markers = markers, method = method, ncomp = ncomp, neighbours = neighbours, neighbours_used = neighbours_used,
     ridge = ridge, eps = eps, smooth = isTRUE(smooth), filter_size = as.integer(filter_size),
     center = pca$center, rotation = rot,
     sdev = c(pca$sdev, rep(0, p - length(pca$sdev)))[seq_len(p)],
@@ -145,11 +146,11 @@ handover_build <- function(ref_all, ref_y, markers, ncomp = NULL, k = 256, smoot
 
 # The one constructor of class "handover_model" (fit_handover() and the
 # marker search both build through handover_build(), which ends here).
-new_handover_model <- function(markers, method, ncomp, k, k_used, ridge, eps, smooth, filter_size,
+new_handover_model <- function(markers, method, ncomp, neighbours, neighbours_used, ridge, eps, smooth, filter_size,
                                center, rotation, sdev, ref_x, ref_scores, direct, dofs, rate, unit,
                                skeleton, fk_args, reference) {
   validate_handover_model(structure(list(
-    markers = markers, method = method, ncomp = ncomp, k = k, k_used = k_used, ridge = ridge,
+    markers = markers, method = method, ncomp = ncomp, neighbours = neighbours, neighbours_used = neighbours_used, ridge = ridge,
     eps = eps, smooth = smooth, filter_size = filter_size, center = center, rotation = rotation,
     sdev = sdev, ref_x = ref_x, ref_scores = ref_scores, direct = direct, dofs = dofs, rate = rate,
     unit = unit, skeleton = skeleton, fk_args = fk_args, reference = reference
@@ -165,7 +166,7 @@ validate_handover_model <- function(x) {
     identical(colnames(x$ref_x), marker_columns(x$markers)),
     has_dim(x$rotation, c(p, p)), length(x$center) == p, length(x$sdev) == p,
     nrow(x$ref_scores) == nrow(x$ref_x), ncol(x$ref_scores) == p,
-    x$ncomp >= 1L, x$ncomp <= p, x$k_used >= 1L, x$k_used <= nrow(x$ref_x),
+    x$ncomp >= 1L, x$ncomp <= p, x$neighbours_used >= 1L, x$neighbours_used <= nrow(x$ref_x),
     x$method == "pca" || is.list(x$direct),
     x$unit %in% c("deg", "rad", "raw"), is.null(x$skeleton) || inherits(x$skeleton, "hand_skeleton"),
     is.data.frame(x$reference)
@@ -244,7 +245,7 @@ print.handover_model <- function(x, ...) {
               r$frames, r$recordings, r$grasp_types, r$subjects, x$rate))
   if (x$method == "pca") {
     cat(sprintf("  components: %d of %d; neighbours per frame: %d; cone filter: %s\n",
-                x$ncomp, length(x$dofs), x$k_used,
+                x$ncomp, length(x$dofs), x$neighbours_used,
                 if (x$smooth) paste(x$filter_size, "frames") else "off"))
   }
   invisible(x)

@@ -2,15 +2,15 @@
 # A grasp type is identified by its final hand posture, so each type is
 # summarised by an ordinary PCA of the last frames of its recordings. A new
 # recording is scored against each type by the Euclidean distance between its
-# last frame and that frame's projection on the type's first k PCs (centred on
-# the type's mean last frame): the reconstruction error of the type's k-PC
+# last frame and that frame's projection on the type's first ncomp PCs (centred on
+# the type's mean last frame): the reconstruction error of the type's ncomp-PC
 # subspace. The type with the smallest error wins.
 
 # fit_grasp_classifier(method = "last_frame"): one PCA of the last frames per
 # grasp type (documented there).
-fit_last_frame_pca <- function(x, k = 5, grasps = NULL, call = rlang::caller_env()) {
+fit_last_frame_pca <- function(x, ncomp = 5, grasps = NULL, call = rlang::caller_env()) {
   check_grasps(x, call = call)
-  k <- check_whole(k, "k", max = length(x$dofs), call = call)
+  ncomp <- check_whole(ncomp, "ncomp", max = length(x$dofs), call = call)
   types <- labelled_types(x, grasps, call = call)
   last <- last_frame_matrix(x)
   models <- lapply(types, function(type) {
@@ -19,14 +19,14 @@ fit_last_frame_pca <- function(x, k = 5, grasps = NULL, call = rlang::caller_env
   })
   names(models) <- types
   n_per <- vapply(models, function(m) m$n, integer(1))
-  k_used <- stats::setNames(pmin(k, n_per - 1L), names(models))
-  short <- names(k_used)[k_used < k]
+  ncomp_used <- stats::setNames(pmin(ncomp, n_per - 1L), names(models))
+  short <- names(ncomp_used)[ncomp_used < ncomp]
   if (length(short) > 0L) {
-    hm_warn(c("{length(short)} grasp type{?s} ha{?s/ve} too few recordings for {k} PCs: {.val {short}}.",
-              i = "Using n - 1 components instead (see {.field k_used})."),
+    hm_warn(c("{length(short)} grasp type{?s} ha{?s/ve} too few recordings for {ncomp} PCs: {.val {short}}.",
+              i = "Using n - 1 components instead (see {.field ncomp_used})."),
             "few_recordings")
   }
-  fit <- structure(list(models = models, k = k, k_used = k_used, dofs = x$dofs,
+  fit <- structure(list(models = models, ncomp = ncomp, ncomp_used = ncomp_used, dofs = x$dofs,
                         n_unlabelled = sum(is.na(x$meta$grasp)), levels = grasp_levels(x)),
                    class = "last_frame_pca")
   # the temperature of its probabilities, on held-out distances
@@ -51,7 +51,7 @@ last_frame_heldout_distances <- function(fit, x, last) {
       if (!length(rows)) next
       m <- pca_of_frames(last[rows, , drop = FALSE])
       centred <- sweep(last[out, , drop = FALSE], 2L, m$mean)
-      v <- m$rotation[, seq_len(min(fit$k_used[[type]], ncol(m$rotation))), drop = FALSE]
+      v <- m$rotation[, seq_len(min(fit$ncomp_used[[type]], ncol(m$rotation))), drop = FALSE]
       d[out, type] <- sqrt(rowSums((centred - (centred %*% v) %*% t(v))^2))
     }
   }
@@ -113,7 +113,7 @@ pca_of_frames <- function(frames) {
 #' set.seed(2)
 #' recs <- lapply(1:8, function(i) matrix(rnorm(5 * 16), 5, 16))
 #' g <- grasps(recs, meta = data.frame(grasp = rep(c(1, 2), 4)))
-#' cumulative_variance(fit_grasp_classifier(g, method = "last_frame", k = 2))
+#' cumulative_variance(fit_grasp_classifier(g, method = "last_frame", ncomp = 2))
 cumulative_variance <- function(fit) {
   if (!inherits(fit, "last_frame_pca")) {
     hm_abort("{.arg fit} must be a {.cls last_frame_pca} object, not {.obj_type_friendly {fit}}.",
@@ -139,7 +139,7 @@ last_frame_distances <- function(fit, x, call = rlang::caller_env()) {
   d <- vapply(names(fit$models), function(type) {
     m <- fit$models[[type]]
     centred <- sweep(last, 2L, m$mean)
-    v <- m$rotation[, seq_len(fit$k_used[[type]]), drop = FALSE]
+    v <- m$rotation[, seq_len(fit$ncomp_used[[type]]), drop = FALSE]
     resid <- centred - (centred %*% v) %*% t(v)
     sqrt(rowSums(resid^2))
   }, numeric(nrow(last)))
@@ -149,14 +149,14 @@ last_frame_distances <- function(fit, x, call = rlang::caller_env()) {
 #' @export
 print.last_frame_pca <- function(x, ...) {
   n <- vapply(x$models, function(m) m$n, integer(1))
-  cv <- vapply(x$models, function(m) m$cumvar[x$k], numeric(1))
-  cat(sprintf("<last_frame_pca> %d grasp type%s, %d DoFs, k = %d PCs\n", length(x$models),
-              if (length(x$models) == 1) "" else "s", length(x$dofs), x$k))
+  cv <- vapply(x$models, function(m) m$cumvar[x$ncomp], numeric(1))
+  cat(sprintf("<last_frame_pca> %d grasp type%s, %d DoFs, %d PCs\n", length(x$models),
+              if (length(x$models) == 1) "" else "s", length(x$dofs), x$ncomp))
   cat(sprintf("  recordings per type: %d to %d; variance explained by %d PCs: %s to %s\n",
-              min(n), max(n), x$k, fmt_pct(min(cv, na.rm = TRUE)), fmt_pct(max(cv, na.rm = TRUE))))
-  short <- names(x$k_used)[x$k_used < x$k]
+              min(n), max(n), x$ncomp, fmt_pct(min(cv, na.rm = TRUE)), fmt_pct(max(cv, na.rm = TRUE))))
+  short <- names(x$ncomp_used)[x$ncomp_used < x$ncomp]
   if (length(short) > 0)
-    cat(sprintf("  fewer than %d PCs (too few recordings): %s\n", x$k, paste(short, collapse = ", ")))
+    cat(sprintf("  fewer than %d PCs (too few recordings): %s\n", x$ncomp, paste(short, collapse = ", ")))
   if (x$n_unlabelled > 0) cat(sprintf("  ignored %d unlabelled recording(s)\n", x$n_unlabelled))
   invisible(x)
 }
@@ -165,8 +165,8 @@ print.last_frame_pca <- function(x, ...) {
 #' @export
 summary.last_frame_pca <- function(object, ...) {
   n <- vapply(object$models, function(m) m$n, integer(1))
-  data.frame(class = names(object$models), n = unname(n), k_used = unname(object$k_used[names(object$models)]),
+  data.frame(class = names(object$models), n = unname(n), ncomp_used = unname(object$ncomp_used[names(object$models)]),
              var_explained = unname(vapply(names(object$models), function(ty) {
-               object$models[[ty]]$cumvar[max(object$k_used[[ty]], 1L)]
+               object$models[[ty]]$cumvar[max(object$ncomp_used[[ty]], 1L)]
              }, numeric(1))), stringsAsFactors = FALSE)
 }

@@ -344,7 +344,7 @@ print.marker_ranking <- function(x, ...) {
 #'   validation, default `"grasp"`), `exhaustive` (default `FALSE`),
 #'   `max_frames` (validation frames per evaluation, whole recordings, a
 #'   seeded sample; default 1500), `seed` (default 1; the global RNG is left
-#'   untouched), `k` and `ridge` (passed to [fit_handover()]) and `skeleton`
+#'   untouched), `neighbours` and `ridge` (passed to [fit_handover()]) and `skeleton`
 #'   and the [forward_kinematics()] arguments.
 #' @return A character vector of `n` marker names, most influential (or, for
 #'   the search, first added) first. The ranking adds attribute `"ranking"`:

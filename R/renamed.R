@@ -33,7 +33,11 @@
 #' | `overlong_rule()`, `find_overlong()` | the `overlong` argument of [fit_grasp_model()] |
 #' | `simulator_params(...)` | `simulate_grasps(params = list(...))` |
 #' | `calibration_report()`, `fit_frame_pca_model()` | internal (the calibration script and the thesis report) |
-#' | `fit_last_frame_pca(x, k = 5)` | [fit_grasp_classifier()]`(x, method = "last_frame", k = 5)` |
+#' | `fit_last_frame_pca(x, k = 5)` | [fit_grasp_classifier()]`(x, method = "last_frame", ncomp = 5)` |
+#' | argument `k` of `fit_grasp_model()`, `fit_grasp_models()`, `evaluate_loso(fit_args = )` (mixture components) | `mixture_components` |
+#' | argument `k` of `fit_grasp_classifier(method = "last_frame")` (principal components) | `ncomp` |
+#' | argument `k` of `fit_handover()`, `select_markers(method = "search")`, `handover_error(by = "markers")` (neighbours) | `neighbours` |
+#' | `$k`, `$k_used` of a last-frame classifier / a hand-over model | `$ncomp`, `$ncomp_used` / `$neighbours`, `$neighbours_used` |
 #' | `fit_weighted_fpca(x, models = , time = )` | `fit_grasp_classifier(x, method = "weighted_fpca", models = , time = )` |
 #' | `fit_grasp_classifier(x, at = , prior = )` | unchanged: `method = "discriminant"` is the default |
 #' | `rank_markers(x, weighting = )` | `attr(`[select_markers()]`(x, n, weighting = ), "ranking")`; `select_markers(x, n)` takes the top `n` |

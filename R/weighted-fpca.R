@@ -19,7 +19,7 @@ fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ...,
   check_training_labels(x, call = call)
   if (is.null(models)) {
     args <- list(...)
-    if (is.null(args$k)) args$k <- 1L
+    if (is.null(args$mixture_components)) args$mixture_components <- 1L
     # (its own distance is a log-likelihood: the set needs no temperature)
     models <- do.call(fit_model_set, c(list(x), args, calibrate = FALSE))
   }

@@ -17,7 +17,7 @@ ms <- fit_grasp_models(simulate_grasps(grasps = c(11, 17), subjects = bq(30, 6))
 m <- ms[[1]]
 cat(sprintf("model set: %s; first model %s: %d DoFs, L = %d frames, %d FPCs, %d-component mixtures\n",
             paste(vapply(ms, `[[`, "", "grasp"), collapse = ", "), m$grasp, length(m$dofs),
-            m$target_length, m$settings$ncomp, m$settings$k))
+            m$target_length, m$settings$ncomp, m$settings$mixture_components))
 
 # Throughput of f() (a batch of `size` grasps a call), called back to back
 # for at least `min_time` seconds after one warm-up call: total grasps over

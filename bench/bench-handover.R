@@ -37,13 +37,13 @@ row <- function(label, t) {
 }
 cat("load average:", readLines("/proc/loadavg", warn = FALSE), "\n")
 t6 <- time_it(function() predict(fit6, mk6))
-row("reconstruct, 6 markers, k = 256 (default)", t6)
+row("reconstruct, 6 markers, neighbours = 256 (default)", t6)
 bench_record("reconstruct, 6 markers, frames per CPU second", n_q / t6[["cpu"]], "1/s")
-row("reconstruct, 3 markers, k = 256", time_it(function() predict(fit3, mk3)))
-fit6_128 <- fit_handover(ref, markers = fit6$markers, k = 128)
-row("reconstruct, 6 markers, k = 128", time_it(function() predict(fit6_128, mk6)))
-fit6_1024 <- fit_handover(ref, markers = fit6$markers, k = 1024)
-row("reconstruct, 6 markers, k = 1024", time_it(function() predict(fit6_1024, mk6), reps = 1))
+row("reconstruct, 3 markers, neighbours = 256", time_it(function() predict(fit3, mk3)))
+fit6_128 <- fit_handover(ref, markers = fit6$markers, neighbours = 128)
+row("reconstruct, 6 markers, neighbours = 128", time_it(function() predict(fit6_128, mk6)))
+fit6_1024 <- fit_handover(ref, markers = fit6$markers, neighbours = 1024)
+row("reconstruct, 6 markers, neighbours = 1024", time_it(function() predict(fit6_1024, mk6), reps = 1))
 row("reconstruct from a grasps (incl. FK)", time_it(function() predict(fit6, test), reps = 1))
 
 # the R transcription of the same regression (tests/testthat/helper-handover-reference.R), for the ratio

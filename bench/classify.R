@@ -20,7 +20,7 @@ timed <- function(expr) {
 
 fit <- timed(fit_grasp_models(g, seed = 1))
 cl_fpca <- timed(classify(fit$value, g))
-lf_fit <- timed(fit_grasp_classifier(g, method = "last_frame", k = 5))
+lf_fit <- timed(fit_grasp_classifier(g, method = "last_frame", ncomp = 5))
 cl_lf <- timed(classify(lf_fit$value, g))
 acc <- function(cl) {
   p <- cl$predictions
@@ -40,7 +40,7 @@ cat(sprintf("in-sample accuracy: FPCA %.1f%%, last-frame PCA %.1f%%\n",
             100 * acc(cl_fpca$value), 100 * acc(cl_lf$value)))
 print(distance_minima(distance_table(cl_fpca$value)))
 
-ev_lf <- timed(evaluate_loso(g, "last_frame", fit_args = list(k = 5)))
+ev_lf <- timed(evaluate_loso(g, "last_frame", fit_args = list(ncomp = 5)))
 cat(sprintf("LOSO last-frame (%d folds): %.2f s; held-out %.1f%% vs in-sample %.1f%%\n",
             subjects, ev_lf$seconds, 100 * ev_lf$value$accuracy[["held_out"]],
             100 * ev_lf$value$accuracy[["in_sample"]]))
@@ -52,21 +52,21 @@ cat(sprintf("grouped folds FPCA (%d folds): %.1f s; held-out %.1f%% vs in-sample
 # (30 folds, each refitting the 33 models without one subject), on two
 # workers through the future framework (issue target: 60 s). Beside it, one
 # fold refitted with the thesis' two-component mixtures, which the FPCA
-# distance never reads (evaluate_loso() fits k = 1 for it): same predictions.
+# distance never reads (evaluate_loso() fits mixture_components = 1 for it): same predictions.
 full <- simulate_grasps(subjects = bq(30, 4), grasps = bq(1:33, 1:4), seed = 1)
 workers <- min(2L, future::availableCores())
 old_plan <- future::plan(future::multisession, workers = workers)
 ev_full <- timed(evaluate_loso(full, "fpca", fit_args = list(seed = 1), in_sample = FALSE))
 future::plan(old_plan)
 held <- full$meta$subject == full$meta$subject[1]
-one_fold <- function(k) timed(fit_grasp_models(full[!held], seed = 1, k = k))$seconds
+one_fold <- function(m) timed(fit_grasp_models(full[!held], seed = 1, mixture_components = m))$seconds
 fold_k1 <- one_fold(1)
 fold_k2 <- one_fold(2)
 cat(sprintf("full FPCA LOSO, %d recordings, %d folds, %d workers: %.1f s (target 60 s); held out %.1f%%\n",
             length(full), length(unique(full$meta$subject)), workers, ev_full$seconds,
             100 * ev_full$value$accuracy[["held_out"]]))
-cat(sprintf("one fold's refit, sequential: %.2f s with k = 1, %.2f s with the thesis' k = 2 (%.1fx)\n",
+cat(sprintf("one fold's refit, sequential: %.2f s with mixture_components = 1, %.2f s with the thesis' 2 (%.1fx)\n",
             fold_k1, fold_k2, fold_k2 / fold_k1))
 bench_record(sprintf("full FPCA LOSO, %d folds, %d workers", length(unique(full$meta$subject)), workers),
              ev_full$seconds, "s")
-bench_record("FPCA LOSO fold refit, k = 2 / k = 1", fold_k2 / fold_k1, "x")
+bench_record("FPCA LOSO fold refit, 2 / 1 mixture components", fold_k2 / fold_k1, "x")

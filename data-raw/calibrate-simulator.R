@@ -138,7 +138,7 @@ measure_seeds <- function(p, full) {
   # depend on the order or the number of cores)
   per_seed <- parallel::mclapply(CAL_SEEDS, mc.cores = CAL_CORES, FUN = function(s) {
     g <- simulate_grasps(seed = s, params = p)
-    lf <- fit_grasp_classifier(g, method = "last_frame", k = 5)
+    lf <- fit_grasp_classifier(g, method = "last_frame", ncomp = 5)
     if (!full) {
       return(list(pc5 = cumulative_variance(lf)$pc5, recall_last_frame = per_type_recall(classify(lf, g), types)))
     }

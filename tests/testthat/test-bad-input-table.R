@@ -18,7 +18,7 @@ bad_input_fixtures <- function(dir) {
     m <- suppressWarnings(fit_grasp_model(g, grasp = 1, seed = 1))
     ms <- suppressWarnings(fit_grasp_models(g, seed = 1))
     clf <- fit_grasp_classifier(g)
-    ho <- fit_handover(g, markers = 3, k = 40)
+    ho <- fit_handover(g, markers = 3, neighbours = 40)
     q <- forward_kinematics(g[1], markers = ho$markers)[[1]]
     mk <- do.call(rbind, forward_kinematics(g[1:2], markers = TRUE))
     ang <- matrix(10, 3, 16, dimnames = list(NULL, hust_dofs$name))
@@ -33,7 +33,7 @@ bad_input_fixtures <- function(dir) {
     unlabelled <- g
     unlabelled$meta$grasp[] <- NA
     gd <- graspdb14_fixture_grasps()
-    lf <- fit_grasp_classifier(g, method = "last_frame", k = 2)
+    lf <- fit_grasp_classifier(g, method = "last_frame", ncomp = 2)
   })
   files <- file.path(dir, c("gdb", "hust", "empty", "allbad", "binman", "folders"))
   for (f in files) dir.create(f)
@@ -114,7 +114,7 @@ bad_input_cases <- function() {
     list("as_grasps: a list of text", quote(as_grasps(list(a = "x"))), "bad_recording"),
     # --- fits
     list("fit_grasp_model: NaN ncomp", quote(fit_grasp_model(g, grasp = 1, ncomp = NaN)), "bad_input"),
-    list("fit_grasp_model: factor k", quote(fit_grasp_model(g, grasp = 1, k = factor(2))), "bad_input"),
+    list("fit_grasp_model: factor k", quote(fit_grasp_model(g, grasp = 1, mixture_components = factor(2))), "bad_input"),
     list("fit_grasp_model: negative max_stall", quote(fit_grasp_model(g, grasp = 1, max_stall = -1)), "bad_input"),
     list("fit_grasp_model: keep_data as text", quote(fit_grasp_model(g, grasp = 1, keep_data = "yes")), "bad_input"),
     list("fit_grasp_model: a list for the overlong rule", quote(fit_grasp_model(g, grasp = 1, overlong = list(1))), "bad_input"),
@@ -134,9 +134,9 @@ bad_input_cases <- function() {
     list("fit_grasp_recognizer: no fractions", quote(fit_grasp_recognizer(g, at = numeric(0))), "bad_input"),
     list("fit_grasp_classifier, weighted_fpca: misspelt time", quote(fit_grasp_classifier(g, method = "weighted_fpca", time = "middle")), "bad_input"),
     list("fit_grasp_classifier, weighted_fpca: not grasps", quote(fit_grasp_classifier("x", method = "weighted_fpca")), "bad_input"),
-    list("fit_grasp_classifier, last_frame: k = 0", quote(fit_grasp_classifier(g, method = "last_frame", k = 0)), "bad_input"),
+    list("fit_grasp_classifier, last_frame: ncomp = 0", quote(fit_grasp_classifier(g, method = "last_frame", ncomp = 0)), "bad_input"),
     list("fit_grasp_classifier, last_frame: unknown type", quote(fit_grasp_classifier(g, method = "last_frame", grasps = "No Such Grasp")), "unknown_grasp"),
-    list("fit_frame_pca_model: d = 0", quote(fit_frame_pca_model(g, d = 0)), "bad_input"),
+    list("fit_frame_pca_model: frame_ncomp = 0", quote(fit_frame_pca_model(g, frame_ncomp = 0)), "bad_input"),
     list("evaluate_loso: seed as text", quote(evaluate_loso(g, seed = "a")), "bad_input"),
     list("evaluate_loso: NA in_sample", quote(evaluate_loso(g, in_sample = NA)), "bad_input"),
     list("evaluate_loso: fit_args as text", quote(evaluate_loso(g, fit_args = "ncomp")), "bad_input"),
@@ -148,7 +148,7 @@ bad_input_cases <- function() {
     list("fit_handover: zero ridge", quote(fit_handover(g, markers = 3, ridge = 0)), "bad_input"),
     list("fit_handover: unknown marker", quote(fit_handover(g, markers = c("index_tip", "foo"))), "bad_markers"),
     list("fit_handover: more markers than there are", quote(fit_handover(g, markers = 14)), "bad_markers"),
-    list("fit_handover: too few neighbours", quote(fit_handover(g, markers = 3, k = 2)), "bad_input"),
+    list("fit_handover: too few neighbours", quote(fit_handover(g, markers = 3, neighbours = 2)), "bad_input"),
     list("fit_handover: NA smooth", quote(fit_handover(g, markers = 3, smooth = NA)), "bad_input"),
     list("fit_handover: unknown argument", quote(fit_handover(g, markers = 3, foo = 2)), "bad_input"),
     list("fit_handover: three frames", quote(fit_handover(grasps(list(g$recordings[[1]][1:3, ]), dofs = g$dofs), markers = 3)), "reference_too_small"),
@@ -239,10 +239,10 @@ bad_input_cases <- function() {
     list("grasp_confusion: lengths differ", quote(grasp_confusion(c("Tripod", "Ring"), "Tripod")), "bad_input"),
     list("graspdb14_to_hust: a number", quote(graspdb14_to_hust(42)), "bad_input"),
     list("fit_grasp_classifier: misspelt method", quote(fit_grasp_classifier(g, method = "lda")), "bad_input"),
-    list("fit_grasp_classifier: argument of another method", quote(fit_grasp_classifier(g, k = 2)), "bad_input"),
+    list("fit_grasp_classifier: argument of another method", quote(fit_grasp_classifier(g, ncomp = 2)), "bad_input"),
     list("handover_error, markers: no reference", quote(handover_error(g, by = "markers")), "bad_input"),
     list("handover_error, markers: unknown argument", quote(handover_error(g, by = "markers", reference = g, kk = 1)), "bad_input"),
-    list("handover_error: fitting argument without markers", quote(handover_error(g, g, k = 8)), "bad_input")
+    list("handover_error: fitting argument without markers", quote(handover_error(g, g, neighbours = 8)), "bad_input")
   )
   data.frame(label = vapply(rows, `[[`, "", 1), expr = I(lapply(rows, `[[`, 2)),
              class = vapply(rows, `[[`, "", 3), stringsAsFactors = FALSE)

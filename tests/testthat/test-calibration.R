@@ -249,7 +249,7 @@ test_that("the default data meet the per-type targets (subset of types, full des
   g <- simulate_grasps(grasps = types)
   ms <- fit_grasp_models(g, seed = 1)
   s <- summary(ms)
-  cv <- cumulative_variance(fit_grasp_classifier(g, method = "last_frame", k = 5))
+  cv <- cumulative_variance(fit_grasp_classifier(g, method = "last_frame", ncomp = 5))
   th <- thesis_results
   tol <- calibration_tolerances()
   expect_equal(s$target_length, th$table_5_1$target_frames[types])

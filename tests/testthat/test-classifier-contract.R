@@ -4,9 +4,9 @@
 # Every classifier handmotion fits, on the same training set.
 all_classifiers <- function(train) {
   list(
-    fpca = fit_grasp_models(train, seed = 1, k = 1),
+    fpca = fit_grasp_models(train, seed = 1, mixture_components = 1),
     discriminant = fit_grasp_classifier(train),
-    last_frame = fit_grasp_classifier(train, method = "last_frame", k = 2),
+    last_frame = fit_grasp_classifier(train, method = "last_frame", ncomp = 2),
     weighted_fpca = fit_grasp_classifier(train, method = "weighted_fpca", seed = 1),
     recognizer = fit_grasp_recognizer(train)
   )
@@ -86,7 +86,7 @@ test_that("the temperature fit recovers a planted temperature, and shuffled labe
 
 test_that("the FPCA set's temperature is fitted and kept when the set is subset", {
   train <- planted_types(types = c(1, 9, 17), subjects = 3, trials = 3, seed = 3)
-  ms <- fit_grasp_models(train, seed = 1, k = 1)
+  ms <- fit_grasp_models(train, seed = 1, mixture_components = 1)
   expect_true(is.numeric(attr(ms, "temperature")) && attr(ms, "temperature") > 0)
   expect_identical(attr(ms[1:2], "temperature"), attr(ms, "temperature"))
   expect_output(print(ms), "class probabilities: softmax")
@@ -98,7 +98,7 @@ test_that("the FPCA set's temperature is fitted and kept when the set is subset"
 
 test_that("classify() is predict(type = 'distance') kept whole", {
   train <- planted_types(types = c(1, 9, 17), subjects = 3, trials = 3, seed = 3)
-  lf <- fit_grasp_classifier(train, method = "last_frame", k = 2)
+  lf <- fit_grasp_classifier(train, method = "last_frame", ncomp = 2)
   cl <- classify(lf, train)
   d <- predict(lf, train, type = "distance")
   expect_equal(unname(cl$distances), unname(as.matrix(d)))

@@ -50,14 +50,14 @@ test_that("distance_minima counts row and column minima as in the thesis' text",
 
 test_that("last-frame classification is near 100% on planted well-separated types", {
   g <- planted_types(types = c(1, 9, 17, 22, 31), subjects = 4, trials = 3, seed = 5)
-  cl <- classify(fit_grasp_classifier(g, method = "last_frame", k = 5), g)
+  cl <- classify(fit_grasp_classifier(g, method = "last_frame", ncomp = 5), g)
   expect_s3_class(cl, "grasp_classification")
   expect_equal(cl$method, "last_frame")
   expect_equal(dim(cl$distances), c(length(g), 5L))
   acc <- summary(grasp_confusion(cl))
   expect_gte(acc$estimate[acc$metric == "accuracy"], 0.98)
   # same result from a fitted model; the method follows from its class
-  fit <- fit_grasp_classifier(g, method = "last_frame", k = 5)
+  fit <- fit_grasp_classifier(g, method = "last_frame", ncomp = 5)
   expect_equal(classify(fit, g)$predictions, cl$predictions)
   expect_error(classify(fit, g, method = "fpca"), class = "handmotion_error_bad_input")
   expect_error(classify(list(), g), class = "handmotion_error_bad_input")
@@ -68,14 +68,14 @@ test_that("classification of shuffled labels is not near 100% (the test can fail
   g <- planted_types(types = c(1, 9, 17, 22, 31), subjects = 4, trials = 3, seed = 5)
   shuffled <- g
   shuffled$meta$grasp <- withr::with_seed(1, sample(g$meta$grasp))
-  cl <- classify(fit_grasp_classifier(shuffled, method = "last_frame", k = 5), g)
+  cl <- classify(fit_grasp_classifier(shuffled, method = "last_frame", ncomp = 5), g)
   acc <- mean(as.character(cl$predictions$predicted) == as.character(g$meta$grasp))
   expect_lt(acc, 0.6)
 })
 
 test_that("one-type data: every recording goes to the only type, accuracy 1", {
   g <- planted_types(types = 17, subjects = 3, trials = 3)
-  cl <- classify(fit_grasp_classifier(g, method = "last_frame", k = 2), g)
+  cl <- classify(fit_grasp_classifier(g, method = "last_frame", ncomp = 2), g)
   expect_true(all(cl$predictions$predicted == "Index Finger Extension"))
   cm <- grasp_confusion(cl)
   expect_equal(cm$levels, "Index Finger Extension")
@@ -116,7 +116,7 @@ test_that("FPCA classification is near 100% on planted well-separated types", {
 
 test_that("summary, autoplot and as.data.frame of a classification", {
   g <- planted_types(types = c(1, 17), subjects = 3, trials = 2, seed = 9)
-  cl <- classify(fit_grasp_classifier(g, method = "last_frame", k = 2), g)
+  cl <- classify(fit_grasp_classifier(g, method = "last_frame", ncomp = 2), g)
   s <- summary(cl)
   expect_s3_class(s, "summary_grasp_confusion")
   expect_equal(s$estimate[s$metric == "accuracy"], 1)
@@ -130,7 +130,7 @@ test_that("classify() needs fitted models and takes nothing else (it never fits 
   g <- simulate_grasps(subjects = 2, grasps = c(9, 17), objects = 1, trials = 2, seed = 1)
   expect_error(classify(g, g), class = "handmotion_error_bad_input")
   expect_snapshot(error = TRUE, classify(g, g, method = "last_frame"))
-  lf <- fit_grasp_classifier(g, method = "last_frame", k = 2)
+  lf <- fit_grasp_classifier(g, method = "last_frame", ncomp = 2)
   expect_error(classify(lf, g, k = 3), class = "handmotion_error_bad_input")
   expect_error(classify(lf, g, method = "fpca"), class = "handmotion_error_bad_input")
 })

@@ -48,7 +48,7 @@ test_that("more FPCs than the curves' rank and too small mixtures are said", {
   base <- g$recordings[[1]]
   for (i in seq_along(g)) g$recordings[[i]] <- base * i
   g$meta$n_frames[] <- nrow(base)
-  res <- degenerate_classes(fit_grasp_model(g, ncomp = 3, k = 2, seed = 1))
+  res <- degenerate_classes(fit_grasp_model(g, ncomp = 3, mixture_components = 2, seed = 1))
   expect_s3_class(res$warning, "handmotion_warning_rank_deficient")
   expect_s3_class(res$warning, "handmotion_warning_small_mixture")
   expect_output(print(res$value), "degenerate data: more FPCs \\(3\\) than the rank")

@@ -3,7 +3,7 @@ test_that("LOSO on a planted design: held-out accuracy <= in-sample, bookkeeping
   # personal postures, a held-out subject's are new.
   g <- planted_types(types = c(1, 9, 17, 22), subjects = 5, trials = 2, spread = 20,
                      subject_sd = 8, seed = 4)
-  ev <- evaluate_loso(g, method = "last_frame", fit_args = list(k = 3))
+  ev <- evaluate_loso(g, method = "last_frame", fit_args = list(ncomp = 3))
   expect_s3_class(ev, "grasp_evaluation")
   expect_equal(ev$scheme, "leave-one-subject-out")
   expect_equal(nrow(ev$folds), 5L)
@@ -29,12 +29,12 @@ test_that("LOSO on a planted design: held-out accuracy <= in-sample, bookkeeping
 
 test_that("well-separated types are recovered held-out too, and the result is reproducible", {
   g <- planted_types(types = c(1, 17, 22), subjects = 4, trials = 2, seed = 8)
-  ev <- evaluate_loso(g, method = "last_frame", fit_args = list(k = 2), folds = 2, seed = 3)
+  ev <- evaluate_loso(g, method = "last_frame", fit_args = list(ncomp = 2), folds = 2, seed = 3)
   expect_match(ev$scheme, "2 folds")
   expect_equal(nrow(ev$folds), 2L)
   expect_equal(sort(unlist(strsplit(ev$folds$subjects, ","))), paste0("s", 1:4))
   expect_gte(ev$accuracy[["held_out"]], 0.95)
-  again <- evaluate_loso(g, method = "last_frame", fit_args = list(k = 2), folds = 2, seed = 3)
+  again <- evaluate_loso(g, method = "last_frame", fit_args = list(ncomp = 2), folds = 2, seed = 3)
   expect_equal(again$folds, ev$folds)
   expect_equal(again$predictions, ev$predictions)
 })
@@ -46,7 +46,7 @@ test_that("a held-out type missing from training is reported, unlabelled data co
   all <- grasps(c(g$recordings, only_s1$recordings),
                 meta = rbind(g$meta, only_s1$meta)[c("id", "grasp", "subject")])
   all$meta$grasp[1] <- NA
-  ev <- suppressWarnings(evaluate_loso(all, method = "last_frame", fit_args = list(k = 2)))
+  ev <- suppressWarnings(evaluate_loso(all, method = "last_frame", fit_args = list(ncomp = 2)))
   expect_equal(ev$n_unlabelled, 1L)
   expect_equal(ev$folds$missing_types[ev$folds$subjects == "s1"], "Parallel Extension")
   # the held-out Parallel Extension recordings cannot be right
@@ -60,7 +60,7 @@ test_that("too few subjects and bad arguments give classed errors", {
   g <- planted_types(types = c(1, 17), subjects = 1, trials = 3)
   # one subject: folds by subject are refused, the default holds out recordings
   expect_error(evaluate_loso(g, "last_frame", split = "subject"), class = "handmotion_error_too_few_subjects")
-  expect_equal(evaluate_loso(g, "last_frame", folds = 3, fit_args = list(k = 1))$split, "recording")
+  expect_equal(evaluate_loso(g, "last_frame", folds = 3, fit_args = list(ncomp = 1))$split, "recording")
   g2 <- planted_types(types = c(1, 17), subjects = 3, trials = 3)
   expect_error(evaluate_loso(g2, "last_frame", folds = 1), class = "handmotion_error_too_few_subjects")
   expect_error(evaluate_loso(g2, "last_frame", folds = 4), class = "handmotion_error_bad_input")
@@ -71,8 +71,8 @@ test_that("too few subjects and bad arguments give classed errors", {
 
 test_that("a fold whose fit fails is recorded and its recordings left unpredicted", {
   g <- planted_types(types = c(1, 17), subjects = 3, trials = 3)
-  # k = 20 is invalid for 16 DoFs: every refit fails
-  expect_warning(ev <- evaluate_loso(g, "last_frame", fit_args = list(k = 20), in_sample = FALSE),
+  # ncomp = 20 is invalid for 16 DoFs: every refit fails
+  expect_warning(ev <- evaluate_loso(g, "last_frame", fit_args = list(ncomp = 20), in_sample = FALSE),
                  class = "handmotion_warning_fold_failed")
   expect_true(all(!is.na(ev$folds$error)))
   expect_equal(ev$confusion$n_missing_predicted, length(g))
@@ -83,7 +83,7 @@ test_that("the caller's RNG kind and stream are left untouched", {
   g <- planted_types(types = c(1, 17), subjects = 3, trials = 2)
   withr::local_seed(42)
   before <- .Random.seed
-  evaluate_loso(g, "last_frame", fit_args = list(k = 2))
+  evaluate_loso(g, "last_frame", fit_args = list(ncomp = 2))
   expect_identical(.Random.seed, before)
 })
 
@@ -94,7 +94,7 @@ test_that("progress is reported through progressr, one step per fold", {
   withr::local_options(progressr.enable = TRUE, handmotion.progress = TRUE, handmotion.progress_listener = TRUE)
   steps <- 0
   withCallingHandlers(
-    evaluate_loso(g, "last_frame", fit_args = list(k = 2), in_sample = FALSE),
+    evaluate_loso(g, "last_frame", fit_args = list(ncomp = 2), in_sample = FALSE),
     progression = function(c) if (identical(c$type, "update")) steps <<- steps + 1
   )
   expect_equal(steps, 3)
@@ -123,7 +123,7 @@ test_that("FPCA LOSO runs on a small planted design: held-out <= in-sample", {
 test_that("FPCA folds fit one Gaussian to the scores: the same predictions as the thesis' two", {
   g <- planted_types(types = c(1, 17, 22), subjects = 3, trials = 4, spread = 30, subject_sd = 6, seed = 8)
   ev1 <- evaluate_loso(g, method = "fpca", fit_args = list(seed = 1), in_sample = FALSE)
-  ev2 <- evaluate_loso(g, method = "fpca", fit_args = list(seed = 1, k = 2), in_sample = FALSE)
+  ev2 <- evaluate_loso(g, method = "fpca", fit_args = list(seed = 1, mixture_components = 2), in_sample = FALSE)
   expect_identical(ev1$predictions$predicted, ev2$predictions$predicted)
   expect_equal(ev1$predictions$distance, ev2$predictions$distance, tolerance = 1e-10)
 })
@@ -131,7 +131,7 @@ test_that("FPCA folds fit one Gaussian to the scores: the same predictions as th
 test_that("printed evaluation and autoplot", {
   g <- planted_types(types = c(1, 9, 17, 22), subjects = 5, trials = 2, spread = 20,
                      subject_sd = 8, seed = 4)
-  ev <- evaluate_loso(g, method = "last_frame", fit_args = list(k = 3))
+  ev <- evaluate_loso(g, method = "last_frame", fit_args = list(ncomp = 3))
   expect_snapshot(print(ev))
   b <- ggplot2::ggplot_build(ggplot2::autoplot(ev))
   expect_equal(nrow(b$data[[1]]), 16)

@@ -30,7 +30,7 @@ test_that("per-frame PCA recovers a planted rank-2 posture model", {
       rnorm(n * p, 0, 0.01)
   }
   aln <- structure(list(warped = W), class = "grasp_alignment")
-  m <- fit_frame_pca_model(aln, d = 2, k = 2, nbasis = NULL, align_signs = TRUE)
+  m <- fit_frame_pca_model(aln, frame_ncomp = 2, ncomp = 2, nbasis = NULL, align_signs = TRUE)
   expect_s3_class(m, "frame_pca_model")
   expect_true(all(m$frame_var_explained[, 1] > 0.8))
   expect_gt(min(rowSums(m$frame_var_explained)), 0.999)

@@ -51,7 +51,7 @@ counting_handler <- function() {
 test_that("evaluate_loso() gives the same folds under every plan", {
   skip_without_installed_workers()
   g <- planted_types(types = c(1, 17), subjects = 3, trials = 2)
-  res <- under_plans(evaluate_loso(g, "last_frame", fit_args = list(k = 2), seed = 3))
+  res <- under_plans(evaluate_loso(g, "last_frame", fit_args = list(ncomp = 2), seed = 3))
   expect_true(all(c("sequential", "multisession", "cluster") %in% names(res)))
   for (p in names(res)[-1]) expect_identical(res[[p]], res$sequential, label = p)
 })
@@ -81,7 +81,7 @@ test_that("progress reaches a progressr handler from every plan: multisession, c
                              handlers = h$handler, enable = TRUE)
     fit_steps <- h$count()
     h <- counting_handler()
-    progressr::with_progress(evaluate_loso(g, "last_frame", fit_args = list(k = 2), in_sample = FALSE),
+    progressr::with_progress(evaluate_loso(g, "last_frame", fit_args = list(ncomp = 2), in_sample = FALSE),
                              handlers = h$handler, enable = TRUE)
     c(fit = fit_steps, loso = h$count())
   })

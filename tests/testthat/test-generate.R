@@ -157,7 +157,7 @@ test_that("the native kernel gives the R reference's grasps for the same seed", 
   # their rank, and the warp mixture is one Gaussian -- said by a warning)
   m3 <- suppressWarnings(
     fit_grasp_model(planted_grasps(n = 60, p = 3, len_sd = 6, seed = 8), ncomp = 3, warp_ncomp = 2,
-                    k = 3, warping = "linear", seed = 1),
+                    mixture_components = 3, warping = "linear", seed = 1),
     classes = "handmotion_warning_small_mixture")
   expect_equal(dim(m3$sampler$dofs$root), c(3L, 3L, 3L, 3L))
   fast <- generate(m3, n = 40, seed = 2)

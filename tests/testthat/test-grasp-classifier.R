@@ -89,16 +89,16 @@ test_that("the classifier refuses what it cannot learn from or apply to", {
 
 test_that("fit_grasp_classifier(method = ) gives each method's documented class, which classify() follows", {
   g <- final_dof_types(n_per = 6)
-  lf <- fit_grasp_classifier(g, method = "last_frame", k = 2)
+  lf <- fit_grasp_classifier(g, method = "last_frame", ncomp = 2)
   expect_s3_class(lf, "last_frame_pca")
-  expect_equal(lf$k, 2L)
+  expect_equal(lf$ncomp, 2L)
   expect_identical(classify(lf, g)$method, "last_frame")
   w <- fit_grasp_classifier(g, method = "weighted_fpca", seed = 1)
   expect_s3_class(w, "weighted_fpca")
   expect_identical(classify(w, g)$method, "weighted_fpca")
   expect_identical(classify(fit_grasp_classifier(g), g)$method, "discriminant")
   # a method's arguments are checked against that method, by name
-  expect_error(fit_grasp_classifier(g, k = 2), "no argument", class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_classifier(g, ncomp = 2), "no argument", class = "handmotion_error_bad_input")
   expect_error(fit_grasp_classifier(g, method = "last_frame", prior = "data"), "no argument",
                class = "handmotion_error_bad_input")
   expect_error(fit_grasp_classifier(g, method = "weighted_fpca", at = 0.5), "no argument",

@@ -41,7 +41,7 @@ test_that("LWR on all components equals LWR straight to the angles (why 'direct'
   fit <- fit_handover(ref, markers = 3, smooth = FALSE)
   q <- forward_kinematics(split$test[1], markers = fit$markers)[[1]]
   y <- do.call(rbind, ref$recordings)
-  direct_local <- lwr_predict(fit$ref_x, y, q, fit$k_used, fit$ridge, fit$eps)
+  direct_local <- lwr_predict(fit$ref_x, y, q, fit$neighbours_used, fit$ridge, fit$eps)
   via_pca <- predict(fit, split$test[1])$recordings[[1]]
   expect_equal(unname(via_pca), unname(direct_local), tolerance = 1e-8)
   # with fewer components the two differ
@@ -83,7 +83,7 @@ test_that("wrong marker sets are refused with classed errors", {
                class = "handmotion_error_bad_markers")
   expect_error(fit_handover(ref, markers = 14), class = "handmotion_error_bad_markers")
   expect_error(fit_handover(ref, markers = 3, ncomp = 17), class = "handmotion_error_bad_input")
-  expect_error(fit_handover(ref, markers = 3, k = 2), class = "handmotion_error_bad_input")
+  expect_error(fit_handover(ref, markers = 3, neighbours = 2), class = "handmotion_error_bad_input")
   expect_error(fit_handover(ref, markers = 3, filter_size = 0), class = "handmotion_error_bad_input")
   expect_error(fit_handover("ref"), class = "handmotion_error_bad_input")
 })
@@ -95,8 +95,8 @@ test_that("a reference too small for the regression is a classed error", {
   expect_error(fit_handover(tiny, markers = c("thumb_tip", "index_tip", "ring_tip")),
                class = "handmotion_error_reference_too_small")
   # with enough frames but fewer than k, every frame is a neighbour (recorded)
-  fit <- fit_handover(split$ref[1], markers = c("thumb_tip", "index_tip"), k = 1000)
-  expect_equal(fit$k_used, split$ref$meta$n_frames[1])
+  fit <- fit_handover(split$ref[1], markers = c("thumb_tip", "index_tip"), neighbours = 1000)
+  expect_equal(fit$neighbours_used, split$ref$meta$n_frames[1])
 })
 
 test_that("occluded (NaN) markers are dropped per frame, and fully occluded frames are an error", {
@@ -136,10 +136,10 @@ test_that("the cone filter scales with the rate and smooths without bias", {
   expect_identical(cone_filter(x, 1), x)
 })
 
-test_that("k = Inf is the paper's all-frame weighting and matches k = all frames", {
+test_that("neighbours = Inf is the paper's all-frame weighting and matches all frames", {
   small <- split$ref[1:6]
-  a <- fit_handover(small, markers = c("thumb_tip", "middle_tip"), k = Inf)
-  b <- fit_handover(small, markers = c("thumb_tip", "middle_tip"), k = sum(small$meta$n_frames))
+  a <- fit_handover(small, markers = c("thumb_tip", "middle_tip"), neighbours = Inf)
+  b <- fit_handover(small, markers = c("thumb_tip", "middle_tip"), neighbours = sum(small$meta$n_frames))
   expect_equal(predict(a, split$test[1])$recordings, predict(b, split$test[1])$recordings)
 })
 
@@ -178,7 +178,7 @@ test_that("PCA reconstruction error falls with the number of components (Figure 
 })
 
 test_that("search-based selection returns a logged greedy set", {
-  s <- select_markers(split$ref, n = 2, method = "search", max_frames = 150, k = 64)
+  s <- select_markers(split$ref, n = 2, method = "search", max_frames = 150, neighbours = 64)
   expect_length(s, 2)
   log <- attr(s, "search")
   expect_equal(nrow(log), 13 + 12)
@@ -194,7 +194,7 @@ test_that("handover_error(by = \"markers\") tabulates and plots the comparison",
   cmp <- handover_error(split$test[1:2], by = "markers", reference = split$ref,
                         sets = list(a = c("thumb_tip", "index_tip"),
                                     b = list(markers = c("thumb_tip", "index_tip"), method = "direct")),
-                        k = 64)
+                        neighbours = 64)
   expect_s3_class(cmp, "handover_comparison")
   expect_equal(as.character(cmp$set), c("a", "b"))
   expect_equal(cmp$method, c("pca", "direct"))
@@ -203,7 +203,7 @@ test_that("handover_error(by = \"markers\") tabulates and plots the comparison",
   b <- ggplot2::ggplot_build(ggplot2::autoplot(cmp))
   expect_equal(b$data[[1]]$y, cmp$error)
   # each row is the plain error of that set's reconstruction
-  fit_a <- fit_handover(split$ref, c("thumb_tip", "index_tip"), k = 64)
+  fit_a <- fit_handover(split$ref, c("thumb_tip", "index_tip"), neighbours = 64)
   expect_equal(cmp$error[1], handover_error(split$test[1:2], predict(fit_a, split$test[1:2])))
   expect_error(handover_error(split$test, by = "markers", reference = split$ref, sets = list(1)),
                class = "handmotion_error_bad_input")
@@ -237,7 +237,7 @@ test_that("hand-over runs on the real GraspDB14 samples (radians, CyberGlove map
   # (a reader regression must fail here, not skip)
   expect_s3_class(g, "grasps")
   expect_length(g, 2L)
-  fit <- fit_handover(g[2], markers = 6, k = 64)
+  fit <- fit_handover(g[2], markers = 6, neighbours = 64)
   rec <- predict(fit, g[1])
   expect_equal(rec$unit, "rad")
   e <- handover_error(g[1], rec)
@@ -245,7 +245,7 @@ test_that("hand-over runs on the real GraspDB14 samples (radians, CyberGlove map
   # reconstructing the reference's own frames is near exact; not exact, because
   # the sensors the CyberGlove mapping does not apply (I-AA, P-Arch) change
   # angles without moving any marker
-  expect_lt(handover_error(g[2], predict(fit_handover(g[2], 6, k = 64, smooth = FALSE), g[2])), 0.2)
+  expect_lt(handover_error(g[2], predict(fit_handover(g[2], 6, neighbours = 64, smooth = FALSE), g[2])), 0.2)
 })
 
 test_that("the C regression engine agrees with the R reference engine", {
@@ -275,7 +275,7 @@ test_that("the native local regression checks its arguments itself (no crash on 
 })
 
 test_that("hand-over models are built by one constructor whose validator checks the shapes", {
-  fit <- fit_handover(split$ref, markers = 3, k = 64)
+  fit <- fit_handover(split$ref, markers = 3, neighbours = 64)
   expect_identical(validate_handover_model(fit), fit)
   broken <- unclass(fit)
   broken$rotation <- broken$rotation[-1, ]

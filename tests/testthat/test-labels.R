@@ -33,7 +33,7 @@ test_that("a mix of Feix names and other labels keeps them all, with a classed w
 test_that("every verb keys on the user's labels", {
   x <- simulate_grasps(subjects = 3, grasps = c(mug = 9, bottle = 3), objects = 1, trials = 3, seed = 2)
   expect_equal(levels(x$meta$grasp), c("mug", "bottle"))
-  ms <- fit_grasp_models(x, seed = 1, k = 1)
+  ms <- fit_grasp_models(x, seed = 1, mixture_components = 1)
   expect_setequal(names(ms), c("mug", "bottle"))
   new <- generate(ms, grasp = "bottle", n = 3, seed = 1)
   expect_equal(levels(new$meta$grasp), c("mug", "bottle"))
@@ -48,7 +48,7 @@ test_that("every verb keys on the user's labels", {
 
 test_that("the thesis' tables refuse other labels with a classed error naming the argument", {
   x <- simulate_grasps(subjects = 3, grasps = c(mug = 9, bottle = 3), objects = 1, trials = 2, seed = 2)
-  ms <- fit_grasp_models(x, seed = 1, k = 1)
+  ms <- fit_grasp_models(x, seed = 1, mixture_components = 1)
   err <- expect_error(thesis_table("5.1", models = ms), class = "handmotion_error_not_feix_labels")
   expect_equal(err$argument, "models")
   expect_match(conditionMessage(err), "Feix")

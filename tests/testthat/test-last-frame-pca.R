@@ -9,7 +9,7 @@ test_that("PCA of last frames recovers a planted low-dimensional type", {
   last <- sweep(scores %*% t(basis), 2, mu, `+`)
   recs <- lapply(seq_len(20), function(i) rbind(rep(0, p), last[i, ]))
   g <- grasps(recs, meta = data.frame(grasp = rep("Tripod", 20)))
-  fit <- fit_grasp_classifier(g, method = "last_frame", k = 2)
+  fit <- fit_grasp_classifier(g, method = "last_frame", ncomp = 2)
   expect_s3_class(fit, "last_frame_pca")
   expect_equal(unname(fit$models$Tripod$mean), mu, tolerance = 1e-8)
   cv <- cumulative_variance(fit)
@@ -29,7 +29,7 @@ test_that("PCA of last frames recovers a planted low-dimensional type", {
 
 test_that("last-frame classification is near perfect on well-separated planted types", {
   g <- planted_types(types = c(1, 9, 17, 22, 31), subjects = 4, trials = 3, seed = 11)
-  fit <- fit_grasp_classifier(g, method = "last_frame", k = 5)
+  fit <- fit_grasp_classifier(g, method = "last_frame", ncomp = 5)
   pred <- predict(fit, g)$.pred_class
   expect_s3_class(pred, "factor")
   expect_equal(levels(pred), levels(g$meta$grasp))   # the training labels' levels
@@ -41,26 +41,26 @@ test_that("last-frame classification is near perfect on well-separated planted t
 
 test_that("types with too few recordings fall back to n - 1 PCs, with a warning", {
   g <- planted_types(types = c(1, 2), subjects = 1, trials = 3)
-  expect_warning(fit <- fit_grasp_classifier(g, method = "last_frame", k = 5), class = "handmotion_warning_few_recordings")
-  expect_equal(unname(fit$k_used), c(2L, 2L))
+  expect_warning(fit <- fit_grasp_classifier(g, method = "last_frame", ncomp = 5), class = "handmotion_warning_few_recordings")
+  expect_equal(unname(fit$ncomp_used), c(2L, 2L))
   expect_output(print(fit), "fewer than 5 PCs")
   one <- g[c(1, 4)]
-  expect_warning(fit1 <- fit_grasp_classifier(one, method = "last_frame", k = 1), class = "handmotion_warning_few_recordings")
-  expect_equal(unname(fit1$k_used), c(0L, 0L))
+  expect_warning(fit1 <- fit_grasp_classifier(one, method = "last_frame", ncomp = 1), class = "handmotion_warning_few_recordings")
+  expect_equal(unname(fit1$ncomp_used), c(0L, 0L))
   expect_true(all(is.na(cumulative_variance(fit1)$pc1)))
   expect_equal(as.character(predict(fit1, one)$.pred_class), as.character(one$meta$grasp))
 })
 
 test_that("bad input gives classed errors", {
   g <- planted_types(types = 1, subjects = 2, trials = 3)
-  expect_error(fit_grasp_classifier(g, method = "last_frame", k = 0), class = "handmotion_error_bad_input")
-  expect_error(fit_grasp_classifier(g, method = "last_frame", k = 17), class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_classifier(g, method = "last_frame", ncomp = 0), class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_classifier(g, method = "last_frame", ncomp = 17), class = "handmotion_error_bad_input")
   expect_error(fit_grasp_classifier(g, method = "last_frame", grasps = "Tripod"), class = "handmotion_error_bad_input")
   expect_error(fit_grasp_classifier(list(), method = "last_frame"), class = "handmotion_error_bad_input")
   unl <- g
   unl$meta$grasp[] <- NA
   expect_error(fit_grasp_classifier(unl, method = "last_frame"), class = "handmotion_error_no_labels")
-  fit <- fit_grasp_classifier(g, method = "last_frame", k = 2)
+  fit <- fit_grasp_classifier(g, method = "last_frame", ncomp = 2)
   other <- grasps(list(matrix(0, 3, 4)))
   expect_error(predict(fit, other), class = "handmotion_error_dof_mismatch")
 })
@@ -68,7 +68,7 @@ test_that("bad input gives classed errors", {
 test_that("unlabelled recordings are ignored in fitting and counted", {
   g <- planted_types(types = c(1, 2), subjects = 2, trials = 3)
   g$meta$grasp[1] <- NA
-  fit <- fit_grasp_classifier(g, method = "last_frame", k = 2)
+  fit <- fit_grasp_classifier(g, method = "last_frame", ncomp = 2)
   expect_equal(fit$n_unlabelled, 1L)
   expect_equal(fit$models[[1]]$n, 5L)
 })

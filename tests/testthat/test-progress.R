@@ -17,23 +17,23 @@ test_that("long calls count their steps: a fold, a horizon, a model, a type", {
   g <- simulate_grasps(subjects = 4, grasps = 1:3, objects = 1, trials = 2, seed = 1)
   # early recognition: one step per horizon its folds need (here 5 and 10 frames)
   expect_equal(count_progressions(evaluate_early_recognition(g, ms = c(100, 200), fractions = NULL)), 2L)
-  expect_equal(count_progressions(ms <- fit_grasp_models(g, seed = 1, k = 1)), 3L)
+  expect_equal(count_progressions(ms <- fit_grasp_models(g, seed = 1, mixture_components = 1)), 3L)
   expect_equal(count_progressions(classify(ms, g)), 3L)
-  expect_equal(count_progressions(evaluate_loso(g, method = "last_frame", fit_args = list(k = 2),
+  expect_equal(count_progressions(evaluate_loso(g, method = "last_frame", fit_args = list(ncomp = 2),
                                                 in_sample = FALSE)), 4L)
   # an outer long call counts; the calls inside it do not start a second count
-  expect_equal(count_progressions(evaluate_loso(g, method = "fpca", fit_args = list(k = 1), folds = 2,
+  expect_equal(count_progressions(evaluate_loso(g, method = "fpca", fit_args = list(mixture_components = 1), folds = 2,
                                                 in_sample = FALSE)), 2L)
 })
 
 test_that("progress is shown without set-up and is silent when turned off", {
   g <- simulate_grasps(subjects = 3, grasps = 1:2, objects = 1, trials = 2, seed = 1)
   shown <- withr::with_options(list(handmotion.progress = TRUE, progressr.enable_after = 0), {
-    capture.output(ms <- fit_grasp_models(g, seed = 1, k = 1), type = "message")
+    capture.output(ms <- fit_grasp_models(g, seed = 1, mixture_components = 1), type = "message")
   })
   expect_match(paste(shown, collapse = ""), "100%")
   off <- withr::with_options(list(handmotion.progress = FALSE, progressr.enable_after = 0), {
-    capture.output(invisible(fit_grasp_models(g, seed = 1, k = 1)), type = "message")
+    capture.output(invisible(fit_grasp_models(g, seed = 1, mixture_components = 1)), type = "message")
   })
   expect_length(off, 0L)
   expect_equal(withr::with_options(list(handmotion.progress.test = FALSE),

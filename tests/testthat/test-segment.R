@@ -47,7 +47,7 @@ test_that("the twin of HUST, cut to the motion, is not trimmed by default; glove
   raw <- simulate_grasps(subjects = 1, grasps = c(a = 1, b = 9), objects = 1, trials = 5, rate = 100,
                          glove = "resistive", rest = 1, hold = 1, seed = 1)
   expect_equal(resolve_motion(raw, "auto"), "trim")
-  m <- fit_grasp_model(raw, grasp = "a", seed = 1, k = 1)
+  m <- fit_grasp_model(raw, grasp = "a", seed = 1, mixture_components = 1)
   expect_equal(m$settings$motion, "trim")
   expect_equal(m$settings$warping, "linear")
   expect_equal(m$n_used, 5L)

@@ -65,7 +65,7 @@ grasps = Grasps
 
 # The names R removed (R/renamed.R, ?handmotion-renamed) that this package used to carry.
 _RENAMED = {
-    "fit_last_frame_pca": 'fit_grasp_classifier(x, method="last_frame", k=...)',
+    "fit_last_frame_pca": 'fit_grasp_classifier(x, method="last_frame", ncomp=...)',
     "fit_weighted_fpca": 'fit_grasp_classifier(x, method="weighted_fpca", models=..., time=...)',
     "rank_markers": "select_markers(x, n): the n top-ranked markers",
     "reconstruct": "model.predict(query) on the HandoverModel from fit_handover()",

@@ -213,7 +213,7 @@ def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", **kwargs)
     ``dependence="independent"`` is the thesis' model (DTW, two FPCs per DoF, a mixture per
     DoF, each DoF on its own); ``"copula"`` joins all DoFs' scores and the duration by a
     Gaussian copula so that generated fingers move together (linear time normalisation, four
-    least-squares FPCs per DoF). Other keyword arguments (``ncomp``, ``k``, ``warping``,
+    least-squares FPCs per DoF). Other keyword arguments (``ncomp``, ``mixture_components``, ``warping``,
     ``fpc_scores``, ``mixture_guard``, ...) go to R's ``fit_grasp_model()``, which documents
     both models and their defaults.
     """
@@ -364,7 +364,7 @@ def fit_grasp_classifier(x, method="discriminant", **kwargs):
     * ``"discriminant"``: shrinkage LDA on postures at fractions of the motion, duration and
       travel per DoF (``at``, ``prior``); a :class:`GraspClassifier`;
     * ``"last_frame"``: per-type PCA of the recordings' last frames, the thesis' baseline
-      (``k``, ``grasps``), also for :func:`thesis_table`;
+      (``ncomp``, ``grasps``), also for :func:`thesis_table`;
     * ``"weighted_fpca"``: the thesis' FPCA distance with per-type DoF weights (``models``, a
       :class:`GraspModels` or None; ``time``, ``"uniform"`` or ``"end"``).
 

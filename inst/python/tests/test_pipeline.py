@@ -81,7 +81,7 @@ def test_tables_and_held_out(hm, models, small):
     lf = hm.fit_grasp_classifier(small, method="last_frame", k=2)
     t7 = hm.thesis_table("5.7", fit=lf, pcs=[1, 2])
     assert list(t7.columns)[:4] == ["grasp_id", "grasp", "pc1", "thesis_pc1"]
-    ev = hm.evaluate_loso(small, method="last_frame", fit_args={"k": 2})
+    ev = hm.evaluate_loso(small, method="last_frame", fit_args={"ncomp": 2})
     assert 0 <= ev["accuracy"]["held_out"] <= 1
     assert int(ev["confusion"].to_numpy().sum()) == len(small)
 

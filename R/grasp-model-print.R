@@ -1,0 +1,103 @@
+# print() and summary() of a grasp model.
+
+#' @export
+print.grasp_model <- function(x, ...) {
+  cat(sprintf("<grasp_model> %s%s: %d DoFs x %d FPCs + %d warp FPC%s, %d-component mixtures\n",
+              x$grasp, if (!is.na(x$grasp_id)) sprintf(" (type %d)", x$grasp_id) else "",
+              length(x$dofs), x$settings$ncomp, x$settings$warp_ncomp,
+              if (x$settings$warp_ncomp == 1) "" else "s", x$settings$mixture_components))
+  rm <- table(factor(x$removed$reason, levels = c("overlong", "degenerate warp")))
+  cat(sprintf("  recordings: %d in, %d used (%d over-long, %d degenerate warps removed)\n",
+              x$n_input, x$n_used, rm[["overlong"]], rm[["degenerate warp"]]))
+  cat(sprintf("  target length: %d frames at %g Hz; warping: %s%s\n", x$target_length, x$rate,
+              x$warping$method, if (identical(x$settings$motion, "trim")) "; recordings trimmed to the motion" else ""))
+  if (!is.null(x$glove) && any(x$glove$channels$stuck)) {
+    cat(sprintf("  stuck channels held constant: %s\n", paste(x$glove$channels$channel[x$glove$channels$stuck], collapse = " ")))
+  }
+  ve <- 100 * rowSums(model_var_explained(x))
+  if (any(is.finite(ve))) {
+    cat(sprintf("  variance explained by %d FPCs per DoF: min %.1f%%, median %.1f%%, max %.1f%%\n",
+                x$settings$ncomp, min(ve, na.rm = TRUE), stats::median(ve, na.rm = TRUE),
+                max(ve, na.rm = TRUE)))
+  }
+  cat("  ", format_dependence(x), "\n", sep = "")
+  cat(format_settings(x$settings), sep = "\n")
+  dg <- format_degenerate(x$degenerate_data)
+  if (length(dg)) cat(dg, sep = "\n")
+  if (nrow(x$fallbacks) == 0L) {
+    cat("  fallbacks: none\n")
+  } else {
+    cat("  fallbacks:\n")
+    fb <- x$fallbacks
+    cat(paste0("    ", fb$step, ifelse(is.na(fb$dof), "", paste0(" [", fb$dof, "]")), ": ", fb$reason,
+               collapse = "\n"), "\n", sep = "")
+  }
+  invisible(x)
+}
+
+#' Summarise a grasp model
+#'
+#' @param object A `grasp_model` from [fit_grasp_model()].
+#' @param ... Unused.
+#' @return A data frame with one row per DoF: `dof`, the percentage of
+#'   variance explained by each FPC (`FPC1`, `FPC2`, ...) and in total
+#'   (`total`), the mixture used (`"mixture"`, `"single Gaussian"` or
+#'   `"point mass"`) and the fallback reason. The recordings removed and the
+#'   fallbacks are kept as attributes `removed` and `fallbacks` and printed;
+#'   attribute `dependence_matrix` is the DoF x DoF correlation between the
+#'   DoFs' first FPC scores the model generates with (the identity for the
+#'   thesis' independent DoFs, `dependence = "independent"`).
+#' @export
+#' @examples
+#' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
+#' summary(fit_grasp_model(g, seed = 1))
+summary.grasp_model <- function(object, ...) {
+  ve <- 100 * model_var_explained(object)
+  mix <- vapply(object$gmm, function(g) {
+    if (isTRUE(g$point_mass)) "point mass" else if (isTRUE(g$fallback)) "single Gaussian" else "mixture"
+  }, character(1))
+  reason <- vapply(object$gmm, function(g) if (isTRUE(g$fallback)) gmm_reason(g) else NA_character_,
+                   character(1))
+  out <- data.frame(dof = object$dofs, as.data.frame(ve, row.names = NULL), total = rowSums(ve),
+                    mixture = unname(mix), reason = unname(reason), stringsAsFactors = FALSE)
+  rownames(out) <- NULL
+  structure(out, class = c("summary_grasp_model", "data.frame"), grasp = object$grasp,
+            removed = object$removed, fallbacks = object$fallbacks,
+            n_used = object$n_used, n_input = object$n_input, target_length = object$target_length,
+            warping = object$warping$method, dependence = format_dependence(object),
+            dependence_matrix = dependence_matrix(object))
+}
+
+# One line on how a model joins its DoFs and guards its mixtures.
+format_dependence <- function(model) {
+  guard <- model$settings$mixture_guard %||% "none"
+  n_guard <- sum(model$fallbacks$step %in% c("mixture_guard", "warp_mixture_guard"))
+  g <- if (guard == "none") "no mixture guard" else
+    sprintf("mixture guard %s (%d of %d mixtures one Gaussian)", guard, n_guard, length(model$dofs) + 1L)
+  if (!identical(model$dependence$type, "copula")) {
+    return(paste0("dependence: independent DoFs (the thesis' model); ", g))
+  }
+  R <- dependence_matrix(model)
+  r <- abs(R[upper.tri(R)])
+  cop <- model$dependence$copula
+  sprintf("dependence: Gaussian copula over %d scores (shrinkage %.2f), |r| between DoFs' FPC1 median %.2f, max %.2f; %s",
+          nrow(cop$columns), cop$shrinkage, stats::median(r), max(r), g)
+}
+
+#' @export
+print.summary_grasp_model <- function(x, ...) {
+  cat(sprintf("Grasp model %s: %d of %d recordings used, %d frames, %s warping\n",
+              attr(x, "grasp"), attr(x, "n_used"), attr(x, "n_input"), attr(x, "target_length"),
+              attr(x, "warping")))
+  cat(attr(x, "dependence") %||% "", "\n", sep = "")
+  print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
+  rm <- attr(x, "removed")
+  if (nrow(rm)) {
+    cat("Removed recordings:\n")
+    print(rm, row.names = FALSE)
+  }
+  fb <- attr(x, "fallbacks")
+  cat(if (nrow(fb)) "Fallbacks:\n" else "Fallbacks: none\n")
+  if (nrow(fb)) print(fb, row.names = FALSE)
+  invisible(x)
+}
