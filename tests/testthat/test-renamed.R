@@ -28,3 +28,18 @@ test_that("the renamed names are not exported and the surface stays small", {
   # about 35 verbs, and the seven of your own glove (profiles, reading, calibration, motion)
   expect_lte(length(exports), 55L)
 })
+
+test_that("an argument renamed by what it counts is a classed error giving the new name", {
+  g <- simulate_grasps(subjects = 3, grasps = 1:2, objects = 1, trials = 2, seed = 1)
+  one <- g[g$meta$grasp == levels(droplevels(g$meta$grasp))[1]]
+  # fit_grasp_model(k = 2) would otherwise set keep_data by partial matching
+  expect_error(fit_grasp_model(one, k = 2), "mixture_components", class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_models(g, k = 2), "mixture_components", class = "handmotion_error_bad_input")
+  expect_error(fit_grasp_classifier(g, method = "last_frame", k = 2), "ncomp",
+               class = "handmotion_error_bad_input")
+  expect_error(fit_handover(g, markers = 3, k = 40), "neighbours", class = "handmotion_error_bad_input")
+  # and the new names do what the old ones did
+  expect_equal(fit_grasp_model(one, mixture_components = 1)$settings$mixture_components, 1L)
+  expect_equal(fit_grasp_classifier(g, method = "last_frame", ncomp = 2)$ncomp, 2L)
+  expect_equal(fit_handover(g, markers = 3, neighbours = 40)$neighbours_used, 40L)
+})
