@@ -34,7 +34,7 @@ def models(hm, small):
 
 @pytest.fixture(scope="module")
 def handover(hm, small):
-    return hm.fit_handover(small, markers=3, k=40)
+    return hm.fit_handover(small, markers=3, neighbours=40)
 
 
 ANG = np.full((3, 16), 10.0)
@@ -111,7 +111,7 @@ def test_degenerate_data_arrives_as_a_classed_warning(hm, small):
     same = hm.Grasps([g.recordings[0]] * 4, meta=g.meta.assign(grasp=g.meta["grasp"].iloc[0]), dofs=g.dofs)
     with warnings.catch_warnings(record=True) as seen:
         warnings.simplefilter("always")
-        hm.fit_grasp_models(same, seed=1, warping="linear", k=1)
+        hm.fit_grasp_models(same, seed=1, warping="linear", mixture_components=1)
     got = [w.message for w in seen if isinstance(w.message, DegenerateDataWarning)]
     assert got, [str(w.message) for w in seen]
     assert "handmotion_warning_identical_recordings" in got[0].r_class

@@ -70,7 +70,7 @@ def test_r_round_trip_is_lossless(hm, ro):
 def test_r_errors_become_classed_exceptions(hm):
     # any label is a class now; asking a Feix-labelled set for a type it lacks is still an error
     g = hm.simulate_grasps(subjects=2, grasps=["Tripod", "Ring"], objects=1, trials=2, seed=1)
-    m = hm.fit_grasp_models(g, seed=1, k=1)
+    m = hm.fit_grasp_models(g, seed=1, mixture_components=1)
     with pytest.raises(hm.UnknownGraspError) as info:
         hm.generate(m, grasp="Not A Grasp")
     assert "Not A Grasp" in str(info.value)

@@ -45,7 +45,7 @@ def test_generate_identical_to_r(hm, ro, models):
 
 
 def test_classify(hm, models, small):
-    lf = hm.fit_grasp_classifier(small, method="last_frame", k=2)
+    lf = hm.fit_grasp_classifier(small, method="last_frame", ncomp=2)
     res = hm.classify(lf, small, method="last_frame")
     assert 0 <= res["accuracy"] <= 1
     conf = res["confusion"]
@@ -78,7 +78,7 @@ def test_tables_and_held_out(hm, models, small):
     assert t3.shape[0] == 3
     t6 = hm.thesis_table("5.6", confusion=res["classification"])
     assert {"correct", "thesis_correct", "recall"}.issubset(t6.columns)
-    lf = hm.fit_grasp_classifier(small, method="last_frame", k=2)
+    lf = hm.fit_grasp_classifier(small, method="last_frame", ncomp=2)
     t7 = hm.thesis_table("5.7", fit=lf, pcs=[1, 2])
     assert list(t7.columns)[:4] == ["grasp_id", "grasp", "pc1", "thesis_pc1"]
     ev = hm.evaluate_loso(small, method="last_frame", fit_args={"ncomp": 2})

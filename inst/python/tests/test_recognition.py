@@ -40,14 +40,14 @@ def test_weighted_fpca_from_python(hm, split):
     assert "weighted" in repr(res["classification"])
     with pytest.raises(hm.BadInputError):
         hm.fit_grasp_classifier(train, method="weighted_fpca", time="start")
-    lf = hm.fit_grasp_classifier(train, method="last_frame", k=2)
+    lf = hm.fit_grasp_classifier(train, method="last_frame", ncomp=2)
     assert "last_frame_pca" in repr(lf)
 
 
 def test_every_classifier_answers_predict_alike(hm, split):
     train, test = split
-    fits = [hm.fit_grasp_models(train, seed=1, k=1), hm.fit_grasp_classifier(train),
-            hm.fit_grasp_classifier(train, method="last_frame", k=2),
+    fits = [hm.fit_grasp_models(train, seed=1, mixture_components=1), hm.fit_grasp_classifier(train),
+            hm.fit_grasp_classifier(train, method="last_frame", ncomp=2),
             hm.fit_grasp_classifier(train, method="weighted_fpca", seed=1), hm.fit_grasp_recognizer(train)]
     for fit in fits:
         cls = fit.predict(test)
