@@ -66,7 +66,7 @@ test_that("autoplot shows the weight curves with the flip frames marked (Figure 
   set.seed(2)
   recs <- replicate(15, matrix(rnorm(30 * 4), 30, 4), simplify = FALSE)
   g <- grasps(recs, meta = data.frame(grasp = rep("Ring", 15)), dofs = paste0("d", 1:4))
-  m <- fit_frame_pca_model(g, d = 2, warping = "linear", align_signs = TRUE)
+  m <- fit_frame_pca_model(g, frame_ncomp = 2, warping = "linear", align_signs = TRUE)
   b <- ggplot2::ggplot_build(ggplot2::autoplot(m))
   lines <- b$data[[1]]
   expect_equal(length(unique(lines$PANEL)), 2L)            # raw and aligned
@@ -77,6 +77,6 @@ test_that("autoplot shows the weight curves with the flip frames marked (Figure 
   bl <- ggplot2::ggplot_build(ggplot2::autoplot(m, type = "loadings", component = 2))
   expect_equal(nrow(bl$data[[1]]), 2L * 4L * 30L)
   expect_error(ggplot2::autoplot(m, component = 3), class = "handmotion_error_bad_input")
-  expect_error(fit_frame_pca_model(g, d = 5, warping = "linear"), class = "handmotion_error_bad_input")
+  expect_error(fit_frame_pca_model(g, frame_ncomp = 5, warping = "linear"), class = "handmotion_error_bad_input")
   expect_output(print(m), "sign flips between frames")
 })
