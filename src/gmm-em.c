@@ -228,15 +228,18 @@ static int starts_close(int k, int d, const double *wa, const double *mua, const
  * neg = log(w2 f2) - log(w1 f1) = Pt_i . D (summed from the intercept on,
  * as BLAS does), e = exp(neg), the first component's responsibility
  * z = 1 / (1 + e) (R's 1 / (1 + E) and plogis(neg, lower.tail = FALSE)
- * alike), and s[m] += Pt_im z in point order (crossprod(P, Z)) into the
- * next state s (nm values, zeroed first).
+ * alike), and s_next[m] += Pt_im z in point order (crossprod(P, Z)).
  * Returns sum_i log1p(e_i), computed as the log of a running product of the
  * (1 + e_i) -- one multiplication a point instead of a log1p, flushed to the
  * sum of logs before it can overflow -- and sets *inf when some e_i
  * overflowed. Pt is point-major (nm values per point); inlined with nm = 3
  * and nm = 6 so the inner loops unroll. */
-static inline double estep2(const double *restrict Pt, int n, const int nm,
-                            const double *restrict D, double *restrict s, int *inf) {
+static inline double estep2(const double *Pt, int n, const int nm, const double *D,
+                            double *s_next, int *inf) {
+  /* d <= 2 (nm <= 6) sums in a local array the compiler keeps in registers
+   * (as fast as before d > 2 came to C); larger nm sum in place */
+  double local[6];
+  double *s = nm <= 6 ? local : s_next;
   for (int m = 0; m < nm; m++) s[m] = 0.0;
   double prod = 1.0, logs = 0.0;
   int hit = 0;
@@ -258,6 +261,8 @@ static inline double estep2(const double *restrict Pt, int n, const int nm,
       logs += log1p(e);
     }
   }
+  if (s != s_next)
+    for (int m = 0; m < nm; m++) s_next[m] = s[m];
   *inf = hit;
   return logs + log(prod);
 }
