@@ -5,9 +5,10 @@
  *
  * It reproduces the R transcription gmm_em_batch_r()
  * (tests/testthat/helper-gmm-reference.R, a test reference only) step for
- * step: the
- * same monomial design (1, y_a, y_a y_b), the same M-step formulas from the
- * sufficient statistics, the same E-step (for k = 2 the log-likelihood as
+ * step: the same monomial design (1, y_a, y_a y_b), the same M-step
+ * formulas from the sufficient statistics (closed forms for d = 1 and 2;
+ * above, the Cholesky factor and its inverse, as chol() and chol2inv()),
+ * the same E-step (for k = 2 the log-likelihood as
  * psum . C1 + sum log1p(exp(neg)), with R's plogis formulation when exp
  * overflows in any start of the evaluation; otherwise a log-sum-exp), the
  * same SQUAREM acceleration (Varadhan & Roland 2008, scheme S3, on the
@@ -25,17 +26,19 @@
  * What differs is rounding only, for speed: the E-step is one pass over the
  * points fused with the next M-step's sums; for k = 2 sum log1p(exp(neg)) is
  * the log of a running product. Plain C with libm's exp(). An EM step agrees
- * with the R version to about 1e-11; SQUAREM's step length divides by a
- * second difference that near the optimum is mostly rounding, so on a
- * crawling cloud the two may stop some iterations apart
- * (tests/testthat/test-gmm.R). Sums over points are plain double sums in
- * point order.
+ * with the R version to about 1e-11 (for d = 3 and 4 the fits of the test
+ * clouds to about 1e-13); SQUAREM's step length divides by a second
+ * difference that near the optimum is mostly rounding, so on a crawling
+ * cloud the two may stop some iterations apart (tests/testthat/test-gmm.R).
+ * Sums over points are plain double sums in point order.
  *
  * Entry points:
  *   hm_gmm_em(P, state, k, max_iter, tol, logdet0)
  *     P: n x nm monomials of the standardised data, nm = 1 + d + d (d + 1) / 2
- *     (1, y_a, then y_a y_b for a <= b, a-major: gmm_design()); state: the starting sufficient statistics, nm rows and, per
- *     start, one column (k = 2: the first component's) or k columns.
+ *     (1, y_a, then y_a y_b for a <= b, a-major: gmm_design()); state: the
+ *     starting sufficient statistics, nm rows and, per start, one column
+ *     (k = 2: the first component's) or k columns. Every argument is
+ *     checked (types, lengths, finiteness): a bad call is an R error.
  *     Returns list(status, iterations, converged, loglik, bad, weights, mu,
  *     sigma): status 0 = stopped with parameters (converged or at max_iter),
  *     1 = failed (bad = first degenerate component, 0 = non-finite
@@ -628,6 +631,7 @@ SEXP hm_gmm_em(SEXP P_, SEXP state_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP lo
 SEXP hm_gmm_kmeans(SEXP Y_, SEXP centres_, SEXP iters_) {
   if (!isReal(Y_) || !isMatrix(Y_)) error("'Y' must be a double matrix");
   if (!isNewList(centres_)) error("'centres' must be a list");
+  if (LENGTH(iters_) != 1) error("'iters' must be a single value");
   const int n = nrows(Y_), d = ncols(Y_), S = LENGTH(centres_), iters = asInteger(iters_);
   const double *Y = REAL(Y_);
   SEXP out = PROTECT(allocMatrix(INTSXP, n, S));
