@@ -86,3 +86,21 @@ load_avg <- function() tryCatch(scan("/proc/loadavg", n = 1, quiet = TRUE), erro
 cat(sprintf("== %s (%s mode; %s; load average %s on %d cores)\n", bench_name,
             if (bench_quick) "quick" else "full", bench_build, format(load_avg()),
             parallel::detectCores()))
+
+# Evaluate `expr` with the R transcription of the batch EM
+# (tests/testthat/helper-gmm-reference.R, the tests' reference; not in the
+# package) in place of the compiled one, to time what compiling it bought.
+with_r_em <- function(expr) {
+  ns <- asNamespace("handmotion")
+  ref <- new.env(parent = ns)
+  sys.source(file.path("tests", "testthat", "helper-gmm-reference.R"), envir = ref)
+  compiled <- ns$gmm_em_batch
+  locked <- bindingIsLocked("gmm_em_batch", ns)
+  if (locked) unlockBinding("gmm_em_batch", ns)
+  assign("gmm_em_batch", ref$gmm_em_batch_r, envir = ns)
+  on.exit({
+    assign("gmm_em_batch", compiled, envir = ns)
+    if (locked) lockBinding("gmm_em_batch", ns)
+  })
+  expr
+}

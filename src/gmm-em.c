@@ -1,9 +1,14 @@
-/* Compiled EM for the fast Gaussian-mixture engine (R/gmm.R), for d = 1 and
- * d = 2 (the thesis' warp scores and FPC score pairs).
+/* Compiled EM for the fast Gaussian-mixture engine (R/gmm-em.R), for any
+ * dimension d and any number of components k: the one production path of
+ * the fast engine (d = 1 and 2 are the thesis' warp scores and FPC score
+ * pairs; d > 2 comes with ncomp > 2).
  *
- * It reproduces the R implementation gmm_em_batch_r() step for step: the
- * same monomial design (1, y_a, y_a y_b), the same M-step formulas from the
- * sufficient statistics, the same E-step (for k = 2 the log-likelihood as
+ * It reproduces the R transcription gmm_em_batch_r()
+ * (tests/testthat/helper-gmm-reference.R, a test reference only) step for
+ * step: the same monomial design (1, y_a, y_a y_b), the same M-step
+ * formulas from the sufficient statistics (closed forms for d = 1 and 2;
+ * above, the Cholesky factor and its inverse, as chol() and chol2inv()),
+ * the same E-step (for k = 2 the log-likelihood as
  * psum . C1 + sum log1p(exp(neg)), with R's plogis formulation when exp
  * overflows in any start of the evaluation; otherwise a log-sum-exp), the
  * same SQUAREM acceleration (Varadhan & Roland 2008, scheme S3, on the
@@ -21,17 +26,19 @@
  * What differs is rounding only, for speed: the E-step is one pass over the
  * points fused with the next M-step's sums; for k = 2 sum log1p(exp(neg)) is
  * the log of a running product. Plain C with libm's exp(). An EM step agrees
- * with the R version to about 1e-11; SQUAREM's step length divides by a
- * second difference that near the optimum is mostly rounding, so on a
- * crawling cloud the two may stop some iterations apart
- * (tests/testthat/test-gmm.R). Sums over points are plain double sums in
- * point order.
+ * with the R version to about 1e-11 (for d = 3 and 4 the fits of the test
+ * clouds to about 1e-13); SQUAREM's step length divides by a second
+ * difference that near the optimum is mostly rounding, so on a crawling
+ * cloud the two may stop some iterations apart (tests/testthat/test-gmm.R).
+ * Sums over points are plain double sums in point order.
  *
  * Entry points:
  *   hm_gmm_em(P, state, k, max_iter, tol, logdet0)
- *     P: n x nm monomials of the standardised data (nm = 3 for d = 1, 6 for
- *     d = 2); state: the starting sufficient statistics, nm rows and, per
- *     start, one column (k = 2: the first component's) or k columns.
+ *     P: n x nm monomials of the standardised data, nm = 1 + d + d (d + 1) / 2
+ *     (1, y_a, then y_a y_b for a <= b, a-major: gmm_design()); state: the
+ *     starting sufficient statistics, nm rows and, per start, one column
+ *     (k = 2: the first component's) or k columns. Every argument is
+ *     checked (types, lengths, finiteness): a bad call is an R error.
  *     Returns list(status, iterations, converged, loglik, bad, weights, mu,
  *     sigma): status 0 = stopped with parameters (converged or at max_iter),
  *     1 = failed (bad = first degenerate component, 0 = non-finite
@@ -62,14 +69,92 @@ static double hm_log1pexp(double x) {
   return x + exp(-x);
 }
 
+/* Cholesky factor R (upper triangular, S = R'R, d x d column-major, the
+ * lower triangle zero) of the symmetric S; 0 when a pivot is not positive
+ * (or NaN), as LAPACK's dpotrf behind chol() fails. */
+static int chol_upper(int d, const double *S, double *R) {
+  for (int q = 0; q < d * d; q++) R[q] = 0.0;
+  for (int j = 0; j < d; j++) {
+    double piv = S[j + (size_t) j * d];
+    for (int c = 0; c < j; c++) piv -= R[c + (size_t) j * d] * R[c + (size_t) j * d];
+    if (!(piv > 0.0)) return 0;
+    double rjj = sqrt(piv);
+    R[j + (size_t) j * d] = rjj;
+    for (int i = j + 1; i < d; i++) {
+      double v = S[j + (size_t) i * d];
+      for (int c = 0; c < j; c++) v -= R[c + (size_t) j * d] * R[c + (size_t) i * d];
+      R[j + (size_t) i * d] = v / rjj;
+    }
+  }
+  return 1;
+}
+
+/* The M-step of one component for d > 2, as gmm_mstep_general() in the test
+ * reference: the mean mu = s_y / nk, the covariance S = s_yy / nk - mu mu'
+ * (into sig, d x d column-major), its Cholesky factor S = R'R (as chol();
+ * a pivot that is not positive, or NaN, means the component is degenerate),
+ * A = S^-1 from R^-1 (as chol2inv()), and the log-density coefficients
+ * -0.5 (y'Ay - 2 mu'Ay + mu'A mu) in the monomial basis: C[0] = -0.5 mu'A mu,
+ * C[1 + a] = (A mu)_a, C[pair (a, b)] = -0.5 A_aa on the diagonal, -A_ab off
+ * it. Returns log det S, or -Inf when nk < 1 or S is not positive definite
+ * (C is then left at zero and not used). `work`: 2 d^2 doubles. */
+static double mstep_general(int d, const double *s, double nk, double *C, double *mu,
+                            double *sig, double *work) {
+  const int nm = 1 + d + d * (d + 1) / 2;
+  double *R = work, *Ri = work + (size_t) d * d;
+  for (int a = 0; a < d; a++) mu[a] = s[1 + a] / nk;
+  int m = 1 + d;
+  for (int a = 0; a < d; a++)
+    for (int b = a; b < d; b++) {
+      double v = s[m++] / nk - mu[a] * mu[b];
+      sig[a + (size_t) b * d] = v;
+      sig[b + (size_t) a * d] = v;
+    }
+  for (int q = 0; q < nm; q++) C[q] = 0.0;
+  if (!(nk >= 1) || !chol_upper(d, sig, R)) return R_NegInf;
+  double logdet = 0.0;
+  for (int a = 0; a < d; a++) logdet += log(R[a + (size_t) a * d]);
+  logdet *= 2.0;
+  /* Ri = R^-1 (upper triangular), by back substitution column by column */
+  for (int q = 0; q < d * d; q++) Ri[q] = 0.0;
+  for (int b = 0; b < d; b++) {
+    Ri[b + (size_t) b * d] = 1.0 / R[b + (size_t) b * d];
+    for (int a = b - 1; a >= 0; a--) {
+      double acc = 0.0;
+      for (int c = a + 1; c <= b; c++) acc += R[a + (size_t) c * d] * Ri[c + (size_t) b * d];
+      Ri[a + (size_t) b * d] = -acc / R[a + (size_t) a * d];
+    }
+  }
+  /* A = Ri Ri' (symmetric; the upper triangle a <= b is what C needs), A mu
+   * and mu'A mu, with A_ab written into the coefficients directly */
+  double mAm = 0.0;
+  m = 1 + d;
+  for (int a = 0; a < d; a++)
+    for (int b = a; b < d; b++) {
+      double acc = 0.0;
+      for (int c = b; c < d; c++) acc += Ri[a + (size_t) c * d] * Ri[b + (size_t) c * d];
+      C[m++] = a == b ? -0.5 * acc : -acc;
+      C[1 + a] += acc * mu[b];
+      if (a != b) C[1 + b] += acc * mu[a];
+    }
+  for (int a = 0; a < d; a++) mAm += mu[a] * C[1 + a];
+  C[0] = -0.5 * mAm;
+  return logdet;
+}
+
 /* M-step of one component from its sufficient statistics s[0..nm-1]
  * (sums of the monomials weighted by the responsibilities): fills the
  * log-density coefficients C[0..nm-1], the constant, the parameters, and
- * returns 1 when the component is degenerate. Formulas as gmm_mstep(). */
+ * returns 1 when the component is degenerate. Formulas as gmm_mstep() in the
+ * test reference; `work` is scratch for 2 d^2 values (d > 2 only). */
 static int mstep_one(int d, const double *s, int n, double floor_logdet, double *C,
-                     double *cnst, double *w, double *mu, double *sig) {
+                     double *cnst, double *w, double *mu, double *sig, double *work) {
   double nk = s[0], logdet;
-  if (d == 1) {
+  if (d > 2) {
+    /* (d = 1 and 2 keep their closed forms below: the default models'
+     * fits depend on their exact rounding) */
+    logdet = mstep_general(d, s, nk, C, mu, sig, work);
+  } else if (d == 1) {
     double m = s[1] / nk;
     double v = s[2] / nk - m * m;
     logdet = log(v > 0 ? v : 0); /* log(pmax(v, 0)); NaN stays NaN */
@@ -154,7 +239,11 @@ static int starts_close(int k, int d, const double *wa, const double *mua, const
  * and nm = 6 so the inner loops unroll. */
 static inline double estep2(const double *Pt, int n, const int nm, const double *D,
                             double *s_next, int *inf) {
-  double s[6] = {0, 0, 0, 0, 0, 0};
+  /* d <= 2 (nm <= 6) sums in a local array the compiler keeps in registers
+   * (as fast as before d > 2 came to C); larger nm sum in place */
+  double local[6];
+  double *s = nm <= 6 ? local : s_next;
+  for (int m = 0; m < nm; m++) s[m] = 0.0;
   double prod = 1.0, logs = 0.0;
   int hit = 0;
   for (int i = 0; i < n; i++) {
@@ -175,16 +264,20 @@ static inline double estep2(const double *Pt, int n, const int nm, const double 
       logs += log1p(e);
     }
   }
-  for (int m = 0; m < nm; m++) s_next[m] = s[m];
+  if (s != s_next)
+    for (int m = 0; m < nm; m++) s_next[m] = s[m];
   *inf = hit;
   return logs + log(prod);
 }
 
-/* The E-step pass of one start (inlined with nm = 3 and nm = 6 so the
- * compiler unrolls and vectorises the inner loops). */
+/* The E-step pass of one start (inlined with nm = 3 and nm = 6, d = 1 and
+ * 2, so the compiler unrolls and vectorises the inner loops; any other nm
+ * takes the same code with nm a variable). */
 static double estep2_any(const double *Pt, int n, int nm, const double *D, double *s_next,
                          int *inf) {
-  return nm == 3 ? estep2(Pt, n, 3, D, s_next, inf) : estep2(Pt, n, 6, D, s_next, inf);
+  if (nm == 3) return estep2(Pt, n, 3, D, s_next, inf);
+  if (nm == 6) return estep2(Pt, n, 6, D, s_next, inf);
+  return estep2(Pt, n, nm, D, s_next, inf);
 }
 
 /* R's overflow-safe alternative: sum_i log1pexp(-neg_i), i.e.
@@ -207,6 +300,7 @@ typedef struct {
   const double *Pt, *psum;
   double floor_logdet;
   double *stats, *C, *cn, *Dc, *zk; /* scratch: nm*k, nm*k*S, k*S, nm*S, k */
+  double *work;                     /* 2 d^2: the M-step for d > 2 */
   int *inf_hit;                     /* S */
 } em_ctx;
 
@@ -232,7 +326,7 @@ static int mstep_start(const em_ctx *c, int a, const double *st, double *w, doub
     int b = mstep_one(d, c->stats + (size_t) j * nm, c->n, c->floor_logdet,
                       c->C + ((size_t) a * k + j) * nm, c->cn + (size_t) a * k + j,
                       w + (size_t) a * k + j, mu + ((size_t) a * k + j) * d,
-                      sig + ((size_t) a * k + j) * d * d);
+                      sig + ((size_t) a * k + j) * d * d, c->work);
     if (b && !bad) bad = j + 1;
   }
   return bad;
@@ -337,16 +431,21 @@ static double squarem_extrapolate(int ns, const double *s0, const double *s1, co
 SEXP hm_gmm_em(SEXP P_, SEXP state_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP logdet0_) {
   if (!isReal(P_) || !isMatrix(P_)) error("'P' must be a double matrix");
   if (!isReal(state_) || !isMatrix(state_)) error("'state' must be a double matrix");
+  if (LENGTH(k_) != 1 || LENGTH(max_iter_) != 1 || LENGTH(tol_) != 1 || LENGTH(logdet0_) != 1)
+    error("'k', 'max_iter', 'tol' and 'logdet0' must be single values");
   const int n = nrows(P_), nm = ncols(P_);
   const int k = asInteger(k_), max_iter = asInteger(max_iter_);
   const double tol = asReal(tol_), logdet0 = asReal(logdet0_);
-  int d;
-  if (nm == 3) d = 1;
-  else if (nm == 6) d = 2;
-  else error("the compiled EM handles d = 1 and d = 2 only (got %d monomials)", nm);
-  if (n < 1 || k < 1 || k == NA_INTEGER || max_iter < 1 || max_iter == NA_INTEGER)
-    error("'P', 'k' and 'max_iter' must be positive");
-  if (ISNAN(tol) || ISNAN(logdet0)) error("'tol' and 'logdet0' must be numbers");
+  /* nm = 1 + d + d (d + 1) / 2 monomials (gmm_design()) */
+  int d = 1;
+  while (1 + d + d * (d + 1) / 2 < nm) d++;
+  if (1 + d + d * (d + 1) / 2 != nm)
+    error("'P' has %d columns, not 1 + d + d (d + 1) / 2 monomials for any d", nm);
+  if (n < 1 || k == NA_INTEGER || k < 1 || k > n || max_iter == NA_INTEGER || max_iter < 1)
+    error("'P' must have rows, 'k' must be in 1..nrow(P) and 'max_iter' positive");
+  if (ISNAN(tol) || !R_FINITE(logdet0)) error("'tol' and 'logdet0' must be numbers");
+  for (R_xlen_t q = 0; q < XLENGTH(P_); q++)
+    if (!R_FINITE(REAL(P_)[q])) error("'P' must be finite");
   const double *P = REAL(P_);
   const int two = (k == 2);
   const int ns = nm * (two ? 1 : k); /* state values per start */
@@ -382,6 +481,7 @@ SEXP hm_gmm_em(SEXP P_, SEXP state_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP lo
   c.cn = (double *) R_alloc((size_t) k * S, sizeof(double));
   c.Dc = (double *) R_alloc((size_t) nm * S, sizeof(double));
   c.zk = (double *) R_alloc(k, sizeof(double));
+  c.work = (double *) R_alloc((size_t) 2 * d * d, sizeof(double));
   c.inf_hit = (int *) R_alloc(S, sizeof(int));
 
   /* states: s0 (the cycle's start), s1, s2 (after one and two EM steps), sx
@@ -531,6 +631,7 @@ SEXP hm_gmm_em(SEXP P_, SEXP state_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP lo
 SEXP hm_gmm_kmeans(SEXP Y_, SEXP centres_, SEXP iters_) {
   if (!isReal(Y_) || !isMatrix(Y_)) error("'Y' must be a double matrix");
   if (!isNewList(centres_)) error("'centres' must be a list");
+  if (LENGTH(iters_) != 1) error("'iters' must be a single value");
   const int n = nrows(Y_), d = ncols(Y_), S = LENGTH(centres_), iters = asInteger(iters_);
   const double *Y = REAL(Y_);
   SEXP out = PROTECT(allocMatrix(INTSXP, n, S));

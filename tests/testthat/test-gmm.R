@@ -215,14 +215,16 @@ em_both <- function(X, k, max_iter = 2000L, tol = 1e-8) {
   design <- gmm_design(Y)
   logdet0 <- determinant(crossprod(Y) / n)$modulus[1]
   starts <- gmm_starts(Y, k, 1)
-  list(c = gmm_em_batch_c(design, starts, k, max_iter, tol, logdet0),
+  list(c = gmm_em_batch(design, starts, k, max_iter, tol, logdet0),
        r = gmm_em_batch_r(design, starts, k, max_iter, tol, logdet0))
 }
 
 # Both engines' runs agree start by start: the same failures, and the same
 # fit for every start that did not fail; `converged` is how many starts
 # must have converged (so the comparison of fits is never empty).
-expect_same_runs <- function(runs, converged = 1L) {
+# `exact = TRUE` (clouds that converge briskly): the same iterations, and
+# the parameters to 1e-8 as well.
+expect_same_runs <- function(runs, converged = 1L, exact = FALSE) {
   expect_equal(length(runs$c), length(runs$r))
   for (a in seq_along(runs$r)) {
     rc <- runs$c[[a]]
@@ -232,18 +234,32 @@ expect_same_runs <- function(runs, converged = 1L) {
     # divides by a second difference that near the optimum is mostly
     # rounding: on a crawling cloud the two may stop (or merge) some
     # iterations apart, both at the tolerance's distance from the optimum.
-    expect_lte(abs(rc$iterations - rr$iterations), max(1, 0.1 * rr$iterations))
+    if (exact) expect_identical(rc$iterations, rr$iterations)
+    else expect_lte(abs(rc$iterations - rr$iterations), max(1, 0.1 * rr$iterations))
   }
   ok <- which(vapply(runs$r, function(r) is.null(r$failed), logical(1)))
   expect_gte(length(ok), converged)
   for (a in ok) {
     rc <- runs$c[[a]]
     rr <- runs$r[[a]]
+    tol_par <- if (exact) 1e-8 else 1e-4
     expect_equal(rc$loglik, rr$loglik, tolerance = 1e-8)
-    expect_equal(rc$weights, rr$weights, tolerance = 1e-4)
-    expect_equal(rc$mu, rr$mu, tolerance = 1e-4)
-    expect_equal(rc$sigma, rr$sigma, tolerance = 1e-4)
+    expect_equal(rc$weights, rr$weights, tolerance = tol_par)
+    expect_equal(rc$mu, rr$mu, tolerance = tol_par)
+    expect_equal(rc$sigma, rr$sigma, tolerance = tol_par)
   }
+}
+
+# k planted Gaussian groups in d dimensions: group g > 1 shifted along
+# coordinate (g - 2) %% d + 1, by 4 for the first d groups, 8 for the next
+# d, ..., so that every group is apart from the others.
+planted_groups <- function(seed, n, d, k) {
+  withr::with_seed(seed, {
+    grp <- rep(seq_len(k), length.out = n)
+    shift <- matrix(0, k, d)
+    for (g in seq_len(k)[-1]) shift[g, (g - 2L) %% d + 1L] <- 4 * (1 + (g - 2L) %/% d)
+    matrix(rnorm(n * d), n) + shift[grp, , drop = FALSE]
+  })
 }
 
 test_that("the compiled EM reproduces the R implementation start by start", {
@@ -276,10 +292,58 @@ test_that("the compiled EM reproduces the R implementation start by start", {
   }
 })
 
+test_that("the compiled EM reproduces the R transcription for d = 1..4 and k = 1..3", {
+  # every dimension runs the one compiled EM; the R transcription in the
+  # helper is the reference: on separated groups the same iterations, the
+  # same failures and merges, and the fits to 1e-8
+  for (d in 1:4) {
+    for (k in 1:3) {
+      runs <- em_both(planted_groups(10 * d + k, 240, d, k), k)
+      expect_same_runs(runs, exact = TRUE)
+    }
+  }
+})
+
+test_that("a planted three-dimensional mixture is recovered", {
+  X <- planted_mixture(31, 600, 0.6, c(4, -3, 2), S2 = matrix(c(1, 0.3, 0, 0.3, 1, 0.2, 0, 0.2, 0.5), 3))
+  fit <- gmm_fit(X)
+  expect_false(fit$fallback)
+  expect_equal(fit$weights, c(0.6, 0.4), tolerance = 0.05)
+  expect_equal(unname(fit$means[1, ]), c(0, 0, 0), tolerance = 0.15)
+  expect_equal(unname(fit$means[2, ]), c(4, -3, 2), tolerance = 0.05)
+  expect_equal(unname(fit$covs[, , 2]), matrix(c(1, 0.3, 0, 0.3, 1, 0.2, 0, 0.2, 0.5), 3),
+               tolerance = 0.3)
+})
+
+test_that("the compiled EM's entry point rejects bad input instead of crashing", {
+  Y <- planted_groups(1, 50, 3, 2)
+  design <- gmm_design(Y)
+  state <- gmm_start_state(design, list(rep(1:2, 25)), 2L)
+  em <- function(P = design$P, st = state, k = 2L, max_iter = 10L, tol = 1e-8, logdet0 = 0) {
+    .Call(hm_gmm_em, P, st, k, max_iter, tol, logdet0)
+  }
+  expect_type(em(), "list")
+  expect_error(em(P = design$P[, -1]), "monomials")
+  expect_error(em(P = "a"), "double matrix")
+  expect_error(em(P = as.vector(design$P)), "double matrix")
+  expect_error(em(st = state[-1, , drop = FALSE]), "rows")
+  expect_error(em(st = state * NA), "finite")
+  expect_error(em(k = NA_integer_), "'k'")
+  expect_error(em(k = 51L), "'k'")
+  expect_error(em(k = 1:2), "single")
+  expect_error(em(max_iter = 0L), "max_iter")
+  expect_error(em(tol = NaN), "numbers")
+  bad <- design$P
+  bad[3, 2] <- Inf
+  expect_error(em(P = bad), "finite")
+})
+
 test_that("gmm_fit gives the same fits with the compiled and the R EM", {
   sets <- list(planted_mixture(12, 60, 0.5, c(-3, 3), S1 = matrix(c(2, -0.8, -0.8, 1), 2)),
                planted_mixture(23, 80, 0.6, 4, S2 = matrix(4)),
-               planted_mixture(5, 300, 0.6, c(1.2, 1.2)))
+               planted_mixture(5, 300, 0.6, c(1.2, 1.2)),
+               planted_mixture(7, 200, 0.5, c(2, 1, 1)),
+               planted_mixture(8, 1200, 0.5, c(2, 2, 0, 1)))  # d = 4 above gmm_start_points
   for (X in sets) {
     fc <- gmm_fit(X, max_iter = 5000)
     fr <- local({
