@@ -343,7 +343,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call, phases = NULL) {
     degenerate_data = model_degeneracies(list(fallbacks = fallbacks, dofs = dofs, settings = settings,
                                               stuck = stuck_channels(x),
                                               warp = list(constant = isTRUE(warp_fit$constant))),
-                                         x$meta$n_frames),
+                                         stats::setNames(x$meta$n_frames, x$meta$id)),
     # the alignment as the aligner returned it (warped curves, warping
     # functions, frame counts, degenerate warps): the model's data, kept once
     alignment = if (isTRUE(settings$keep_data)) aln
@@ -753,6 +753,7 @@ print.grasp_model <- function(x, ...) {
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
 #' summary(fit_grasp_model(g, seed = 1))
 summary.grasp_model <- function(object, ...) {
+  check_grasp_model(object, "object", "be summarised")
   ve <- 100 * model_var_explained(object)
   mix <- vapply(object$gmm, function(g) {
     if (isTRUE(g$point_mass)) "point mass" else if (isTRUE(g$fallback)) "single Gaussian" else "mixture"

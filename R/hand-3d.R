@@ -174,6 +174,7 @@ hand_3d_inputs <- function(x, recording, rate, call) {
     list(list(angles = m, unit = NULL, rate = r, label = label))
   }
   hands <- if (inherits(x, "grasps")) {
+    check_grasps(x, call = call)
     from_grasps(x, pick = recording)
   } else if (is.matrix(x)) {
     from_matrix(x, "recording")

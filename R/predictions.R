@@ -124,14 +124,17 @@ predict.grasp_recognizer <- function(object, new_data, type = c("class", "prob",
 
 # The one predict() of every classifier: its distances, then the answer of
 # the type asked for.
-predict_classifier <- function(object, new_data, type, dots, call, seen = NULL) {
+predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, arg = "object") {
   if (length(dots)) {
     hm_abort(c("{.fn predict} takes a classifier, {.arg new_data} and {.arg type}; unknown argument{?s} {.arg {names(dots) %||% rep('', length(dots))}}.",
                i = "See {.help handmotion::predict.grasp_models}."),
              "bad_input", argument = "...", call = call)
   }
   type <- check_choice(type, c("class", "prob", "distance"), arg = "type", call = call)
-  check_grasps(new_data, arg = "new_data", call = call)
+  check_fitted_parts(object, arg, call = call)
+  check_grasps(new_data, arg = "new_data", call = call, finite = FALSE)
+  check_not_empty(new_data, "new_data", "classify", call = call)
+  warn_short_recordings(new_data, "new_data", action = "classified")
   res <- finite_distances(object, new_data, call, seen)
   d <- res$distances
   reasons <- unclassified_reasons(d, new_data)
@@ -149,6 +152,10 @@ predict_classifier <- function(object, new_data, type, dots, call, seen = NULL) 
 finite_distances <- function(object, x, call, seen) {
   finite <- vapply(x$recordings, function(r) all(is.finite(r)), logical(1))
   if (all(finite)) return(classifier_distances(object, x, call = call, seen = seen))
+  bad <- x$meta$id[!finite]
+  hm_warn(c("{.arg new_data} has {length(bad)} recording{?s} with missing or infinite values, not classified: {.val {bad}}.",
+            i = "Their predictions are {.val NA}; see {.code attr(, \"reasons\")}."),
+          "non_finite", recording = bad)
   classes <- classifier_classes(object)
   d <- matrix(NA_real_, length(finite), length(classes), dimnames = list(x$meta$id, classes))
   if (!any(finite)) return(list(distances = d, target_length = NULL, failures = no_failures()))

@@ -148,7 +148,10 @@ simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 
   rest <- check_number(rest, "rest", min = 0, max = 60, call = call)
   hold <- check_number(hold, "hold", min = 0, max = 60, call = call)
   session_sd <- check_number(session_sd, "session_sd", min = 0, max = 1e6, call = call)
-  glove <- glove_profile(glove %||% "hust")
+  glove <- tryCatch(glove_profile(glove %||% "hust"), handmotion_error_bad_glove = function(e) {
+    # (glove_profile() names its own argument, x)
+    hm_abort("{.arg glove} is not a usable glove profile.", "bad_glove", argument = "glove", parent = e, call = call)
+  })
   if (length(stuck) && !all(stuck %in% glove$channels$channel)) {
     hm_abort("{.arg stuck} names {.val {setdiff(stuck, glove$channels$channel)}}, not channels of the glove.",
              "bad_input", argument = "stuck", call = call)
