@@ -131,7 +131,7 @@ generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = 1, warp = TRUE,
   call <- rlang::caller_env()
   check_dots_for(list(...), generate.grasp_models, "generate", call = call)
   phases <- check_flag(phases, "phases", call = call)
-  check_grasp_models(x, "x", "generate", call = call)
+  check_grasp_models(x, "x", "generate", each = FALSE, call = call)  # (each model: validate_sampler())
   generate_models(select_models(x, grasp, call), n, seed, warp, limits, chunk, callback, call = call,
                   phases = phases)
 }

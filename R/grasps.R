@@ -322,27 +322,28 @@ validate_grasps <- function(x, arg = "x", call = rlang::caller_env(), finite = T
     dup <- if (is.character(ids)) unique(ids[duplicated(ids) | is.na(ids)]) else character()
     fault(paste0("recording ids ({.field meta$id}) must be unique strings", if (length(dup)) "; repeated or missing: {.val {dup}}." else "."))
   }
-  # one pass per recording (a closure call each dominates the cost): frames,
-  # columns, whether the columns are the DoFs, whether every value is finite
-  # (a sum is NaN or infinite when any value is; an overflowing sum is
-  # checked value by value below)
-  info <- vapply(recs, function(r) {
-    if (!is.matrix(r) || !is.numeric(r)) return(c(NA, NA, 0, 0))
-    d <- dim(r)
-    c(d[1L], d[2L], identical(dimnames(r)[[2L]], dofs), is.finite(sum(r)))
-  }, numeric(4))
+  # builtins mapped over the recordings (a closure call per recording would
+  # cost more than all the checks): numeric matrices, their dimensions and
+  # column names, and their sums (NaN or infinite when any value is; an
+  # overflowing sum is checked value by value below)
+  is_mat <- vapply(recs, is.matrix, NA) & vapply(recs, is.numeric, NA)
   shape <- function(test, what) {
     i <- which(test)
     first <- ids[i[1]]
     more <- if (length(i) > 1L) sprintf(" (and %d more)", length(i) - 1L) else ""
     if (length(i)) fault(paste0("recording {.val {first}}", more, " ", what, "."), "bad_recording", recording = first)
   }
-  shape(is.na(info[1, ]), "is not a numeric matrix")
-  shape(info[1, ] == 0, "has no frames")
-  shape(info[2, ] != length(dofs), "does not have one column per DoF ({length(dofs)})")
-  shape(info[3, ] == 0, "has columns other than {.field dofs}")
-  if (!is.null(meta$n_frames)) shape(is.na(meta$n_frames) | meta$n_frames != info[1, ], "has a {.field meta$n_frames} other than its frame count")
-  suspect <- which(info[4, ] == 0 & finite)
+  shape(!is_mat, "is not a numeric matrix")
+  dims <- matrix(vapply(recs, dim, integer(2)), nrow = 2L)
+  shape(dims[1, ] == 0L, "has no frames")
+  shape(dims[2, ] != length(dofs), "does not have one column per DoF ({length(dofs)})")
+  cols <- lapply(lapply(recs, dimnames), `[[`, 2L)
+  if (length(cols) && !identical(unique(cols), list(dofs))) {
+    shape(!vapply(cols, identical, NA, dofs), "has columns other than {.field dofs}")
+  }
+  if (!is.null(meta$n_frames)) shape(is.na(meta$n_frames) | meta$n_frames != dims[1, ], "has a {.field meta$n_frames} other than its frame count")
+  sums_finite <- is.finite(vapply(recs, sum, numeric(1), USE.NAMES = FALSE))
+  suspect <- which(!sums_finite & finite)
   ok <- rep(TRUE, length(recs))
   ok[suspect] <- vapply(recs[suspect], function(r) all(is.finite(r)), logical(1))
   if (!all(ok)) {

@@ -69,7 +69,7 @@ check_grasp_model <- function(model, arg, action, call = rlang::caller_env()) {
 # A grasp_models set: only models and failed types, named by their types,
 # with (when set) a positive temperature; every fitted model
 # checked as above.
-check_grasp_models <- function(x, arg, action, call = rlang::caller_env()) {
+check_grasp_models <- function(x, arg, action, each = TRUE, call = rlang::caller_env()) {
   bad <- function(what) {
     hm_abort(c(paste0("{.arg {arg}} is not a valid {.cls grasp_models} set: ", what, "."),
                i = "Was it changed after fitting? Refit it with {.fn fit_grasp_models}."),
@@ -88,7 +88,7 @@ check_grasp_models <- function(x, arg, action, call = rlang::caller_env()) {
   if (!is.null(temp) && (!is.numeric(temp) || length(temp) != 1L || !is.finite(temp) || temp <= 0)) {
     bad("its attribute {.field temperature} is not a positive number")
   }
-  for (e in m[vapply(m, inherits, logical(1), "grasp_model")]) check_grasp_model(e, arg, action, call)
+  if (each) for (e in m[vapply(m, inherits, logical(1), "grasp_model")]) check_grasp_model(e, arg, action, call)
   invisible(x)
 }
 
@@ -144,6 +144,6 @@ check_fitted_parts <- function(object, arg, call = rlang::caller_env()) {
   }
   part <- nonfinite_part(unclass(object)[setdiff(names(object), "models")], arg)
   if (!is.null(part)) bad("{.code {part}} holds missing or infinite values")
-  if (inherits(object$models, "grasp_models")) check_grasp_models(object$models, paste0(arg, "$models"), "classify", call)
+  if (inherits(object$models, "grasp_models")) check_grasp_models(object$models, paste0(arg, "$models"), "classify", call = call)
   invisible(object)
 }

@@ -124,7 +124,9 @@ predict.grasp_recognizer <- function(object, new_data, type = c("class", "prob",
 
 # The one predict() of every classifier: its distances, then the answer of
 # the type asked for.
-predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, arg = "object") {
+# `arg`: the argument name of the classifier (classify() calls it `models`);
+# `checked`: new_data was validated by the caller already (one pass, not two).
+predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, arg = "object", checked = FALSE) {
   if (length(dots)) {
     hm_abort(c("{.fn predict} takes a classifier, {.arg new_data} and {.arg type}; unknown argument{?s} {.arg {names(dots) %||% rep('', length(dots))}}.",
                i = "See {.help handmotion::predict.grasp_models}."),
@@ -132,9 +134,11 @@ predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, 
   }
   type <- check_choice(type, c("class", "prob", "distance"), arg = "type", call = call)
   check_fitted_parts(object, arg, call = call)
-  check_grasps(new_data, arg = "new_data", call = call, finite = FALSE)
-  check_not_empty(new_data, "new_data", "classify", call = call)
-  warn_short_recordings(new_data, "new_data", action = "classified")
+  if (!checked) {
+    check_grasps(new_data, arg = "new_data", call = call, finite = FALSE)
+    check_not_empty(new_data, "new_data", "classify", call = call)
+    warn_short_recordings(new_data, "new_data", action = "classified")
+  }
   res <- finite_distances(object, new_data, call, seen)
   d <- res$distances
   reasons <- unclassified_reasons(d, new_data)

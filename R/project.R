@@ -79,7 +79,7 @@ project.grasp_models <- function(object, new_data, details = FALSE, ...) {
   check_grasps(new_data, "new_data", call = call)
   check_not_empty(new_data, "new_data", "project", call = call)
   warn_short_recordings(new_data, "new_data", action = "projected")
-  check_grasp_models(object, "object", "project", call = call)
+  check_grasp_models(object, "object", "project", each = FALSE, call = call)
   project_models(object, new_data, "object", details = details, call = call)
 }
 
