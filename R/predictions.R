@@ -56,6 +56,12 @@
 #' class: a recording holding non-finite values, or no model could project
 #' it) come back as `NA` (class and every probability) with the reason in
 #' the attribute `reasons`: a character vector named by recording id.
+#' Recordings holding non-finite values (put in after [grasps()] built the
+#' set, which refuses them) are named by a warning of class
+#' `handmotion_warning_non_finite`; recordings of fewer than three frames
+#' are classified with a warning of class
+#' `handmotion_warning_short_recordings`. A classifier whose parts were
+#' changed after fitting is refused (`handmotion_error_bad_model`).
 #'
 #' @param object A fitted classifier.
 #' @param new_data A [grasps()] object with the DoFs the classifier was
