@@ -160,7 +160,10 @@ predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, 
 # with a NaN or an infinite value has none (NA), so one bad recording does
 # not stop the others.
 finite_distances <- function(object, x, call, seen) {
-  finite <- vapply(x$recordings, function(r) all(is.finite(r)), logical(1))
+  # a sum per recording (a builtin) is finite when every value is; only the
+  # others are read value by value
+  finite <- is.finite(vapply(x$recordings, sum, numeric(1), USE.NAMES = FALSE))
+  finite[!finite] <- vapply(x$recordings[!finite], function(r) all(is.finite(r)), logical(1))
   if (all(finite)) return(classifier_distances(object, x, call = call, seen = seen))
   bad <- x$meta$id[!finite]
   hm_warn(c("{.arg new_data} has {length(bad)} recording{?s} with missing or infinite values, not classified: {.val {bad}}.",
