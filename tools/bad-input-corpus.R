@@ -435,6 +435,45 @@ corpus_cases <- function(e) {
     add("wrong class", sprintf("read_bvh of %s", wn), bquote(read_bvh(.(w))), c("file", "class", "<"))
     add("wrong class", sprintf("read_hust of %s", wn), bquote(read_hust(.(w))), c("path", "class", "<"))
   }
+  # --- numeric and choice arguments across the verbs ------------------------
+  nums <- list(
+    "find_motion: high" = list(quote(find_motion(g, high = BAD)), "high"),
+    "find_motion: smooth" = list(quote(find_motion(g, smooth = BAD)), "smooth"),
+    "cut_motion: min_motion" = list(quote(cut_motion(g, min_motion = BAD)), "min_motion"),
+    "trim_motion: low" = list(quote(trim_motion(g, low = BAD)), "low"),
+    "fit_grasp_recognizer: at" = list(quote(fit_grasp_recognizer(g, at = BAD)), "at"),
+    "fit_grasp_recognizer: horizon" = list(quote(fit_grasp_recognizer(g, horizon = BAD)), "horizon"),
+    "fit_handover: ncomp" = list(quote(fit_handover(g, markers = 3, ncomp = BAD)), "ncomp"),
+    "fit_handover: filter_size" = list(quote(fit_handover(g, markers = 3, filter_size = BAD)), "filter_size"),
+    "hand_3d: speed" = list(quote(hand_3d(g[1], speed = BAD)), "speed"),
+    "hand_3d: width" = list(quote(hand_3d(g[1], width = BAD)), "width"),
+    "write_hand_animation: max_frames" = list(quote(write_hand_animation(g[1], tempfile(fileext = ".html"), max_frames = BAD)), "max_frames"),
+    "write_graspdb14: start_time" = list(quote(write_graspdb14(g, tempfile("d"), start_time = BAD)), c("start_time", "\\bx\\b")),
+    "evaluate_generation: n" = list(quote(evaluate_generation(ms, g, g, n = BAD)), "\\bn\\b"),
+    "simulate_grasps: rest" = list(quote(simulate_grasps(rest = BAD)), "rest"),
+    "simulate_grasps: session_sd" = list(quote(simulate_grasps(session_sd = BAD)), "session_sd"),
+    "generate: chunk" = list(quote(generate(m, n = 2, chunk = BAD)), "chunk"),
+    "reproduce_thesis: subjects" = list(quote(reproduce_thesis(tempfile("t"), subjects = BAD)), "subjects")
+  )
+  for (nn in names(nums)) for (v in list(-1, NaN, "a", c(1, 2))) {
+    vd <- paste(deparse(v), collapse = "")
+    add("argument", sprintf("%s = %s", nn, vd), do.call(substitute, list(nums[[nn]][[1]], list(BAD = v))), nums[[nn]][[2]])
+  }
+  add("malformed file", "glove_profile: CSV with a text scale", quote(glove_profile(put("glove2.csv", c("channel,scale", "a,big")))), c("glove2.csv", "scale"))
+  add("malformed file", "glove_profile: CSV with repeated channels", quote(glove_profile(put("glove3.csv", c("channel", "a", "a")))), c("glove3.csv", "channel", "\\ba\\b"))
+  add("malformed file", "glove_profile: missing CSV", quote(glove_profile("no-such-glove.csv")), c("no-such-glove.csv", "\\bx\\b"))
+  add("malformed file", "glove_profile: binary CSV", quote({writeBin(as.raw(0:255), "glove4.csv"); glove_profile("glove4.csv")}), c("glove4.csv", "\\bx\\b"))
+  add("argument", "calibrate: poses of unknown names", quote(calibrate(raw, poses = list(wave = raw$recordings[[1]]))), c("poses", "wave"))
+  add("argument", "calibrate: pose with NaN", quote(calibrate(raw, poses = list(flat = {r <- raw$recordings[[1]]; r[1, 1] <- NaN; r}))), c("poses", "flat"))
+  add("argument", "calibrate: recordings in degrees", quote(calibrate(g)), c("\\bx\\b", "raw"))
+  add("argument", "handover_error: sets of text", quote(handover_error(g, by = "markers", reference = g, sets = "a")), "sets")
+  add("argument", "select_markers: unknown method", quote(select_markers(mk, 3, method = "best")), "method")
+  add("argument", "joint_map: unknown source", quote(joint_map("cyberglove99")), "source")
+  add("argument", "segment_by_switch: unknown keep", quote(segment_by_switch(g, keep = "both")), "keep")
+  add("argument", "thesis_table: unknown id", quote(thesis_table("9.9")), "\\bid\\b")
+  add("argument", "evaluate_early_recognition: fractions above 1", quote(evaluate_early_recognition(g, fractions = 2)), "fractions")
+  add("argument", "grasps: meta of another length", quote(grasps(g$recordings, meta = g$meta[1:3, ])), "meta")
+  add("argument", "grasps: glove of other channels", quote(grasps(g$recordings, meta = g$meta, glove = "resistive")), c("glove", "channel"))
   add("wrong class", "simulate on recordings", quote(stats::simulate(g)), c("object", "class", "<"))
   add("wrong class", "read_skeleton of two files", quote(read_skeleton(c("good.xmlskel", "good.xmlskel"))), "file")
   add("wrong class", "read_bvh of two files", quote(read_bvh(c("good.bvh", "good.bvh"))), "file")

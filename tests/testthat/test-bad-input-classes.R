@@ -261,3 +261,15 @@ test_that("the package's generics name the argument and the class they were give
   cnd <- expect_error(simulate_grasps(glove = 42), "glove", class = "handmotion_error_bad_glove")
   expect_identical(cnd$argument, "glove")
 })
+
+test_that("arguments that were checked only on some paths are checked on all", {
+  g <- bad_fixture()$g
+  # (a plain simulation returned before looking at rest, hold and session_sd)
+  expect_error(simulate_grasps(subjects = 1, grasps = 1, rest = NaN), "rest", class = "handmotion_error_bad_input")
+  expect_error(simulate_grasps(subjects = 1, grasps = 1, session_sd = -1), "session_sd", class = "handmotion_error_bad_input")
+  for (w in list(-1, NaN, "a", c(1, 2))) {
+    cnd <- expect_error(hand_3d(g[1], width = w), "width", class = "handmotion_error_bad_input")
+    expect_identical(cnd$argument, "width")
+  }
+  expect_s3_class(hand_3d(g[1], width = "100%", height = 300), "htmlwidget")
+})
