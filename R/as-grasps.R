@@ -44,7 +44,7 @@ as_grasps.matrix <- function(x, ...) {
 #' @rdname as_grasps
 #' @export
 as_grasps.list <- function(x, meta = NULL, dofs = NULL, rate = 50, unit = "deg", ...) {
-  if (is.null(dofs)) {
+  if (is.null(dofs) && length(x)) {
     first <- x[[1]]
     if (is.matrix(first) && is.null(colnames(first)) && ncol(first) == 16L) dofs <- handmotion::hust_dofs$name
   }

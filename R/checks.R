@@ -202,3 +202,62 @@ describe_value <- function(x) {
   if (is.matrix(x)) return(sprintf("a %d x %d %s matrix", nrow(x), ncol(x), typeof(x)))
   paste0("an object of class <", paste(class(x), collapse = "/"), ">")
 }
+
+# One regular expression that compiles (`perl` as the caller will use it),
+# or NULL with `allow_null`: an invalid one (an unclosed bracket) would
+# otherwise fail in base R with "invalid regular expression", naming no
+# argument.
+check_regex <- function(x, arg, perl = FALSE, allow_null = FALSE, call = rlang::caller_env()) {
+  if (is.null(x) && allow_null) return(NULL)
+  if (!is.character(x) || length(x) != 1L || is.na(x)) {
+    hm_abort("{.arg {arg}} must be one regular expression, not {describe_value(x)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  problem <- tryCatch({
+    suppressWarnings(grepl(x, "", perl = perl))
+    NULL
+  }, error = function(e) conditionMessage(e))
+  if (!is.null(problem)) {
+    hm_abort(c("{.arg {arg}} is not a valid regular expression: {.val {x}}.",
+               i = "{if (perl) 'A Perl-style' else 'An extended'} regular expression; see {.help base::regex}."),
+             "bad_input", argument = arg, call = call)
+  }
+  x
+}
+
+# A field separator: one character, or NA (`allow_na`, detect it).
+check_sep <- function(sep, arg = "sep", allow_na = TRUE, call = rlang::caller_env()) {
+  if (allow_na && length(sep) == 1L && is.na(sep)) return(NA)
+  if (!is.character(sep) || length(sep) != 1L || is.na(sep) || nchar(sep) != 1L || sep %in% c("\n", "\r", "\"")) {
+    hm_abort("{.arg {arg}} must be one character such as {.val ,} or {.val ;}{if (allow_na) ' (or NA to detect it)' else ''}, not {describe_value(sep)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  sep
+}
+
+# One recording of the grasps set `x` picked by index (a whole number from
+# 1 to length(x)) or id; returns its index. A fractional index (2.5) used to
+# be truncated silently, TRUE taken as 1.
+check_recording_pick <- function(recording, x, arg = "recording", call = rlang::caller_env()) {
+  idx <- if (is.character(recording) && length(recording) == 1L) match(recording, x$meta$id) else recording
+  if (!is.numeric(idx) || length(idx) != 1L || is.na(idx) || idx != round(idx) || idx < 1 || idx > length(x)) {
+    hm_abort("{.arg {arg}} must pick one of the {length(x)} recording{?s} by index or id, not {describe_value(recording)}.",
+             "bad_input", argument = arg, call = call)
+  }
+  as.integer(idx)
+}
+
+# Numeric subscripts of a set of `n` `what`s (`[` methods): whole numbers,
+# all positive (1..n) or all negative (dropping -1..-n), no NA. R's own
+# subsetting truncates 2.5 to 2 and ignores -99 without a word.
+check_positions <- function(i, n, what, call = rlang::caller_env()) {
+  if (!is.numeric(i) || anyNA(i) || any(i != round(i))) {
+    hm_abort("{.arg i} must be whole {what} numbers, ids or a logical vector, not {describe_value(i)}.",
+             "bad_input", argument = "i", call = call)
+  }
+  if (length(i) && (any(i > n) || any(i < -n) || (any(i < 0) && any(i > 0)))) {
+    hm_abort("{.arg i} must lie in 1..{n} (or -{n}..-1 to drop), not mix signs: the set has {n} {what}{?s}.",
+             "bad_input", argument = "i", call = call)
+  }
+  seq_len(n)[i]
+}

@@ -83,7 +83,10 @@
 #' grasp_confusion(cl)
 classify <- function(models, x, method = c("fpca", "last_frame", "discriminant", "weighted_fpca"), ...) {
   call <- rlang::caller_env()
-  check_grasps(x, call = call)
+  # (non-finite values: those recordings are left unclassified, with a warning)
+  check_grasps(x, call = call, finite = FALSE)
+  check_not_empty(x, what = "classify", call = call)
+  warn_short_recordings(x, action = "classified")
   rlang::check_dots_empty(error = function(cnd) {
     hm_abort(c("{.fn classify} takes fitted models and the recordings, nothing more.",
                i = "Give fitting arguments to {.fn fit_grasp_models} or {.fn fit_grasp_classifier}."),
@@ -97,7 +100,7 @@ classify <- function(models, x, method = c("fpca", "last_frame", "discriminant",
   }
   method <- resolve_method(models, method, missing(method), call = call)
   # the distances predict() gives, kept whole for the confusion matrix and Table 5.3
-  d <- with_progress_shown(predict_classifier(models, x, "distance", list(), call))
+  d <- with_progress_shown(predict_classifier(models, x, "distance", list(), call, arg = "models", checked = TRUE))
   dist <- as.matrix(as.data.frame(unclass(d)[names(d)], check.names = FALSE))
   dimnames(dist) <- list(x$meta$id, sub("^\\.dist_", "", names(d)))
   new_classification(dist, x$meta, method, attr(d, "target_length"), attr(d, "failures") %||% no_failures())
@@ -162,6 +165,8 @@ no_failures <- function() data.frame(model = character(0), message = character(0
 # numbers: 1 GB at ten times the default data); a model whose projection
 # fails costs only its own column.
 fpca_distances <- function(models, x, call = rlang::caller_env()) {
+  # (each model is checked by project_models(), once)
+  check_grasp_models(models, "models", "classify", each = FALSE, call = call)
   # types whose model could not be fitted can never be predicted: say so
   unfitted <- failed_types(models)
   failures <- no_failures()

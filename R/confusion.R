@@ -53,6 +53,10 @@ grasp_confusion <- function(truth, predicted = NULL, levels = NULL) {
 }
 
 new_confusion <- function(truth, predicted, levels = NULL, call = rlang::caller_env()) {
+  if (length(truth) == 0L) {
+    hm_abort("{.arg truth} and {.arg predicted} are empty: there is nothing to count.", "bad_input",
+             argument = "truth", call = call)
+  }
   if (length(truth) != length(predicted)) {
     hm_abort("{.arg truth} ({length(truth)}) and {.arg predicted} ({length(predicted)}) must have the same length.",
              "bad_input", argument = "predicted", call = call)

@@ -39,10 +39,18 @@ format_degenerate <- function(notes, indent = "  ") {
 model_degeneracies <- function(model, n_frames) {
   notes <- empty_degenerate_notes()
   single <- sum(n_frames < 2L)
+  # (n_frames named by recording id: the notes name the recordings)
+  which_ones <- function(sel) if (is.null(names(n_frames))) "" else paste0(" (", name_list(names(n_frames)[sel]), ")")
   if (single > 0L) {
     notes <- add_degenerate_note(notes, "one_frame", sprintf(
-      "%d of %d recordings ha%s a single frame: no motion to align or model",
-      single, length(n_frames), if (single == 1L) "s" else "ve"))
+      "%d of %d recordings ha%s a single frame%s: no motion to align or model",
+      single, length(n_frames), if (single == 1L) "s" else "ve", which_ones(n_frames < 2L)))
+  }
+  short <- n_frames >= 2L & n_frames < min_motion_frames
+  if (any(short)) {
+    notes <- add_degenerate_note(notes, "short_recordings", sprintf(
+      "%d of %d recordings ha%s fewer than %d frames%s: too short to show a motion, fitted all the same",
+      sum(short), length(n_frames), if (sum(short) == 1L) "s" else "ve", min_motion_frames, which_ones(short)))
   }
   fb <- model$fallbacks
   # channels flagged stuck when the data were built were said once there

@@ -51,14 +51,17 @@
 #' `rank_deficient` (more components than the rank of the data),
 #' `small_mixture` (too few recordings for the mixture's `k` components),
 #' `linear_fallback` (dynamic time warping failed and linear warping was
-#' used), `non_finite` (recordings holding `NaN` or infinite values) and
+#' used), `non_finite` (recordings holding `NaN` or infinite values),
+#' `short_recordings` (recordings of fewer than three frames, fitted or
+#' classified all the same) and
 #' `zero_window` (a DTW window that leaves only the diagonal path). One
 #' warning carries every class that applies, and the rows in its field
 #' `degenerate_data` (`class`, `message`). Other warnings: `read_failures`
 #' (files a directory read skipped), `truncated_line` and `unknown_header`
-#' (a file read with a fallback), `few_recordings` (a last-frame type with
-#' fewer recordings than PCs), `model_failed` (types whose model failed,
-#' skipped), `projection_failed` (models that could not score the
+#' (a file read with a fallback), `few_recordings` (a grasp type with
+#' fewer than three recordings, or a last-frame type with fewer recordings
+#' than PCs), `model_failed` (types whose model failed: skipped, or left out
+#' of a fitted set), `projection_failed` (models that could not score the
 #' recordings), `fold_failed` (an evaluation fold that could not be
 #' fitted), `skeleton_default_unit` (a skeleton file without a unit),
 #' `constant_channels` (channels constant in every recording, left out of
@@ -136,7 +139,7 @@ hm_abort <- function(message, class = "bad_input", ..., call = rlang::caller_env
 warning_families <- c(
   one_frame = "degenerate", identical_recordings = "degenerate", constant_dofs = "degenerate",
   rank_deficient = "degenerate", small_mixture = "degenerate", linear_fallback = "degenerate",
-  non_finite = "degenerate", zero_window = "degenerate",
+  non_finite = "degenerate", zero_window = "degenerate", short_recordings = "degenerate",
   read_failures = NA, truncated_line = NA, unknown_header = NA, few_recordings = NA,
   model_failed = NA, projection_failed = NA, fold_failed = NA, skeleton_default_unit = NA,
   constant_channels = NA, no_limits = NA, stuck_channels = NA, mixed_labels = NA, guessed_glove = NA,

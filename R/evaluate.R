@@ -96,6 +96,9 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
              "bad_input", argument = "fit_args", call = call)
   }
   unlabelled <- is.na(x$meta$grasp)
+  # said once here, not once per fold (fit_quietly())
+  warn_short_recordings(x, action = "evaluated")
+  warn_few_recordings(x)
   if (all(unlabelled)) {
     hm_abort("{.arg x} has no labelled recordings to evaluate.", "no_labels", argument = "x", call = call)
   }
@@ -138,7 +141,7 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
   held <- new_confusion(predictions$truth, predictions$predicted, levels = lev)
   ins <- NULL
   if (in_sample) {
-    cl <- classify(fit_classifier(x, method, fit_args), x)
+    cl <- classify(fit_quietly(x, method, fit_args), x)
     ins <- new_confusion(cl$predictions$truth, cl$predictions$predicted, levels = lev)
   }
   structure(list(method = method, scheme = attr(groups, "scheme"), split = attr(groups, "split"),
@@ -161,7 +164,12 @@ run_fold <- function(x, test_rows, method, fit_args) {
   missing_types <- setdiff(unique(as.character(test$meta$grasp)), unique(as.character(train$meta$grasp)))
   out <- list(n_train = length(train), n_test = length(test),
               missing_types = label_order(missing_types, levels(x$meta$grasp)), error = NULL)
-  fit <- tryCatch(fit_classifier(train, method, fit_args), error = function(e) e)
+  fit <- tryCatch(fit_quietly(train, method, fit_args), error = function(e) e)
+  # a fold where no type could be fitted has nothing to classify with
+  if (inherits(fit, "grasp_models") && !length(fitted_models(fit))) {
+    reasons <- failed_types(fit)
+    fit <- simpleError(paste0("no grasp type could be fitted (", reasons$grasp[1], ": ", reasons$message[1], ")"))
+  }
   if (inherits(fit, "error")) {
     out$error <- cli::ansi_strip(conditionMessage(fit))
     out$predictions <- data.frame(id = test$meta$id, subject = test$meta$subject,
@@ -178,6 +186,15 @@ run_fold <- function(x, test_rows, method, fit_args) {
   p$predicted <- as.character(p$predicted)
   out$predictions <- p
   out
+}
+
+# fit_classifier() without the warnings evaluate_loso() gives once for the
+# whole set (short recordings, types with few recordings).
+fit_quietly <- function(x, method, fit_args) {
+  withCallingHandlers(fit_classifier(x, method, fit_args),
+                      handmotion_warning_short_recordings = function(w) invokeRestart("muffleWarning"),
+                      # (the last-frame classifier's own warning about its PCs has no `grasp` field: kept)
+                      handmotion_warning_few_recordings = function(w) if (!is.null(w$grasp)) invokeRestart("muffleWarning"))
 }
 
 confusion_accuracy <- function(cm) if (cm$n > 0) sum(diag(cm$table)) / cm$n else NA_real_

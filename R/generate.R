@@ -131,6 +131,7 @@ generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = 1, warp = TRUE,
   call <- rlang::caller_env()
   check_dots_for(list(...), generate.grasp_models, "generate", call = call)
   phases <- check_flag(phases, "phases", call = call)
+  check_grasp_models(x, "x", "generate", each = FALSE, call = call)  # (each model: validate_sampler())
   generate_models(select_models(x, grasp, call), n, seed, warp, limits, chunk, callback, call = call,
                   phases = phases)
 }
@@ -145,6 +146,10 @@ generate_models <- function(models, n, seed, warp, limits, chunk, callback, call
   if (!is.null(limits)) limits <- check_flag(limits, "limits", call = call)
   seed <- check_seed(seed, call = call)
   chunk <- check_whole(chunk, "chunk", max = max_grasps_per_call, call = call)
+  if (!length(models)) {
+    hm_abort("{.arg x} holds no fitted models (an empty selection?): there is nothing to generate from.",
+             "bad_input", argument = "x", call = call)
+  }
   for (m in models) validate_sampler(m, call)
   if (isTRUE(limits)) {
     none <- vapply(models, function(m) !any(m$limits$enforced %||% FALSE), logical(1))
@@ -315,6 +320,8 @@ model_fault <- function(model, action, arg, call) {
 validate_sampler <- function(model, call = rlang::caller_env()) {
   bad <- model_fault(model, "generate", "x", call)
   if (!inherits(model, "grasp_model")) bad("it is not a {.cls grasp_model}")
+  fault <- model_parts_fault(model)
+  if (!is.null(fault)) bad(fault)
   smp <- model$sampler %||% build_sampler(model)
   L <- model$target_length
   p <- length(model$dofs)

@@ -117,6 +117,8 @@ fit_grasp_classifier <- function(x, method = c("discriminant", "last_frame", "we
   check_grasps(x, call = call)
   method <- check_choice(method, arg = "method", call = call)
   fitter <- classifier_fitter(method)
+  warn_short_recordings(x, action = "fitted")
+  warn_few_recordings(x)
   dots <- list(...)
   # weighted_fpca passes what it does not take itself on to fit_grasp_models()
   if (method == "weighted_fpca") {
@@ -172,7 +174,7 @@ check_fractions <- function(at, arg, call = rlang::caller_env()) {
 # New recordings for a fitted classifier or recogniser: a grasps object with
 # exactly the DoFs it was trained on, in that order.
 check_trained_dofs <- function(x, dofs, what, call = rlang::caller_env()) {
-  check_grasps(x, arg = "new_data", call = call)
+  check_grasps(x, arg = "new_data", call = call, finite = FALSE)
   if (!identical(x$dofs, dofs)) {
     hm_abort(c("{.arg new_data} has other DoFs than the {what} was trained on.",
                i = "Trained on: {.val {dofs}}.", x = "Given: {.val {x$dofs}}."),

@@ -52,6 +52,7 @@ print.grasp_model <- function(x, ...) {
 #' g <- simulate_grasps(subjects = 4, grasps = 3, objects = 2, trials = 2, seed = 1)
 #' summary(fit_grasp_model(g, seed = 1))
 summary.grasp_model <- function(object, ...) {
+  check_grasp_model(object, "object", "be summarised")
   ve <- 100 * model_var_explained(object)
   mix <- vapply(object$gmm, function(g) {
     if (isTRUE(g$point_mass)) "point mass" else if (isTRUE(g$fallback)) "single Gaussian" else "mixture"

@@ -224,7 +224,6 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, mi
   keep_data <- check_flag(keep_data, "keep_data", call = call)
   overlong <- as_overlong_rule(overlong, call = call)
   x <- select_one_type(x, grasp, call)
-  check_grasps_finite(x, call = call)
   motion <- resolve_motion(x, motion, call = call)
   phases <- NULL
   if (motion == "trim") {
@@ -340,7 +339,7 @@ fit_grasp_model_impl <- function(x, settings, engines, call, phases = NULL) {
     degenerate_data = model_degeneracies(list(fallbacks = fallbacks, dofs = dofs, settings = settings,
                                               stuck = stuck_channels(x),
                                               warp = list(constant = isTRUE(warp_fit$constant))),
-                                         x$meta$n_frames),
+                                         stats::setNames(x$meta$n_frames, x$meta$id)),
     # the alignment as the aligner returned it (warped curves, warping
     # functions, frame counts, degenerate warps): the model's data, kept once
     alignment = if (isTRUE(settings$keep_data)) aln

@@ -65,7 +65,17 @@
 #' ms
 #' summary(ms)
 fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL) {
-  fit_model_set(x, grasps, ..., seed = seed, cache = cache, call = rlang::caller_env())
+  out <- fit_model_set(x, grasps, ..., seed = seed, cache = cache, call = rlang::caller_env())
+  # types fitted from a pair of recordings, and types that could not be
+  # fitted at all, are said here, not only in print() of the set
+  warn_few_recordings(x[x$meta$grasp %in% names(out)])
+  failed <- failed_types(out)
+  if (nrow(failed)) {
+    hm_warn(c("{nrow(failed)} of the {length(out)} grasp type models could not be fitted and {?is/are} left out: {.val {failed$grasp}}.",
+              i = "First reason: {failed$message[1]}", i = "{.code print()} of the set lists every reason."),
+            "model_failed", grasp = failed$grasp)
+  }
+  out
 }
 
 # fit_grasp_models(); evaluate_loso() and the weighted FPCA classifier skip
@@ -268,9 +278,12 @@ failed_types <- function(x) {
   keep <- if (is.character(i) || is.factor(i)) {
     resolve_labels(i, model_set_levels(x), "i")
   } else if (is.logical(i)) {
-    names(x)[i]
+    if (length(i) != length(x)) {
+      hm_abort("A logical index must have length {length(x)}, not {length(i)}.", "bad_input", argument = "i")
+    }
+    names(x)[i & !is.na(i)]
   } else {
-    names(x)[i]
+    names(x)[check_positions(i, length(x), "model")]
   }
   absent <- setdiff(keep, names(x))
   if (length(absent)) {
@@ -368,6 +381,7 @@ print.grasp_models <- function(x, ...) {
 #' g <- simulate_grasps(subjects = 4, grasps = 1:2, objects = 2, trials = 2, seed = 1)
 #' summary(fit_grasp_models(g, seed = 1))
 summary.grasp_models <- function(object, ...) {
+  check_grasp_models(object, "object", "be summarised")
   rows <- lapply(unclass(object), function(m) {
     if (inherits(m, "grasp_model_failed")) {
       return(data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n_input = NA_integer_, n_used = NA_integer_,

@@ -45,6 +45,8 @@ fit_grasp_recognizer <- function(x, at = c(0, 0.25, 0.5, 0.75, 1), horizon = NUL
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   at <- check_fractions(at, "at", call = call)
+  warn_short_recordings(x, action = "fitted")
+  warn_few_recordings(x)
   # recordings that rest before the grasp are read from their motion onset
   det <- if (resolve_motion(x, "auto") == "trim") fit_onset_detector(x)
   x <- from_onset(x, det)

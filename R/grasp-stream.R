@@ -34,6 +34,7 @@ start_recognition <- function(recognizer) {
     hm_abort("{.arg recognizer} must be made by {.fn fit_grasp_recognizer}, not {.obj_type_friendly {recognizer}}.",
              "bad_input", argument = "recognizer", call = rlang::caller_env())
   }
+  check_fitted_parts(recognizer, "recognizer", call = rlang::caller_env())
   state <- new.env(parent = emptyenv())
   state$recognizer <- recognizer
   state$buffer <- matrix(0, recognizer$horizon, length(recognizer$dofs))

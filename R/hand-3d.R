@@ -89,6 +89,18 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
              argument = "background", call = call)
   }
   background <- grDevices::rgb(t(bg), maxColorValue = 255)  # R names ("grey90") are not CSS colours
+  # a widget size: NULL, a positive number of pixels or one CSS size ("100%",
+  # "30em"); -1 or "a" reached the page as a broken style without a word
+  for (arg in c("width", "height")) {
+    v <- get(arg)
+    ok <- is.null(v) || (is.numeric(v) && length(v) == 1L && is.finite(v) && v > 0) ||
+      (is.character(v) && length(v) == 1L && !is.na(v) &&
+         grepl("^(auto|inherit|fit-content|[0-9]*\\.?[0-9]+(px|%|em|rem|vh|vw|pt|cm|mm|in|ex|ch)?)$", v))
+    if (!ok) {
+      hm_abort("{.arg {arg}} must be {.code NULL}, a positive number of pixels or one CSS size such as {.val 100%}, not {describe_value(v)}.",
+               "bad_input", argument = arg, call = call)
+    }
+  }
   rate <- check_number(rate, "rate", min = 0, min_open = TRUE, allow_null = TRUE, call = call)
   # (the unit comes with each hand, so it is not one of the arguments passed on)
   check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton", "unit"),
@@ -174,6 +186,7 @@ hand_3d_inputs <- function(x, recording, rate, call) {
     list(list(angles = m, unit = NULL, rate = r, label = label))
   }
   hands <- if (inherits(x, "grasps")) {
+    check_grasps(x, call = call)
     from_grasps(x, pick = recording)
   } else if (is.matrix(x)) {
     from_matrix(x, "recording")

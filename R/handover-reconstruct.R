@@ -42,6 +42,7 @@
 predict.handover_model <- function(object, newdata, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), predict.handover_model, "predict.handover_model", call = call)
+  check_fitted_parts(object, "object", call = call)
   model <- object
   query <- newdata
   cols <- marker_columns(model$markers)

@@ -279,6 +279,8 @@ forward_kinematics <- function(x, skeleton = hand_skeleton(), mapping = NULL,
 fk_input <- function(x, unit, call) {
   mapping <- NULL
   if (inherits(x, "grasps")) {
+    check_grasps(x, call = call)
+    check_not_empty(x, what = "pose", call = call)
     recs <- x$recordings
     unit <- x$unit
     dofs <- x$dofs
@@ -344,8 +346,13 @@ fk_frames <- function(frames, n, id, call) {
     hm_abort("{.arg frames} must be indices, {.val first} or {.val last}, not {.val {frames}}.",
              "bad_input", argument = "frames", call = call)
   }
+  # (a fractional frame used to be truncated silently)
+  if (!is.numeric(frames) || anyNA(frames) || any(frames != round(frames))) {
+    hm_abort("{.arg frames} must be whole frame numbers, {.val first} or {.val last}, not {describe_value(frames)}.",
+             "bad_input", argument = "frames", recording = id, call = call)
+  }
   frames <- as.integer(frames)
-  if (anyNA(frames) || any(frames < 1L | frames > n)) {
+  if (any(frames < 1L | frames > n)) {
     hm_abort("{.arg frames} must lie in 1..{n} (recording {.val {id}} has {n} frame{?s}).",
              "bad_input", argument = "frames", recording = id, call = call)
   }

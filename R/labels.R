@@ -51,7 +51,7 @@ feix_codes <- function(x) {
 #' `unknown_grasp`. Used where a Feix type is required (the simulator, the
 #' thesis' tables).
 #' @noRd
-as_feix_grasp <- function(x, ids = NULL, call = rlang::caller_env()) {
+as_feix_grasp <- function(x, ids = NULL, call = rlang::caller_env(), arg = NULL) {
   lev <- feix_levels()
   out <- feix_codes(x)
   bad <- !is.na(x) & is.na(out)
@@ -59,9 +59,10 @@ as_feix_grasp <- function(x, ids = NULL, call = rlang::caller_env()) {
     # character, so cli pluralises on its length rather than reading a number as a count
     where <- as.character(if (!is.null(ids)) ids[bad] else which(bad))
     hm_abort(c("Unknown grasp type{?s} {.val {unique(as.character(x[bad]))}}.",
+               i = if (!is.null(arg)) "In {.arg {arg}}." else NULL,
                i = if (!is.null(ids)) "In recording{?s} {.val {where}}." else "At position{?s} {.val {where}}.",
                i = "Use a Feix type name (see {.code feix_taxonomy$name}) or an id from 1 to 33."),
-             "unknown_grasp", recording = where, call = call)
+             "unknown_grasp", recording = where, argument = arg, call = call)
   }
   factor(lev[out], levels = lev)
 }
@@ -111,7 +112,7 @@ resolve_labels <- function(values, levels, arg, call = rlang::caller_env()) {
     if (!anyNA(codes)) return(feix_levels()[codes])
     if (!is.null(levels)) {
       # a Feix set asked for something that is not a Feix type
-      as_feix_grasp(values, call = call)
+      as_feix_grasp(values, call = call, arg = arg)
     }
   }
   v <- as.character(values)

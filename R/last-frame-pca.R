@@ -129,7 +129,7 @@ cumulative_variance <- function(fit) {
 }
 
 last_frame_distances <- function(fit, x, call = rlang::caller_env()) {
-  check_grasps(x, arg = "new_data", call = call)
+  check_grasps(x, arg = "new_data", call = call, finite = FALSE)
   if (!identical(x$dofs, fit$dofs)) {
     hm_abort(c("{.arg new_data} has DoFs {.val {x$dofs}}, the model was fitted on {.val {fit$dofs}}.",
                i = "Both must have the same DoFs in the same order."),

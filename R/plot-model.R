@@ -48,6 +48,7 @@ autoplot.grasp_model <- function(object, type = c("fpca", "projection", "mixture
                                                   "dependence"),
                                  dof = NULL, recording = 1, newdata = NULL, max_recordings = 100, ...) {
   type <- check_choice(type, arg = "type", call = rlang::current_env())
+  check_grasp_model(object, "object", "be drawn", call = rlang::current_env())
   dofs <- plot_model_dofs(object, dof)
   switch(type,
     fpca = plot_model_fpca(object, dofs, max_recordings),

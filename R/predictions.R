@@ -56,6 +56,12 @@
 #' class: a recording holding non-finite values, or no model could project
 #' it) come back as `NA` (class and every probability) with the reason in
 #' the attribute `reasons`: a character vector named by recording id.
+#' Recordings holding non-finite values (put in after [grasps()] built the
+#' set, which refuses them) are named by a warning of class
+#' `handmotion_warning_non_finite`; recordings of fewer than three frames
+#' are classified with a warning of class
+#' `handmotion_warning_short_recordings`. A classifier whose parts were
+#' changed after fitting is refused (`handmotion_error_bad_model`).
 #'
 #' @param object A fitted classifier.
 #' @param new_data A [grasps()] object with the DoFs the classifier was
@@ -124,14 +130,21 @@ predict.grasp_recognizer <- function(object, new_data, type = c("class", "prob",
 
 # The one predict() of every classifier: its distances, then the answer of
 # the type asked for.
-predict_classifier <- function(object, new_data, type, dots, call, seen = NULL) {
+# `arg`: the argument name of the classifier (classify() calls it `models`);
+# `checked`: new_data was validated by the caller already (one pass, not two).
+predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, arg = "object", checked = FALSE) {
   if (length(dots)) {
     hm_abort(c("{.fn predict} takes a classifier, {.arg new_data} and {.arg type}; unknown argument{?s} {.arg {names(dots) %||% rep('', length(dots))}}.",
                i = "See {.help handmotion::predict.grasp_models}."),
              "bad_input", argument = "...", call = call)
   }
   type <- check_choice(type, c("class", "prob", "distance"), arg = "type", call = call)
-  check_grasps(new_data, arg = "new_data", call = call)
+  check_fitted_parts(object, arg, call = call)
+  if (!checked) {
+    check_grasps(new_data, arg = "new_data", call = call, finite = FALSE)
+    check_not_empty(new_data, "new_data", "classify", call = call)
+    warn_short_recordings(new_data, "new_data", action = "classified")
+  }
   res <- finite_distances(object, new_data, call, seen)
   d <- res$distances
   reasons <- unclassified_reasons(d, new_data)
@@ -147,8 +160,15 @@ predict_classifier <- function(object, new_data, type, dots, call, seen = NULL) 
 # with a NaN or an infinite value has none (NA), so one bad recording does
 # not stop the others.
 finite_distances <- function(object, x, call, seen) {
-  finite <- vapply(x$recordings, function(r) all(is.finite(r)), logical(1))
+  # a sum per recording (a builtin) is finite when every value is; only the
+  # others are read value by value
+  finite <- is.finite(vapply(x$recordings, sum, numeric(1), USE.NAMES = FALSE))
+  finite[!finite] <- vapply(x$recordings[!finite], function(r) all(is.finite(r)), logical(1))
   if (all(finite)) return(classifier_distances(object, x, call = call, seen = seen))
+  bad <- x$meta$id[!finite]
+  hm_warn(c("{.arg new_data} has {length(bad)} recording{?s} with missing or infinite values, not classified: {.val {bad}}.",
+            i = "Their predictions are {.val NA}; see {.code attr(, \"reasons\")}."),
+          "non_finite", recording = bad)
   classes <- classifier_classes(object)
   d <- matrix(NA_real_, length(finite), length(classes), dimnames = list(x$meta$id, classes))
   if (!any(finite)) return(list(distances = d, target_length = NULL, failures = no_failures()))

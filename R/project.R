@@ -62,6 +62,8 @@ project.grasp_model <- function(object, new_data, details = TRUE, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), project.grasp_model, "project", call = call)
   check_grasps(new_data, "new_data", call = call)
+  check_not_empty(new_data, "new_data", "project", call = call)
+  warn_short_recordings(new_data, "new_data", action = "projected")
   validate_projection_model(object, call)
   check_projection_dofs(object, new_data, call)
   # recordings projected on a model of trimmed motion are trimmed alike
@@ -75,6 +77,9 @@ project.grasp_models <- function(object, new_data, details = FALSE, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), project.grasp_models, "project", call = call)
   check_grasps(new_data, "new_data", call = call)
+  check_not_empty(new_data, "new_data", "project", call = call)
+  warn_short_recordings(new_data, "new_data", action = "projected")
+  check_grasp_models(object, "object", "project", each = FALSE, call = call)
   project_models(object, new_data, "object", details = details, call = call)
 }
 
@@ -114,8 +119,10 @@ project_models <- function(models, newdata, arg, details, call, keep = identity,
     newdata <- trim_motion(newdata)
   }
   recs <- double_recordings(newdata)
+  # before the native kernel; an edited model is the caller's error, not a
+  # type to skip with keep_going
+  for (m in models) validate_projection_model(m, call)
   one <- function(m) {
-    validate_projection_model(m, call)  # before the native kernel
     check_projection_dofs(m, newdata, call)
     keep(project_recordings(m, newdata, details = details, distance_only = distance_only, recs = recs,
                             time_weights = if (!is.null(time_weights)) time_weights(m)))
@@ -133,6 +140,8 @@ project_models <- function(models, newdata, arg, details, call, keep = identity,
 validate_projection_model <- function(model, call) {
   bad <- model_fault(model, "project", "object", call)
   if (!inherits(model, "grasp_model")) bad("it is not a {.cls grasp_model}")
+  fault <- model_parts_fault(model)
+  if (!is.null(fault)) bad(fault)
   L <- model$target_length
   p <- length(model$dofs)
   k <- model$settings$ncomp

@@ -56,6 +56,9 @@ bvh_parts <- function(x, recording = 1L) {
 
 # The BVH file as its parts: joints, offsets, channels, frames, frame_time,
 # motion (frames x channels, columns `joint:channel`).
+# The six channels a BVH joint may have.
+bvh_channel_names <- c("Xposition", "Yposition", "Zposition", "Xrotation", "Yrotation", "Zrotation")
+
 parse_bvh <- function(file, call) {
   file <- check_string(file, "file", call = call)
   if (!file.exists(file) && !is_symlink(file)) {
@@ -91,6 +94,7 @@ parse_bvh <- function(file, call) {
     if (t %in% c("ROOT", "JOINT") || (t == "End" && identical(tok[i + 1L], "Site"))) {
       is_end <- t == "End"
       nm <- if (is_end) paste0(names[stack[length(stack)]], "_End") else tok[i + 1L]
+      if (nm %in% names) bad("Joint name {.val {nm}} is used twice.", tline[i])
       names <- c(names, nm)
       parent <- c(parent, if (length(stack)) stack[length(stack)] else NA_integer_)
       end_site <- c(end_site, is_end)
@@ -101,13 +105,20 @@ parse_bvh <- function(file, call) {
       i <- i + 3L
     } else if (t == "OFFSET") {
       v <- suppressWarnings(as.numeric(tok[i + 1:3]))
-      if (anyNA(v) || !length(stack)) bad("OFFSET needs three numbers inside a joint.", tline[i])
+      if (!all(is.finite(v)) || !length(stack)) bad("OFFSET needs three finite numbers inside a joint.", tline[i])
       offsets[[stack[length(stack)]]] <- v
       i <- i + 4L
     } else if (t == "CHANNELS") {
-      k <- suppressWarnings(as.integer(tok[i + 1L]))
-      if (is.na(k) || k < 0L || !length(stack)) bad("CHANNELS needs a count (0 or more) inside a joint.", tline[i])
-      channels[[stack[length(stack)]]] <- tok[i + 1L + seq_len(k)]
+      k <- suppressWarnings(as.numeric(tok[i + 1L]))
+      if (!is.finite(k) || k < 0 || k != round(k) || !length(stack)) {
+        bad("CHANNELS needs a whole count (0 or more) inside a joint, not {.val {tok[i + 1L]}}.", tline[i])
+      }
+      ch <- tok[i + 1L + seq_len(k)]
+      unknown <- setdiff(ch, bvh_channel_names)
+      if (length(unknown)) {
+        bad(paste("Unknown channel{?s} {.val {unknown}}; BVH channels are", paste(bvh_channel_names, collapse = ", "), "."), tline[i])
+      }
+      channels[[stack[length(stack)]]] <- ch
       i <- i + 2L + k
     } else if (t == "}") {
       if (!length(stack)) bad("Unbalanced closing brace.", tline[i])
@@ -134,6 +145,9 @@ parse_bvh <- function(file, call) {
   vals <- suppressWarnings(as.numeric(unlist(strsplit(trimws(body), "\\s+"))))
   if (length(body) != nfr || length(vals) != nfr * nch || anyNA(vals)) {
     bad("The MOTION section should hold {nfr} line{?s} of {nch} number{?s}.", ft_line + 1L)
+  }
+  if (!all(is.finite(vals))) {
+    bad("The MOTION section holds an infinite value.", ft_line + as.integer(ceiling(which(!is.finite(vals))[1] / max(nch, 1L))))
   }
   motion <- matrix(vals, nfr, nch, byrow = TRUE)
   colnames(motion) <- unlist(Map(function(n, ch) if (length(ch)) paste0(n, ":", ch) else character(0),

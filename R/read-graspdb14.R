@@ -86,6 +86,7 @@ read_graspdb14 <- function(path, recursive = FALSE, pattern = "\\.txt$", datatyp
   call <- rlang::caller_env()
   truncated <- check_choice(truncated, arg = "truncated", call = call)
   if (!is.null(datatype)) datatype <- check_choice(datatype, c("rad", "raw"), arg = "datatype", call = call)
+  pattern <- check_regex(pattern, "pattern", allow_null = TRUE, call = call)
   input <- list_input_files(path, pattern, recursive, call = call)
   files <- input$files
   is_annot <- grepl("_annot[^/\\\\]*$", file_stem(files), ignore.case = TRUE)

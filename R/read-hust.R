@@ -72,6 +72,9 @@ read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = 
                       recursive = FALSE, truncated = c("error", "drop"), glove = NULL) {
   call <- rlang::caller_env()
   truncated <- check_choice(truncated, arg = "truncated", call = call)
+  pattern <- check_regex(pattern, "pattern", perl = TRUE, allow_null = TRUE, call = call)
+  file_pattern <- check_regex(file_pattern, "file_pattern", allow_null = TRUE, call = call)
+  sep <- check_sep(sep, call = call)
   if (!is.null(manifest) && !is.null(pattern)) {
     hm_abort("Give {.arg manifest} or {.arg pattern}, not both.", "bad_input",
              argument = "manifest", call = call)
@@ -292,6 +295,10 @@ parse_hust_content <- function(file, dofs, header = NA, sep = NA, truncated = "e
       order <- match(seq_along(dofs), m)
     } else if (length(hdr) == length(dofs)) {
       hm_warn("Header of {.file {file}} does not name the HUST DoFs; columns taken in the standard order.",
+              "unknown_header", file = file, line = hdr_line)
+    } else {
+      # (a first line of text with another field count was dropped without a word)
+      hm_warn("The first line of {.file {file}} has {length(hdr)} field{?s}, not one name per DoF ({length(dofs)}); read as a header and ignored.",
               "unknown_header", file = file, line = hdr_line)
     }
   }

@@ -80,7 +80,9 @@ warn_read_failures <- function(failures, total) {
 #' g <- suppressWarnings(read_graspdb14(file.path(dir, "graspdb14")))
 #' read_failures(g)
 read_failures <- function(x) {
-  if (!is.list(x)) {
+  # (a list or data frame that no reader returned has no failures to report,
+  # not an empty report)
+  if (!is.list(x) || !inherits(x, "grasps") && is.null(attr(x, "failures", exact = TRUE))) {
     hm_abort("{.arg x} must be the result of a reader such as {.fn read_graspdb14}, not {describe_value(x)}.",
              "bad_input", argument = "x", call = rlang::caller_env())
   }

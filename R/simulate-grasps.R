@@ -128,6 +128,11 @@ simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 
              "bad_params", argument = "params", call = call)
   }
   params <- do.call(simulator_params, c(params, list(.call = call)))
+  # (checked before the early return of a plain simulation: NaN reached
+  # `rest == 0` as a base R error, a bad session_sd passed unseen)
+  rest <- check_number(rest, "rest", min = 0, max = 60, call = call)
+  hold <- check_number(hold, "hold", min = 0, max = 60, call = call)
+  session_sd <- check_number(session_sd, "session_sd", min = 0, max = 1e6, call = call)
 
   streams <- sim_streams(as.integer(seed))
   subj <- sim_subject_draws(streams[34L], subjects, ncol(params$loadings))
@@ -145,10 +150,10 @@ simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 
   }
   out <- new_grasps(recs, meta, handmotion::hust_dofs$name, rate, "deg")
   if (is.null(glove) && rest == 0 && hold == 0) return(out)
-  rest <- check_number(rest, "rest", min = 0, max = 60, call = call)
-  hold <- check_number(hold, "hold", min = 0, max = 60, call = call)
-  session_sd <- check_number(session_sd, "session_sd", min = 0, max = 1e6, call = call)
-  glove <- glove_profile(glove %||% "hust")
+  glove <- tryCatch(glove_profile(glove %||% "hust"), handmotion_error_bad_glove = function(e) {
+    # (glove_profile() names its own argument, x)
+    hm_abort("{.arg glove} is not a usable glove profile.", "bad_glove", argument = "glove", parent = e, call = call)
+  })
   if (length(stuck) && !all(stuck %in% glove$channels$channel)) {
     hm_abort("{.arg stuck} names {.val {setdiff(stuck, glove$channels$channel)}}, not channels of the glove.",
              "bad_input", argument = "stuck", call = call)

@@ -156,8 +156,8 @@ parse_skeleton_xml <- function(doc, file, lines, positions, call) {
   }
   xyz <- lapply(seq_len(n), function(i) {
     v <- suppressWarnings(as.numeric(strsplit(pos_txt[i] %|na|% "", "[[:space:],]+")[[1]]))
-    if (is.na(pos_txt[i]) || length(v) != 3L || anyNA(v)) {
-      skel_abort("Joint {.val {name[i]}} needs a {.val <position>} of three numbers, not {.val {pos_txt[i]}}.",
+    if (is.na(pos_txt[i]) || length(v) != 3L || !all(is.finite(v))) {
+      skel_abort("Joint {.val {name[i]}} needs a {.val <position>} of three finite numbers, not {.val {pos_txt[i]}}.",
                  file, lines, "name", name[i], joint = name[i], call = call)
     }
     v
@@ -331,6 +331,17 @@ check_skeleton <- function(x, arg = "skeleton", call = rlang::caller_env()) {
   if (!inherits(x, "hand_skeleton")) {
     hm_abort("{.arg {arg}} must be a {.cls hand_skeleton} (see {.fn read_skeleton}), not {.obj_type_friendly {x}}.",
              "bad_input", argument = arg, call = call)
+  }
+  # finite offsets: an edited skeleton with a NaN position gave base R's
+  # "missing value where TRUE/FALSE needed" in the kinematics, or a file
+  # write_skeleton() wrote and read_skeleton() refuses
+  j <- x$joints
+  xyz <- if (is.data.frame(j) && all(c("name", "x", "y", "z") %in% names(j))) as.matrix(j[c("x", "y", "z")])
+  if (is.null(xyz) || !is.numeric(xyz) || !all(is.finite(xyz))) {
+    bad <- if (is.null(xyz) || !is.numeric(xyz)) character() else j$name[rowSums(!is.finite(xyz)) > 0]
+    hm_abort(c("{.arg {arg}} must hold finite joint positions ({.field joints$x}, {.field y}, {.field z}).",
+               x = if (length(bad)) "Not finite for joint{?s} {.val {bad}}." else "They are missing or not numeric."),
+             "bad_skeleton", argument = arg, joint = bad, call = call)
   }
   # one tree: a joint whose parent was dropped from the table (an edited
   # skeleton) would otherwise fail deep inside the drawing code

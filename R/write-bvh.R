@@ -46,11 +46,9 @@ write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate 
   check_rate(rate, call = call)
   dots <- list(...)
   if (inherits(x, "grasps")) {
-    if (is.character(recording)) recording <- match(recording, x$meta$id)
-    if (length(recording) != 1L || is.na(recording) || recording < 1L || recording > length(x)) {
-      hm_abort("{.arg recording} must pick one of the {length(x)} recording{?s} by index or id, not {describe_value(recording)}.",
-               "bad_input", argument = "recording", call = call)
-    }
+    check_grasps(x, call = call)
+    check_not_empty(x, what = "write", call = call)
+    recording <- check_recording_pick(recording, x, call = call)
     # a BVH read back: its own hierarchy and channels
     if (!is.null(attr(x, "bvh"))) {
       parts <- bvh_parts(x, recording)

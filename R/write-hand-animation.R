@@ -108,7 +108,10 @@ write_hand_animation <- function(x, file, recording = 1L, view = "oblique", widt
     hm_abort(c("Writing an MP4 needs the {.code ffmpeg} program, which is not installed.",
                i = "Install ffmpeg, or write a {.file .gif}."), "missing_dependency", call = call)
   }
-  pick <- if (inherits(x, "grasps")) recording else NULL
+  pick <- if (inherits(x, "grasps")) {
+    check_some_recordings(x, call = call)
+    check_recording_pick(recording, x, call = call)
+  }
   hands <- hand_3d_inputs(x, pick, rate, call)
   rates <- unique(vapply(hands, `[[`, numeric(1), "rate"))
   if (length(rates) > 1L) {

@@ -17,11 +17,7 @@ write_hand_html <- function(x, file, skeleton = hand_skeleton(), view = "oblique
   check_skeleton(skeleton, call = call)
   if (inherits(x, "grasps")) {
     check_some_recordings(x, call = call)
-    if (is.character(recording)) recording <- match(recording, x$meta$id)
-    if (length(recording) != 1L || is.na(recording) || recording < 1L || recording > length(x)) {
-      hm_abort("{.arg recording} must pick one of the {length(x)} recording{?s} by index or id, not {describe_value(recording)}.",
-               "bad_input", argument = "recording", call = call)
-    }
+    recording <- check_recording_pick(recording, x, call = call)
     m <- x$meta[recording, ]
     if (is.null(title)) title <- paste0(m$id, if (!is.na(m$grasp)) paste0(" (", m$grasp, ")") else "")
     if (is.null(fps)) fps <- x$rate
