@@ -77,7 +77,8 @@ test_that("the classifier refuses what it cannot learn from or apply to", {
   expect_error(fit_grasp_classifier(g, at = c(0, 2)), class = "handmotion_error_bad_input")
   expect_error(fit_grasp_classifier(g, prior = "flat"), class = "handmotion_error_bad_input")
   one <- g[c(1:6, 7)]
-  expect_error(fit_grasp_classifier(one), "fewer than two", class = "handmotion_error_bad_input")
+  expect_error(suppressWarnings(fit_grasp_classifier(one), classes = "handmotion_warning_few_recordings"),
+               "fewer than two", class = "handmotion_error_bad_input")
   unl <- g
   unl$meta$grasp[1] <- NA
   expect_error(fit_grasp_classifier(unl), "unlabelled", class = "handmotion_error_bad_input")

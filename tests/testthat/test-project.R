@@ -52,7 +52,7 @@ test_that("recordings of any length project, including a single frame", {
   g <- planted_grasps(n = 30, p = 2, seed = 45)
   m <- fit_grasp_model(g, warping = "linear", seed = 1)
   recs <- list(matrix(1:2, 1, 2), matrix(rnorm(6), 3, 2), g$recordings[[1]][rep(1:40, 3), ])
-  pr <- project(m, grasps(recs, dofs = m$dofs))
+  expect_warning(pr <- project(m, grasps(recs, dofs = m$dofs)), class = "handmotion_warning_short_recordings")
   expect_equal(dim(pr$scores), c(3L, 2L, 2L))
   expect_true(all(is.finite(pr$distance)))
   expect_equal(unname(pr$warped[[1]]), matrix(c(1, 2), m$target_length, 2, byrow = TRUE))

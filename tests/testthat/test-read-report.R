@@ -1,7 +1,8 @@
-test_that("read_failures gives an empty report when nothing failed or nothing was recorded", {
-  f <- read_failures(list())
+test_that("read_failures gives an empty report when nothing failed, and refuses what no reader returned", {
+  f <- read_failures(grasps(list(matrix(0, 3, 2))))
   expect_identical(names(f), c("file", "line", "class", "message"))
   expect_equal(nrow(f), 0)
+  expect_error(read_failures(list()), "reader", class = "handmotion_error_bad_input")
 })
 
 test_that("read_each_file collects classed failures and lets other errors through", {
