@@ -1,0 +1,106 @@
+# The time left of reproduce_thesis() (issue 36: within 25% once a tenth of
+# the work is done, from measured rates, not fixed weights). The estimator
+# is given the times (it reads no clock), so its logic is tested on planted
+# step costs (tests/testthat/test-report-eta.R) and the printer
+# (R/report-progress.R) feeds it the real clock.
+#
+# What it knows: the predicted seconds of every step (the cost model of the
+# design, report_step_costs()) and each step's kind (how it grows and
+# whether it runs on the workers: steps of one kind share their error
+# against the model). What it measures:
+#
+# * each finished step's time: the rate of the model (measured / predicted)
+#   over all finished steps, and per kind, shrunk towards the overall rate
+#   while a kind has little predicted time behind it (`prior` seconds), so
+#   that the pace of the long held-out folds is not applied unchanged to
+#   the quick fits and tables after them;
+# * within a step, the times of its progress steps (folds, horizons,
+#   chunks): the time per progress step is the slope between its first and
+#   last progress step, so the workers' start before the first one is not
+#   counted as if every fold paid it; this rate is trusted as far as the
+#   step has gone or more with every progress step (tick_weight()), the
+#   rest comes from the model at the kind's rate.
+report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), names(cost)), prior = 5) {
+  done <- character()       # finished steps, in order
+  taken <- numeric()        # their measured seconds
+  current <- NULL
+  step_start <- 0
+  total_ticks <- 0
+  ticks <- numeric()        # progress steps done at each update of the current step
+  tick_t <- numeric()       # and their times
+
+  rates <- function() {
+    pred <- cost[done]
+    overall <- (sum(taken) + prior) / (sum(pred) + prior)
+    k <- kind[done]
+    per_kind <- vapply(unique(kind), function(kk) {
+      (sum(taken[k == kk]) + prior * overall) / (sum(pred[k == kk]) + prior)
+    }, numeric(1))
+    list(overall = overall, kind = stats::setNames(per_kind, unique(kind)))
+  }
+  # the rest of the current step from its own progress steps, or NA
+  by_ticks <- function(t) {
+    m <- length(ticks)
+    if (!m || total_ticks <= 0 || ticks[m] <= 0) return(NA_real_)
+    per <- if (m >= 2L && ticks[m] > ticks[1]) {
+      (tick_t[m] - tick_t[1]) / (ticks[m] - ticks[1])
+    } else (tick_t[m] - step_start) / ticks[m]
+    max(0, per * (total_ticks - ticks[m]) - (t - tick_t[m]))
+  }
+  # how far the progress steps' pace is trusted: as far as the step has
+  # gone, and more with every progress step (one alone says little: its
+  # time includes the start-up; three say as much as the model)
+  tick_weight <- function() {
+    m <- length(ticks)
+    f <- if (total_ticks > 0 && m) min(1, ticks[m] / total_ticks) else 0
+    max(f, (m - 1) / (m + 2))
+  }
+  list(
+    # `label` starts at time t (the step before it ends then)
+    step = function(label, t) {
+      if (!is.null(current)) {
+        done <<- c(done, current)
+        taken <<- c(taken, t - step_start)
+      }
+      if (!label %in% names(cost)) {
+        cost[[label]] <<- stats::median(cost)
+        kind[[label]] <<- "other"
+      }
+      current <<- label
+      step_start <<- t
+      total_ticks <<- 0
+      ticks <<- numeric()
+      tick_t <<- numeric()
+      invisible()
+    },
+    # the current step has `steps` progress steps more to do
+    initiate = function(steps) total_ticks <<- total_ticks + steps,
+    # `amount` progress steps of the current step were done at time t
+    tick = function(t, amount = 1) {
+      ticks <<- c(ticks, (if (length(ticks)) ticks[length(ticks)] else 0) + amount)
+      tick_t <<- c(tick_t, t)
+      invisible()
+    },
+    # the current step's share done by its progress steps
+    fraction = function() {
+      if (total_ticks <= 0 || !length(ticks)) 0 else min(1, ticks[length(ticks)] / total_ticks)
+    },
+    # seconds left at time t
+    left = function(t) {
+      r <- rates()
+      rest <- setdiff(names(cost), c(done, current))
+      after <- sum(r$kind[kind[rest]] * cost[rest])
+      if (is.null(current)) return(after)
+      model <- max(0, r$kind[[kind[[current]]]] * cost[[current]] - (t - step_start))
+      own <- by_ticks(t)
+      cur <- if (is.na(own)) model else {
+        w <- tick_weight()
+        (1 - w) * model + w * own
+      }
+      cur + after
+    },
+    current = function() current,
+    steps_done = function() length(done),
+    costs = function() cost
+  )
+}
