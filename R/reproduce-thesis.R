@@ -70,9 +70,11 @@
 #' @export
 #' @examples
 #' \donttest{
+#' # the README's quick design (the article "Reproducing the thesis' chapter 5"
+#' # shows the report of a larger one)
 #' if (rmarkdown::pandoc_available()) {
-#'   out <- reproduce_thesis(tempfile("report"), subjects = 3, grasps = c(9, 17, 25),
-#'                           loso_folds = 3)
+#'   out <- reproduce_thesis(tempfile("report"), subjects = 2, grasps = c(17, 25),
+#'                           loso_folds = 2)
 #'   list.files(dirname(out), recursive = TRUE)
 #' }
 #' }
