@@ -10,10 +10,12 @@
 # against the model). What it measures:
 #
 # * each finished step's time: the rate of the model (measured / predicted)
-#   over all finished steps, and per kind, shrunk towards the overall rate
-#   while a kind has little predicted time behind it (`prior` seconds), so
-#   that the pace of the long held-out folds is not applied unchanged to
-#   the quick fits and tables after them;
+#   over all finished steps, and per kind, shrunk towards the rate of the
+#   steps run the same way (on the future workers or in the main process)
+#   and that towards the overall rate while they have little predicted
+#   time behind them (`prior` seconds), so that the pace of the long
+#   held-out folds is not applied unchanged to the quick fits and tables
+#   after them;
 # * within a step, the times of its progress steps (folds, horizons,
 #   chunks): the time per progress step is the slope between its first and
 #   last progress step, so the workers' start before the first one is not
@@ -29,14 +31,23 @@ report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), na
   ticks <- numeric()        # progress steps done at each update of the current step
   tick_t <- numeric()       # and their times
 
+  # steps on the future workers share the machine with each other (on a
+  # busy machine they slow down more than the steps of the main process
+  # alone): a kind's rate is shrunk towards that of its mode (on the
+  # workers or not), the mode's towards the overall rate
+  mode_of <- function(k) ifelse(grepl("/workers$", k), "workers", "main")
   rates <- function() {
     pred <- cost[done]
     overall <- (sum(taken) + prior) / (sum(pred) + prior)
     k <- kind[done]
-    per_kind <- vapply(unique(kind), function(kk) {
-      (sum(taken[k == kk]) + prior * overall) / (sum(pred[k == kk]) + prior)
+    m <- mode_of(k)
+    per_mode <- c(workers = (sum(taken[m == "workers"]) + prior * overall) / (sum(pred[m == "workers"]) + prior),
+                  main = (sum(taken[m == "main"]) + prior * overall) / (sum(pred[m == "main"]) + prior))
+    kinds <- unique(kind)
+    per_kind <- vapply(kinds, function(kk) {
+      (sum(taken[k == kk]) + prior * per_mode[[mode_of(kk)]]) / (sum(pred[k == kk]) + prior)
     }, numeric(1))
-    list(overall = overall, kind = stats::setNames(per_kind, unique(kind)))
+    list(overall = overall, kind = stats::setNames(per_kind, kinds))
   }
   # the rest of the current step from its own progress steps, or NA
   by_ticks <- function(t) {

@@ -57,13 +57,33 @@ test_that("each kind of step keeps its own error against the model", {
     t <- t + true[i]
   }
   eta$step("folds2", t)
-  # folds kind: (80 + 5 r) / (40 + 5), r = (120 + 5) / (80 + 5);
-  # fits: (40 + 5 r) / (40 + 5)
-  r <- 125 / 85
+  # folds kind: (80 + 5 r) / (40 + 5), fits: (40 + 5 r) / (40 + 5), with r
+  # the rate of the steps of the main process, (120 + 5 r0) / (80 + 5),
+  # itself shrunk to the overall r0 = (120 + 5) / (80 + 5)
+  r0 <- 125 / 85
+  r <- (120 + 5 * r0) / 85
   expect_equal(eta$left(t), 40 * (80 + 5 * r) / 45 + 20 * (40 + 5 * r) / 45)
   # the single average rate would say 40 * 1.5 + 20 * 1.5 = 90 s for the
   # true 100 s; the kinds say within 3% of it
   expect_lt(abs(eta$left(t) / 100 - 1), 0.03)
+})
+
+test_that("a kind not yet seen takes the rate of the steps run the same way", {
+  # on a busy machine the steps on the workers run 2x slower than the model,
+  # the main process's steps at its pace: a new kind on the workers is
+  # predicted at about 2x, a new kind of the main process at about 1x
+  cost <- c(fit = 40, table = 20, folds = 50, page = 10)
+  kind <- c(fit = "N/workers", table = "T", folds = "NF/workers", page = "const")
+  eta <- report_eta(cost, kind, prior = 5)
+  eta$step("fit", 0)
+  eta$step("table", 80)
+  eta$step("folds", 100)
+  r0 <- (100 + 5) / (60 + 5)
+  workers <- (80 + 5 * r0) / (40 + 5)
+  main <- (20 + 5 * r0) / (20 + 5)
+  expect_equal(eta$left(100), 50 * workers + 10 * main)
+  expect_gt(workers, 1.8)
+  expect_lt(main, 1.15)
 })
 
 test_that("within a step the pace of its progress steps counts, not the workers' start", {
