@@ -30,6 +30,7 @@ report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), na
   total_ticks <- 0
   ticks <- numeric()        # progress steps done at each update of the current step
   tick_t <- numeric()       # and their times
+  phase_start <- 0          # when the step's current count of progress steps began
 
   # steps on the future workers share the machine with each other (on a
   # busy machine they slow down more than the steps of the main process
@@ -55,7 +56,7 @@ report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), na
     if (!m || total_ticks <= 0 || ticks[m] <= 0) return(NA_real_)
     per <- if (m >= 2L && ticks[m] > ticks[1]) {
       (tick_t[m] - tick_t[1]) / (ticks[m] - ticks[1])
-    } else (tick_t[m] - step_start) / ticks[m]
+    } else (tick_t[m] - phase_start) / ticks[m]
     max(0, per * (total_ticks - ticks[m]) - (t - tick_t[m]))
   }
   # how far the progress steps' pace is trusted: as far as the step has
@@ -79,13 +80,27 @@ report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), na
       }
       current <<- label
       step_start <<- t
+      phase_start <<- t
       total_ticks <<- 0
       ticks <<- numeric()
       tick_t <<- numeric()
       invisible()
     },
-    # the current step has `steps` progress steps more to do
-    initiate = function(steps) total_ticks <<- total_ticks + steps,
+    # the current step has `steps` progress steps more to do from time t; a
+    # count that starts after the step's earlier ones have all been done is
+    # a new phase of the step (the in-sample fit after the held-out folds):
+    # its own pace, not the folds', says how long it takes
+    initiate = function(steps, t = NULL) {
+      m <- length(ticks)
+      if (m && total_ticks > 0 && ticks[m] >= total_ticks) {
+        phase_start <<- t %||% tick_t[m]
+        total_ticks <<- 0
+        ticks <<- numeric()
+        tick_t <<- numeric()
+      }
+      total_ticks <<- total_ticks + steps
+      invisible()
+    },
     # `amount` progress steps of the current step were done at time t
     tick = function(t, amount = 1) {
       ticks <<- c(ticks, (if (length(ticks)) ticks[length(ticks)] else 0) + amount)

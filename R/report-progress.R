@@ -25,8 +25,8 @@ report_chunk_signal <- function(label) {
 # design): `seconds` is the step's time on the default design (30 subjects x
 # 33 types, leave-one-subject-out) on one worker, from its start to the next
 # step's (so with the tables and figures drawn in between: most of them
-# after the frame-PCA step): `make demo` on the 2-core machine after the
-# speed-ups of issue 36 (214 s on 2 workers, shared machine), parallel steps
+# after the frame-PCA step): bench/bench-eta.R (`make demo`'s run) on the
+# 2-core machine (310 s on 2 workers at load 2-4), parallel steps
 # counted twice (the FPCA folds: 30 refits of the 33 models with one
 # Gaussian, saved for the weighted FPCA folds, which read them, are more
 # than half of it); `scale` says how it
@@ -48,7 +48,7 @@ report_step_model <- data.frame(
            "recognition: weighted FPCA distance (learn weights)", "recognition: shrinkage LDA (fit)",
            "recognition: classify the held-out subjects", "recognition: early recognition, held out by subject",
            "the figures and the page"),
-  seconds = c(1, 12, 1.2, 0.2, 0.3, 0.1, 248, 12, 36, 36, 1, 12, 12, 12, 4, 12, 1, 3, 3, 6, 6),
+  seconds = c(1, 14, 1.2, 1, 0.3, 0.1, 376, 72, 48, 36, 1, 6, 12, 12, 4, 12, 1, 1, 2, 6, 6),
   scale = c("N", "N", "NT", "N", "N", "T", "NF", "NF", "NF", "NF", "const", "T", "N", "N", "NT", "N",
             "NT", "N", "NT", "NF", "T"),
   parallel = c(FALSE, TRUE, FALSE, FALSE, FALSE, FALSE, TRUE, TRUE, TRUE, TRUE, FALSE, FALSE, TRUE, TRUE,
@@ -84,9 +84,10 @@ report_step_kinds <- function(steps) {
 # `chunk(index, total)` for each chunk of the report, `done(path)` at the
 # end. Lines go to `out`; within a step a line at most every `every`
 # seconds. The time left comes from report_eta(), fed by `clock` (seconds);
-# `trace`, if a function, is called with the time so far and the estimate
-# of the time left at every update (steps, progress steps, chunks), printed
-# or not: bench/bench-eta.R compares them with the real time left.
+# `trace`, if a function, is called with the time so far, the estimate of
+# the time left (NA when none is made) and the event (a step, a progress
+# step, a chunk) at every update, printed or not: bench/bench-eta.R
+# compares them with the real time left.
 report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
                             clock = function() proc.time()[["elapsed"]],
                             trace = getOption("handmotion.progress_trace")) {
@@ -96,10 +97,10 @@ report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
   clock_text <- function(s) if (s < 90) sprintf("%.0f s", s) else sprintf("%.1f min", s / 60)
   eta <- NULL
   last_line <- start
-  left <- function() {
+  left <- function(event = "") {
     t <- now()
     l <- eta$left(t)
-    if (is.function(trace)) trace(t - start, l)
+    if (is.function(trace)) trace(t - start, l, event)
     l
   }
   begin_step <- function(label) {
@@ -121,7 +122,7 @@ report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
     step = function(label) {
       begin_step(label)
       k <- eta$steps_done()
-      est <- if (k) sprintf(", about %s left", clock_text(left())) else ""
+      est <- if (k) sprintf(", about %s left", clock_text(left(paste("step", label)))) else ""
       say(sprintf("  [%2d/%d] %s (%s so far%s)", min(k + 1L, n_steps()), n_steps(), label,
                   clock_text(now() - start), est))
     },
@@ -132,12 +133,13 @@ report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
       if (identical(eta$current(), steps[length(steps)])) return(invisible())
       type <- p$type %||% "update"
       if (identical(type, "initiate")) {
-        eta$initiate(p$steps %||% 0)
+        eta$initiate(p$steps %||% 0, now())
+        if (is.function(trace)) trace(now() - start, NA_real_, paste("initiate", p$steps %||% 0))
         return(invisible())
       }
       if (!identical(type, "update")) return(invisible())
       eta$tick(now(), p$amount %||% 1)
-      l <- left()
+      l <- left(paste("tick", p$amount %||% 1))
       if (now() - last_line >= every) {
         last_line <<- now()
         say(sprintf("         %s: %.0f%% (%s so far, about %s left)", eta$current(),
@@ -153,12 +155,12 @@ report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
       if (identical(current, steps[length(steps) - 1L]) && index > 0) {
         # the last step's chunk ended when a later chunk starts
         begin_step(last)
-        eta$initiate(total - index + 1)
+        eta$initiate(total - index + 1, now())
         say(sprintf("  [%d/%d] %s (%s so far, about %s left)", n_steps(), n_steps(), last,
-                    clock_text(now() - start), clock_text(left())))
+                    clock_text(now() - start), clock_text(left(paste("chunks", total - index + 1)))))
       } else if (identical(current, last)) {
         eta$tick(now())
-        l <- left()
+        l <- left("chunk")
         if (now() - last_line >= every) {
           last_line <<- now()
           say(sprintf("         %s: chunk %d of %d (%s so far, about %s left)", last, index, total,
@@ -167,7 +169,7 @@ report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
       }
     },
     done = function(path) {
-      if (is.function(trace)) trace(now() - start, 0)
+      if (is.function(trace)) trace(now() - start, 0, "done")
       say(sprintf("handmotion: report written in %s: %s", clock_text(now() - start), path))
       say("  tables in ", file.path(dirname(path), "tables"), ", figures in ", file.path(dirname(path), "figures"))
     }

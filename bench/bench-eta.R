@@ -14,9 +14,14 @@ source("bench/_common.R")
 design <- if (bench_quick) list(subjects = 4, grasps = c(9, 17, 22), loso_folds = 2) else list()
 if (future::supportsMulticore()) future::plan(future::multicore, workers = 2)
 log <- data.frame(t = numeric(), left = numeric())
-# every estimate the printer makes (R/report-progress.R)
+events <- data.frame(t = numeric(), left = numeric(), event = character())
+# every estimate the printer makes (R/report-progress.R), and every event
+# (saved with BENCH_ETA_EVENTS=file.rds, to replay them through report_eta())
 options(handmotion.progress = TRUE,
-        handmotion.progress_trace = function(so_far, left) log[nrow(log) + 1L, ] <<- c(so_far, left))
+        handmotion.progress_trace = function(so_far, left, event) {
+          events[nrow(events) + 1L, ] <<- list(so_far, left, event)
+          if (!is.na(left)) log[nrow(log) + 1L, ] <<- c(so_far, left)
+        })
 out <- tempfile("report")
 load0 <- load_avg()
 cpu0 <- proc.time()
@@ -30,6 +35,7 @@ tim <- utils::read.csv(file.path(out, "tables", "timings.csv"))
 unlink(out, recursive = TRUE)
 future::plan(future::sequential)
 
+if (nzchar(Sys.getenv("BENCH_ETA_EVENTS"))) saveRDS(events, Sys.getenv("BENCH_ETA_EVENTS"))
 total <- log$t[nrow(log)]
 log$real <- total - log$t
 log$share <- log$t / total

@@ -125,6 +125,25 @@ test_that("within a step the pace of its progress steps counts, not the workers'
   expect_equal(own, 60)
 })
 
+test_that("a count of progress steps that starts after the first is done has its own pace", {
+  # 10 folds of 6 s, then an in-sample fit counted in 20 types of 0.1 s:
+  # after the folds, the types' pace says what is left, not the folds'
+  cost <- c(folds = 60, page = 10)
+  kind <- c(folds = "NF/workers", page = "T")
+  eta <- report_eta(cost, kind)
+  eta$step("folds", 0)
+  eta$initiate(10, 0)
+  for (j in 1:10) eta$tick(6 * j)
+  eta$initiate(20, 60)
+  for (j in 1:5) eta$tick(60 + 0.1 * j)
+  # 5 of 20 done at 0.1 s each: 1.5 s left by its pace (the folds' 6 s per
+  # step would say 90 s); weight max(5 / 20, 4 / 7) on it, the rest the
+  # model's (60 s at rate 1, all spent)
+  w <- 4 / 7
+  expect_equal(eta$left(60.5), w * 15 * 0.1 + (1 - w) * 0 + 10)
+  expect_equal(eta$fraction(), 5 / 20)
+})
+
 test_that("a step the model does not know gets a median cost and its own kind", {
   cost <- c(a = 10, b = 20, c = 30)
   eta <- report_eta(cost, c(a = "x", b = "x", c = "x"))
@@ -141,7 +160,9 @@ test_that("the printer feeds the estimator its clock and reports every estimate"
   t <- 0
   seen <- list()
   bar <- report_progress(TRUE, out = con, every = 0, clock = function() t,
-                         trace = function(so_far, left) seen[[length(seen) + 1L]] <<- c(so_far, left))
+                         trace = function(so_far, left, event) {
+                           if (!is.na(left)) seen[[length(seen) + 1L]] <<- c(so_far, left)
+                         })
   settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
   cost <- report_step_costs(settings, workers = future::nbrOfWorkers())
   bar$begin(settings)
