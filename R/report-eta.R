@@ -21,8 +21,10 @@
 #   last progress step, so the workers' start before the first one is not
 #   counted as if every fold paid it; this rate is trusted as far as the
 #   step has gone or more with every progress step (tick_weight()), the
-#   rest comes from the model at the kind's rate.
-report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), names(cost)), prior = 5) {
+#   rest comes from the model at the kind's rate; as far as it is trusted,
+#   the step's projected time also counts in the rates of the steps after
+#   it.
+report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), names(cost)), prior = 20) {
   done <- character()       # finished steps, in order
   taken <- numeric()        # their measured seconds
   current <- NULL
@@ -37,10 +39,19 @@ report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), na
   # alone): a kind's rate is shrunk towards that of its mode (on the
   # workers or not), the mode's towards the overall rate
   mode_of <- function(k) ifelse(grepl("/workers$", k), "workers", "main")
-  rates <- function() {
+  # `now`: the current step's projection (its time so far and the rest by
+  # its own pace) counts as far as that pace is trusted, so a long step
+  # running faster or slower than the model says so for the steps after it
+  rates <- function(now = NULL) {
     pred <- cost[done]
-    overall <- (sum(taken) + prior) / (sum(pred) + prior)
+    taken <- taken
     k <- kind[done]
+    if (!is.null(now)) {
+      pred <- c(pred, now$w * cost[[current]])
+      taken <- c(taken, now$w * now$total)
+      k <- c(k, kind[[current]])
+    }
+    overall <- (sum(taken) + prior) / (sum(pred) + prior)
     m <- mode_of(k)
     per_mode <- c(workers = (sum(taken[m == "workers"]) + prior * overall) / (sum(pred[m == "workers"]) + prior),
                   main = (sum(taken[m == "main"]) + prior * overall) / (sum(pred[m == "main"]) + prior))
@@ -54,7 +65,8 @@ report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), na
   by_ticks <- function(t) {
     m <- length(ticks)
     if (!m || total_ticks <= 0 || ticks[m] <= 0) return(NA_real_)
-    per <- if (m >= 2L && ticks[m] > ticks[1]) {
+    # (folds on two workers end in pairs: the slope needs a few of them)
+    per <- if (m >= 4L && ticks[m] > ticks[1]) {
       (tick_t[m] - tick_t[1]) / (ticks[m] - ticks[1])
     } else (tick_t[m] - phase_start) / ticks[m]
     max(0, per * (total_ticks - ticks[m]) - (t - tick_t[m]))
@@ -113,18 +125,21 @@ report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), na
     },
     # seconds left at time t
     left = function(t) {
-      r <- rates()
       rest <- setdiff(names(cost), c(done, current))
-      after <- sum(r$kind[kind[rest]] * cost[rest])
-      if (is.null(current)) return(after)
-      model <- max(0, r$kind[[kind[[current]]]] * cost[[current]] - (t - step_start))
-      own <- by_ticks(t)
-      cur <- if (is.na(own)) model else {
-        w <- tick_weight()
-        (1 - w) * model + w * own
+      if (is.null(current)) {
+        r <- rates()
+        return(sum(r$kind[kind[rest]] * cost[rest]))
       }
-      cur + after
+      own <- by_ticks(t)
+      w <- if (is.na(own)) 0 else tick_weight()
+      # (into the rates only a pace from the slope of four or more)
+      r <- rates(if (w > 0 && length(ticks) >= 4L) list(w = w, total = t - step_start + own))
+      model <- max(0, r$kind[[kind[[current]]]] * cost[[current]] - (t - step_start))
+      cur <- if (is.na(own)) model else (1 - w) * model + w * own
+      cur + sum(r$kind[kind[rest]] * cost[rest])
     },
+    # the rest of the current step by its own pace alone (NA: no pace yet)
+    by_ticks = by_ticks,
     current = function() current,
     steps_done = function() length(done),
     costs = function() cost

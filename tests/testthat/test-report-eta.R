@@ -6,8 +6,9 @@
 # progress steps per step (0: none) taking equal shares of the step after
 # a start-up of `startup` seconds. Returns the estimate and the true time
 # left at every update.
-plant_run <- function(cost, kind, true, ticks = rep(0, length(cost)), startup = rep(0, length(cost))) {
-  eta <- report_eta(cost, kind)
+plant_run <- function(cost, kind, true, ticks = rep(0, length(cost)), startup = rep(0, length(cost)),
+                      prior = 20) {
+  eta <- report_eta(cost, kind, prior = prior)
   total <- sum(true)
   t <- 0
   log <- data.frame(t = numeric(), est = numeric(), real = numeric())
@@ -31,8 +32,8 @@ plant_run <- function(cost, kind, true, ticks = rep(0, length(cost)), startup = 
 test_that("steps running at a constant multiple of the model are predicted exactly once one has run", {
   cost <- c(a = 2, b = 10, c = 50, d = 5, e = 20)
   kind <- c(a = "x", b = "x", c = "x", d = "x", e = "x")
-  log <- plant_run(cost, kind, true = 1.7 * cost)
-  # with the (small) prior of rate 1 the estimate approaches 1.7 as steps
+  log <- plant_run(cost, kind, true = 1.7 * cost, prior = 5)
+  # with a small prior of rate 1 the estimate approaches 1.7 as steps
   # finish; after a tenth of the work it is within 5%
   late <- log[log$t >= 0.1 * sum(1.7 * cost) & log$real > 0, ]
   expect_lt(max(abs(late$est / late$real - 1)), 0.05)
@@ -103,14 +104,19 @@ test_that("within a step the pace of its progress steps counts, not the workers'
   eta$tick(5 + 10 + 3)
   eta$tick(5 + 10 + 6)
   # two progress steps: trusted a quarter ((2 - 1) / (2 + 2), more than
-  # the 2 / 30 of the step done)
+  # the 2 / 30 of the step done); with fewer than four their pace is the
+  # step's time over their count (8 s each), the slope needs more (two
+  # workers end their folds in pairs)
   w <- 1 / 4
-  by_ticks <- 3 * 28
+  by_ticks <- 8 * 28
   by_model <- 60 - 16
+  expect_equal(eta$by_ticks(21), by_ticks)
   expect_equal(eta$left(21), (1 - w) * by_model + w * by_ticks + 10)
   expect_equal(eta$fraction(), 2 / 30)
-  # from the fifth fold on, within 25% of the true time left
-  late <- in_folds[in_folds$t >= 5 + 10 + 5 * 3, ]
+  # from the sixth fold on, within 25% of the true time left while 15 s
+  # or more remain (the page after the folds is predicted at the folds'
+  # slower pace: 13.8 s for its 10)
+  late <- in_folds[in_folds$t >= 5 + 10 + 6 * 3 & in_folds$real >= 15, ]
   expect_lt(max(abs(late$est / late$real - 1)), 0.25)
   # (counting the start-up in the pace, as a plain time / folds rate does,
   # would have said 20 * (10 + 3 * 10) / 10 = 80 s after the tenth fold for
@@ -120,9 +126,10 @@ test_that("within a step the pace of its progress steps counts, not the workers'
   eta2$step("folds", 5)
   eta2$initiate(30)
   for (j in 1:10) eta2$tick(15 + 3 * j)
-  w <- 9 / 12
-  own <- (eta2$left(45) - 10 - (1 - w) * max(0, 60 - 40)) / w
-  expect_equal(own, 60)
+  expect_equal(eta2$by_ticks(45), 60)
+  # and the step's projection (40 + 60 s for the model's 60) raises the
+  # rate of what follows: the page is predicted above its model's 10 s
+  expect_gt(eta2$left(45) - 0.75 * 60, 0.25 * max(0, 60 - 40) + 10)
 })
 
 test_that("a count of progress steps that starts after the first is done has its own pace", {
@@ -137,11 +144,12 @@ test_that("a count of progress steps that starts after the first is done has its
   eta$initiate(20, 60)
   for (j in 1:5) eta$tick(60 + 0.1 * j)
   # 5 of 20 done at 0.1 s each: 1.5 s left by its pace (the folds' 6 s per
-  # step would say 90 s); weight max(5 / 20, 4 / 7) on it, the rest the
-  # model's (60 s at rate 1, all spent)
-  w <- 4 / 7
-  expect_equal(eta$left(60.5), w * 15 * 0.1 + (1 - w) * 0 + 10)
+  # step would say 90 s), trusted max(5 / 20, 4 / 7); with the model's
+  # rest (60 s at about rate 1: about spent) and the page, about 11 s
+  expect_equal(eta$by_ticks(60.5), 1.5)
   expect_equal(eta$fraction(), 5 / 20)
+  expect_lt(eta$left(60.5), 13)
+  expect_gt(eta$left(60.5), 10)
 })
 
 test_that("a step the model does not know gets a median cost and its own kind", {
