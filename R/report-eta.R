@@ -17,9 +17,9 @@
 #   held-out folds is not applied unchanged to the quick fits and tables
 #   after them;
 # * within a step, the times of its progress steps (folds, horizons,
-#   chunks): the time per progress step is the slope between its first and
-#   last progress step, so the workers' start before the first one is not
-#   counted as if every fold paid it; this rate is trusted as far as the
+#   chunks): the time per progress step is the least-squares slope of
+#   their times (from six on), so the workers' start before the first one
+#   is not counted as if every fold paid it; this rate is trusted as far as the
 #   step has gone or more with every progress step (tick_weight()), the
 #   rest comes from the model at the kind's rate; as far as it is trusted,
 #   the step's projected time also counts in the rates of the steps after
@@ -65,19 +65,23 @@ report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), na
   by_ticks <- function(t) {
     m <- length(ticks)
     if (!m || total_ticks <= 0 || ticks[m] <= 0) return(NA_real_)
-    # (folds on two workers end in pairs: the slope needs a few of them)
-    per <- if (m >= 4L && ticks[m] > ticks[1]) {
-      (tick_t[m] - tick_t[1]) / (ticks[m] - ticks[1])
+    # (folds on two workers end in pairs: the slope is fitted to all of
+    # them, least squares, once there are a few pairs)
+    per <- if (m >= 6L && ticks[m] > ticks[1]) {
+      x <- ticks - mean(ticks)
+      sum(x * (tick_t - mean(tick_t))) / sum(x^2)
     } else (tick_t[m] - phase_start) / ticks[m]
     max(0, per * (total_ticks - ticks[m]) - (t - tick_t[m]))
   }
   # how far the progress steps' pace is trusted: as far as the step has
-  # gone, and more with every progress step (one alone says little: its
-  # time includes the start-up; three say as much as the model)
+  # gone, and from the sixth progress step on more with every one (their
+  # slope)
   tick_weight <- function() {
     m <- length(ticks)
     f <- if (total_ticks > 0 && m) min(1, ticks[m] / total_ticks) else 0
-    max(f, (m - 1) / (m + 2))
+    # (fewer than six: a pace with the start-up in it, trusted only as far
+    # as the step has gone)
+    if (m < 6L) f else max(f, (m - 1) / (m + 2))
   }
   list(
     # `label` starts at time t (the step before it ends then)
@@ -132,8 +136,8 @@ report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), na
       }
       own <- by_ticks(t)
       w <- if (is.na(own)) 0 else tick_weight()
-      # (into the rates only a pace from the slope of four or more)
-      r <- rates(if (w > 0 && length(ticks) >= 4L) list(w = w, total = t - step_start + own))
+      # (into the rates only a pace from the slope of six or more)
+      r <- rates(if (w > 0 && length(ticks) >= 6L) list(w = w, total = t - step_start + own))
       model <- max(0, r$kind[[kind[[current]]]] * cost[[current]] - (t - step_start))
       cur <- if (is.na(own)) model else (1 - w) * model + w * own
       cur + sum(r$kind[kind[rest]] * cost[rest])

@@ -103,11 +103,11 @@ test_that("within a step the pace of its progress steps counts, not the workers'
   eta$initiate(30)
   eta$tick(5 + 10 + 3)
   eta$tick(5 + 10 + 6)
-  # two progress steps: trusted a quarter ((2 - 1) / (2 + 2), more than
-  # the 2 / 30 of the step done); with fewer than four their pace is the
-  # step's time over their count (8 s each), the slope needs more (two
-  # workers end their folds in pairs)
-  w <- 1 / 4
+  # two progress steps: with fewer than six their pace is the step's time
+  # over their count (8 s each: the start-up in it), trusted as far as the
+  # step has gone (2 / 30); the slope needs more (two workers end their
+  # folds in pairs)
+  w <- 2 / 30
   by_ticks <- 8 * 28
   by_model <- 60 - 16
   expect_equal(eta$by_ticks(21), by_ticks)
@@ -132,6 +132,20 @@ test_that("within a step the pace of its progress steps counts, not the workers'
   expect_gt(eta2$left(45) - 0.75 * 60, 0.25 * max(0, 60 - 40) + 10)
 })
 
+test_that("folds ending in pairs (two workers) give the pace of one fold", {
+  # 30 folds on two workers: two end together every 8 s (4 s a fold) after
+  # a 6 s start-up; after 3 pairs the pace is 4 s a fold within 10% (the
+  # slope between the first and last would say 3.3 s)
+  cost <- c(folds = 120)
+  eta <- report_eta(cost, c(folds = "NF/workers"))
+  eta$step("folds", 0)
+  eta$initiate(30, 0)
+  at <- 6 + rep(8 * (1:3), each = 2) + rep(c(0, 0.1), 3)
+  for (t in at) eta$tick(t)
+  per <- eta$by_ticks(at[6]) / 24
+  expect_equal(per, 4, tolerance = 0.1)
+})
+
 test_that("a count of progress steps that starts after the first is done has its own pace", {
   # 10 folds of 6 s, then an in-sample fit counted in 20 types of 0.1 s:
   # after the folds, the types' pace says what is left, not the folds'
@@ -144,7 +158,7 @@ test_that("a count of progress steps that starts after the first is done has its
   eta$initiate(20, 60)
   for (j in 1:5) eta$tick(60 + 0.1 * j)
   # 5 of 20 done at 0.1 s each: 1.5 s left by its pace (the folds' 6 s per
-  # step would say 90 s), trusted max(5 / 20, 4 / 7); with the model's
+  # step would say 90 s), trusted as far as it has gone (5 / 20); with the model's
   # rest (60 s at about rate 1: about spent) and the page, about 11 s
   expect_equal(eta$by_ticks(60.5), 1.5)
   expect_equal(eta$fraction(), 5 / 20)
