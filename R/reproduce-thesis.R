@@ -44,8 +44,10 @@
 #' recognition, the chunks of the page after the last step) a line at most
 #' every 15 s. The estimate starts from a cost model of the design
 #' (recordings, types, folds, workers) and follows the measured pace: the
-#' time the finished steps took against the model, and within a step the
-#' rate of its own folds or horizons. `progress = FALSE` or
+#' time the finished steps of each kind (held-out folds on the workers,
+#' fits, tables) took against the model, and within a step the rate of its
+#' own folds or horizons, which also informs the steps after it.
+#' `progress = FALSE` or
 #' `options(handmotion.progress = FALSE)` keeps it silent.
 #'
 #' The vignette `vignette("reproduce-thesis", package = "handmotion")`
