@@ -26,8 +26,9 @@ report_chunk_signal <- function(label) {
 # 33 types, leave-one-subject-out) on one worker, from its start to the next
 # step's (so with the tables and figures drawn in between: most of them
 # after the frame-PCA step): bench/bench-eta.R (`make demo`'s run) on the
-# 2-core machine (the mean of the runs of 270 and 246 s on 2 workers at
-# load 2-4; the FPCA folds also with a run of 310 s), parallel steps
+# 2-core machine (the mean of three runs of 220-270 s on 2 workers at load
+# 1.5-4: the held-out steps after the FPCA folds took half as long in the
+# quietest), parallel steps
 # counted twice (the FPCA folds: 30 refits of the 33 models with one
 # Gaussian, saved for the weighted FPCA folds, which read them, are more
 # than half of it); `scale` says how it
@@ -49,7 +50,7 @@ report_step_model <- data.frame(
            "recognition: weighted FPCA distance (learn weights)", "recognition: shrinkage LDA (fit)",
            "recognition: classify the held-out subjects", "recognition: early recognition, held out by subject",
            "the figures and the page"),
-  seconds = c(1, 17, 1.1, 1.4, 0.3, 0.1, 310, 60, 47, 31, 0.9, 7.8, 8.6, 5.7, 6.4, 11, 0.1, 0.3, 1.8, 7.6, 1.5),
+  seconds = c(1, 17, 1.1, 1.4, 0.3, 0.1, 283, 50, 40, 27, 0.9, 7.8, 8.6, 5.7, 6.4, 11, 0.1, 0.3, 1.8, 7.6, 1.5),
   scale = c("N", "N", "NT", "N", "N", "T", "NF", "NF", "NF", "NF", "const", "T", "N", "N", "NT", "N",
             "NT", "N", "NT", "NF", "T"),
   parallel = c(FALSE, TRUE, FALSE, FALSE, FALSE, FALSE, TRUE, TRUE, TRUE, TRUE, FALSE, FALSE, TRUE, TRUE,
