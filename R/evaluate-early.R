@@ -18,7 +18,11 @@
 #' progress bar (one step per horizon, through `progressr`) appears after
 #' 2 s; `options(handmotion.progress = FALSE)` turns it off.
 #' The folds are those of [evaluate_loso()]: by subject with two or
-#' more subjects, else stratified folds of recordings (`split`).
+#' more subjects, else stratified folds of recordings (`split`); by default
+#' one fold per subject up to 30 subjects, and 30 seeded groups of subjects
+#' beyond that, so that the cost grows with the data, not with its square
+#' (every fold's discriminant at every horizon passes over its training
+#' recordings once).
 #'
 #' **Recordings that start at rest.** When the recordings are mostly still
 #' (the rule of `fit_grasp_model(motion = "auto")`), time counts from the
@@ -34,7 +38,8 @@
 #'   need (a few for `ms` alone), the same fits [fit_grasp_recognizer()]
 #'   makes at those horizons.
 #' @param folds,seed,split As in [evaluate_loso()]: `folds` `NULL` is one
-#'   fold per subject, or 5 folds of recordings.
+#'   fold per subject (at most 30 folds: with more subjects, 30 groups of
+#'   subjects), or 5 folds of recordings.
 #' @param ... Passed to [fit_grasp_recognizer()] (`at`, `horizon`).
 #' @return A data frame of class `early_recognition` with columns `scale`
 #'   (`"ms"` or `"fraction"`), `value`, `accuracy`, `n` (recordings) and
@@ -76,7 +81,7 @@ evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractio
   check_training_labels(x, call = call)
   old_rng <- save_rng()
   on.exit(restore_rng(old_rng), add = TRUE)
-  groups <- make_folds(x, split, folds, seed, call = call)
+  groups <- make_folds(x, split, early_folds(x, split, folds), seed, call = call)
   # recordings that rest before the grasp: time counts from the onset a
   # detector finds in each recording (fitted on the joint speed of all of
   # them: labels are not used, so nothing of the held-out classes leaks)
@@ -93,6 +98,19 @@ evaluate_early_recognition <- function(x, ms = seq(100, 1000, by = 100), fractio
   structure(agg, class = c("early_recognition", "data.frame"),
             scheme = attr(groups, "scheme"),
             classes = length(unique(x$meta$grasp)))
+}
+
+# The number of folds by default: leave-one-subject-out holds out each of S
+# subjects, and each fold's fit passes over its ~N training recordings at
+# every horizon, so its cost grows as S x N, the square of the data when
+# more data means more subjects. Up to `max_folds` subjects (the default
+# data's 30) that is kept; beyond, the subjects are dealt into `max_folds`
+# seeded groups (the same held-out question on a few more subjects at a
+# time), and ten times the subjects cost about ten times the time.
+early_folds <- function(x, split, folds, max_folds = 30L) {
+  if (!is.null(folds) || identical(split[1], "recording")) return(folds)
+  n_subjects <- length(unique(stats::na.omit(x$meta$subject)))
+  if (n_subjects > max_folds) max_folds else NULL
 }
 
 # The held-out counts of every fold (a logical test mask each) and view (a

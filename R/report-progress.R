@@ -25,16 +25,19 @@ report_chunk_signal <- function(label) {
 # design): `seconds` is the step's time on the default design (30 subjects x
 # 33 types, leave-one-subject-out) on one worker, from its start to the next
 # step's (so with the tables and figures drawn in between: most of them
-# after the frame-PCA step): `make demo` on the 2-core machine after the
-# speed-ups of issue 36 (214 s on 2 workers, shared machine), parallel steps
+# after the frame-PCA step): bench/bench-eta.R (`make demo`'s run) on the
+# 2-core machine (the mean of three runs of 220-270 s on 2 workers at load
+# 1.5-4: the held-out steps after the FPCA folds took half as long in the
+# quietest), parallel steps
 # counted twice (the FPCA folds: 30 refits of the 33 models with one
 # Gaussian, saved for the weighted FPCA folds, which read them, are more
 # than half of it); `scale` says how it
 # grows with the design (recordings N, types T, folds F) and `parallel`
 # whether its folds or types share the future workers. While the report
-# runs, the seconds are rescaled by the measured rate: the time the finished
-# steps took against what the model predicted for them, and within a step
-# by the rate of its own progress steps (folds, types, horizons, chunks).
+# runs, report_eta() rescales the seconds by the measured rates: the time
+# the finished steps took against what the model predicted for them (per
+# kind of step), and within a step the rate of its own progress steps
+# (folds, types, horizons, chunks).
 report_step_model <- data.frame(
   step = c("simulate the data", "fit the grasp models", "classify by FPCA distance (in-sample)",
            "fit last-frame PCA", "classify by last-frame PCA (in-sample)", "generate three grasps per type",
@@ -47,7 +50,7 @@ report_step_model <- data.frame(
            "recognition: weighted FPCA distance (learn weights)", "recognition: shrinkage LDA (fit)",
            "recognition: classify the held-out subjects", "recognition: early recognition, held out by subject",
            "the figures and the page"),
-  seconds = c(1, 12, 1.2, 0.2, 0.3, 0.1, 248, 12, 36, 36, 1, 12, 12, 12, 4, 12, 1, 3, 3, 6, 6),
+  seconds = c(1, 17, 1.1, 1.4, 0.3, 0.1, 283, 50, 40, 27, 0.9, 7.8, 8.6, 5.7, 6.4, 11, 0.1, 0.3, 1.8, 7.6, 1.5),
   scale = c("N", "N", "NT", "N", "N", "T", "NF", "NF", "NF", "NF", "const", "T", "N", "N", "NT", "N",
             "NT", "N", "NT", "NF", "T"),
   parallel = c(FALSE, TRUE, FALSE, FALSE, FALSE, FALSE, TRUE, TRUE, TRUE, TRUE, FALSE, FALSE, TRUE, TRUE,
@@ -70,114 +73,106 @@ report_step_costs <- function(settings, workers = 1L) {
   stats::setNames(per / share, m$step)
 }
 
+# The kind of every step (steps of one kind share their error against the
+# model, report_eta()): how it grows and whether it runs on the workers.
+report_step_kinds <- function(steps) {
+  m <- report_step_model
+  kind <- paste0(m$scale, ifelse(m$parallel, "/workers", ""))
+  stats::setNames(kind[match(steps, m$step)], steps)
+}
+
 # A progress printer for one report: `begin(settings)`, `step(label)` as each
 # step starts, `tick(p)` for each progressr progression inside a step,
 # `chunk(index, total)` for each chunk of the report, `done(path)` at the
 # end. Lines go to `out`; within a step a line at most every `every`
-# seconds.
-report_progress <- function(enabled = TRUE, out = stderr(), every = 15) {
-  now <- function() proc.time()[["elapsed"]]
+# seconds. The time left comes from report_eta(), fed by `clock` (seconds);
+# `trace`, if a function, is called with the time so far, the estimate of
+# the time left (NA when none is made) and the event (a step, a progress
+# step, a chunk) at every update, printed or not: bench/bench-eta.R
+# compares them with the real time left.
+report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
+                            clock = function() proc.time()[["elapsed"]],
+                            trace = getOption("handmotion.progress_trace")) {
+  now <- clock
   start <- now()
   say <- function(...) if (enabled) cat(..., "\n", sep = "", file = out)
-  clock <- function(s) if (s < 90) sprintf("%.0f s", s) else sprintf("%.1f min", s / 60)
-  cost <- NULL          # predicted seconds per step
-  done <- character()   # steps finished
-  taken <- numeric()    # their measured seconds
-  current <- NULL       # the step running, its start, its progress steps
-  step_start <- start
-  ticks <- c(done = 0, total = 0)
+  clock_text <- function(s) if (s < 90) sprintf("%.0f s", s) else sprintf("%.1f min", s / 60)
+  eta <- NULL
   last_line <- start
-  # the measured rate: what the finished steps took against their prediction
-  rate <- function() {
-    pred <- sum(cost[done])
-    if (pred <= 0 || sum(taken) < 1) return(1)
-    sum(taken) / pred
-  }
-  # seconds left: the rest of the current step (from its own progress rate
-  # once it has one) and the steps after it at the measured rate
-  left <- function() {
-    r <- rate()
-    rest <- setdiff(names(cost), c(done, current))
-    in_step <- now() - step_start
-    cur <- 0
-    if (!is.null(current)) {
-      by_model <- max(0, cost[[current]] * r - in_step)
-      # the step's own pace, trusted as far as the step has gone (its first
-      # folds also carry the workers' start)
-      f <- if (ticks[["total"]] > 0) min(1, ticks[["done"]] / ticks[["total"]]) else 0
-      cur <- if (f > 0 && in_step > 1) {
-        (1 - f) * by_model + f * in_step * (ticks[["total"]] - ticks[["done"]]) / ticks[["done"]]
-      } else by_model
-    }
-    cur + r * sum(cost[rest])
-  }
-  finish_current <- function() {
-    if (!is.null(current)) {
-      done <<- c(done, current)
-      taken <<- c(taken, now() - step_start)
-    }
+  left <- function(event = "") {
+    t <- now()
+    l <- eta$left(t)
+    if (is.function(trace)) trace(t - start, l, event)
+    l
   }
   begin_step <- function(label) {
-    finish_current()
-    if (!label %in% names(cost)) cost[[label]] <<- stats::median(cost)
-    current <<- label
-    step_start <<- now()
-    last_line <<- step_start
-    ticks[] <<- 0
+    eta$step(label, now())
+    last_line <<- now()
   }
-  n_steps <- function() length(cost) - 1L
+  n_steps <- function() length(eta$costs()) - 1L
   list(
     begin = function(settings) {
       workers <- if (requireNamespace("future", quietly = TRUE)) future::nbrOfWorkers() else 1L
-      cost <<- report_step_costs(settings, workers)
+      cost <- report_step_costs(settings, workers)
+      eta <<- report_eta(cost, report_step_kinds(names(cost)))
       say(sprintf("handmotion: reproducing the thesis' chapter 5 (%d subjects x %d grasp types, %s) on %d worker%s",
                   settings$subjects, length(settings$grasps),
                   if (is.null(settings$loso_folds)) "leave-one-subject-out" else paste(settings$loso_folds, "folds"),
                   workers, if (workers == 1L) "" else "s"))
-      say(sprintf("  (about %s by the design; the estimate follows the measured pace)", clock(sum(cost))))
+      say(sprintf("  (about %s by the design; the estimate follows the measured pace)", clock_text(sum(cost))))
     },
     step = function(label) {
       begin_step(label)
-      el <- now() - start
-      est <- if (length(done)) sprintf(", about %s left", clock(left())) else ""
-      say(sprintf("  [%2d/%d] %s (%s so far%s)", min(length(done) + 1L, n_steps()), n_steps(), label,
-                  clock(el), est))
+      k <- eta$steps_done()
+      est <- if (k) sprintf(", about %s left", clock_text(left(paste("step", label)))) else ""
+      say(sprintf("  [%2d/%d] %s (%s so far%s)", min(k + 1L, n_steps()), n_steps(), label,
+                  clock_text(now() - start), est))
     },
     tick = function(p) {
-      if (is.null(current)) return(invisible())
+      if (is.null(eta) || is.null(eta$current())) return(invisible())
+      # the last step counts the page's chunks, not the calls inside them
+      steps <- names(eta$costs())
+      if (identical(eta$current(), steps[length(steps)])) return(invisible())
       type <- p$type %||% "update"
       if (identical(type, "initiate")) {
-        ticks[["total"]] <<- ticks[["total"]] + (p$steps %||% 0)
-      } else if (identical(type, "update")) {
-        ticks[["done"]] <<- ticks[["done"]] + (p$amount %||% 1)
+        eta$initiate(p$steps %||% 0, now())
+        if (is.function(trace)) trace(now() - start, NA_real_, paste("initiate", p$steps %||% 0))
+        return(invisible())
       }
-      if (now() - last_line >= every && ticks[["total"]] > 0) {
+      if (!identical(type, "update")) return(invisible())
+      eta$tick(now(), p$amount %||% 1)
+      l <- left(paste("tick", p$amount %||% 1))
+      if (now() - last_line >= every) {
         last_line <<- now()
-        say(sprintf("         %s: %.0f%% (%s so far, about %s left)", current,
-                    100 * min(1, ticks[["done"]] / ticks[["total"]]), clock(now() - start), clock(left())))
+        say(sprintf("         %s: %.0f%% (%s so far, about %s left)", eta$current(),
+                    100 * eta$fraction(), clock_text(now() - start), clock_text(l)))
       }
     },
     chunk = function(index, total) {
+      if (is.null(eta)) return(invisible())
       # after the last step, the remaining chunks are "the figures and the page"
-      last <- names(cost)[length(cost)]
-      if (!is.null(current) && current == names(cost)[length(cost) - 1L] && index > 0 &&
-          now() - step_start > 0) {
+      steps <- names(eta$costs())
+      last <- steps[length(steps)]
+      current <- eta$current()
+      if (identical(current, steps[length(steps) - 1L]) && index > 0) {
         # the last step's chunk ended when a later chunk starts
         begin_step(last)
+        eta$initiate(total - index + 1, now())
         say(sprintf("  [%d/%d] %s (%s so far, about %s left)", n_steps(), n_steps(), last,
-                    clock(now() - start), clock(left())))
-        ticks[["total"]] <<- total - index + 1
+                    clock_text(now() - start), clock_text(left(paste("chunks", total - index + 1)))))
       } else if (identical(current, last)) {
-        ticks[["done"]] <<- ticks[["done"]] + 1
+        eta$tick(now())
+        l <- left("chunk")
         if (now() - last_line >= every) {
           last_line <<- now()
           say(sprintf("         %s: chunk %d of %d (%s so far, about %s left)", last, index, total,
-                      clock(now() - start), clock(left())))
+                      clock_text(now() - start), clock_text(l)))
         }
       }
     },
     done = function(path) {
-      say(sprintf("handmotion: report written in %s: %s", clock(now() - start), path))
+      if (is.function(trace)) trace(now() - start, 0, "done")
+      say(sprintf("handmotion: report written in %s: %s", clock_text(now() - start), path))
       say("  tables in ", file.path(dirname(path), "tables"), ", figures in ", file.path(dirname(path), "figures"))
     }
   )

@@ -44,8 +44,10 @@
 #' recognition, the chunks of the page after the last step) a line at most
 #' every 15 s. The estimate starts from a cost model of the design
 #' (recordings, types, folds, workers) and follows the measured pace: the
-#' time the finished steps took against the model, and within a step the
-#' rate of its own folds or horizons. `progress = FALSE` or
+#' time the finished steps of each kind (held-out folds on the workers,
+#' fits, tables) took against the model, and within a step the rate of its
+#' own folds or horizons, which also informs the steps after it.
+#' `progress = FALSE` or
 #' `options(handmotion.progress = FALSE)` keeps it silent.
 #'
 #' The vignette `vignette("reproduce-thesis", package = "handmotion")`
@@ -70,9 +72,11 @@
 #' @export
 #' @examples
 #' \donttest{
+#' # the README's quick design (the article "Reproducing the thesis' chapter 5"
+#' # shows the report of a larger one)
 #' if (rmarkdown::pandoc_available()) {
-#'   out <- reproduce_thesis(tempfile("report"), subjects = 3, grasps = c(9, 17, 25),
-#'                           loso_folds = 3)
+#'   out <- reproduce_thesis(tempfile("report"), subjects = 2, grasps = c(17, 25),
+#'                           loso_folds = 2)
 #'   list.files(dirname(out), recursive = TRUE)
 #' }
 #' }

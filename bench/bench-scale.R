@@ -13,8 +13,15 @@
 # Peak memory is the kernel's high-water mark of resident memory (VmHWM),
 # reset before each step (/proc/<pid>/clear_refs), for the main process and
 # for each worker.
+# Early recognition is timed as a user calls it, with its default folds:
+# leave-one-subject-out on the default data's 30 subjects, and on 300
+# subjects 30 groups of subjects (evaluate_early_recognition() holds out at
+# most 30 folds; one fold per subject would make its cost grow as subjects
+# x recordings).
 # Run from the repository root: Rscript bench/bench-scale.R (BENCH_QUICK=1:
-# three types, 3 against 30 subjects, seconds)
+# three types, 3 against 30 subjects, seconds); `Rscript
+# bench/bench-scale.R early` times only early recognition (simulated data,
+# no fits; a few minutes).
 source("bench/_common.R")
 
 sizes <- c(x1 = bq(30, 3), x10 = bq(300, 30))
@@ -38,6 +45,17 @@ workers <- worker_pids()
 warm_up <- function() invisible(fit_grasp_models(simulate_grasps(subjects = 2, grasps = 1:2, seed = 9), seed = 1))
 warm_up()
 
+only_early <- "early" %in% commandArgs(trailingOnly = TRUE)
+measure_early <- function(subjects) {
+  g <- simulate_grasps(subjects = subjects, grasps = types)
+  future::plan(forked, workers = 2)
+  gc()
+  t_early <- system.time(er <- evaluate_early_recognition(g, folds = early_folds))
+  future::plan(future::sequential)
+  c(recordings = length(g), early = t_early[["elapsed"]], early_cpu_main = cpu_of(t_early),
+    folds = if (attr(er, "scheme") == "leave-one-subject-out") length(unique(g$meta$subject))
+            else as.numeric(sub("^leave-group-out \\(([0-9]+) .*", "\\1", attr(er, "scheme"))))
+}
 measure <- function(subjects) {
   gc()
   reset_hwm(Sys.getpid())
@@ -58,8 +76,8 @@ measure <- function(subjects) {
   acc <- mean(as.character(cl$predictions$predicted) == as.character(cl$predictions$truth))
   # early recognition and the naturalness evaluation on forked workers (the
   # recordings are not copied to them); early recognition in `early_folds`
-  # subject groups at both sizes: the same evaluation of ten times the data
-  # (leave-one-subject-out would also have ten times the folds)
+  # (default folds: leave-one-subject-out at 30 subjects, 30 groups of
+  # subjects at 300)
   future::plan(forked, workers = 2)
   t_early <- system.time(evaluate_early_recognition(g, folds = early_folds))
   sn <- as.integer(sub("^S", "", g$meta$subject))
@@ -77,12 +95,24 @@ measure <- function(subjects) {
     mem_workers = mem_workers, mem_classify = mem_cl, accuracy = acc, early = t_early[["elapsed"]],
     early_cpu_main = cpu_of(t_early), generation = t_gen[["elapsed"]], generation_cpu_main = cpu_of(t_gen))
 }
-early_folds <- bq(10L, 3L)
+early_folds <- bq(NULL, 3L)
 # ten times the recordings are 600 MB: more than future's default cap on
 # what a worker is given (forked workers share it anyway)
 options(future.globals.maxSize = Inf)
 # (plan() reads its strategy unevaluated: name it here)
 forked <- if (future::supportsMulticore()) future::multicore else future::multisession
+if (only_early) {
+  res <- vapply(sizes, measure_early, numeric(4))
+  cat(sprintf("\n%-44s %10s %10s %10s\n", "", names(sizes)[1], names(sizes)[2], "ratio"))
+  lab <- c(recordings = "recordings", folds = "folds (default)", early = "early recognition, 2 workers, elapsed (s)",
+           early_cpu_main = "early recognition, CPU incl. workers (s)")
+  for (f in names(lab)) cat(sprintf("%-44s %10.4g %10.4g %10.3g\n", lab[[f]], res[f, 1], res[f, 2], res[f, 2] / res[f, 1]))
+  for (f in c("early", "early_cpu_main")) bench_record(paste0(lab[[f]], ", 10x / 1x"), res[f, 2] / res[f, 1], "x")
+  r <- res["early", 2] / res["early", 1]
+  cat(sprintf("\ncost growth of early recognition, 10x / 1x (goal 12 or less): %.1f elapsed (%s), %.1f CPU; load average %s\n",
+              r, if (r <= 12) "met" else "MISSED", res["early_cpu_main", 2] / res["early_cpu_main", 1], format(load_avg())))
+  quit(save = "no")
+}
 res <- vapply(sizes, measure, numeric(17))
 future::plan(future::sequential)
 
@@ -92,7 +122,8 @@ labels <- c(recordings = "recordings", simulate = "simulate, elapsed (s)", fit =
             at_cap = "EM runs at the 5000 cap", mem_simulate = "peak memory, simulate (GB)",
             mem_fit = "peak memory, fit, main (GB)", mem_workers = "peak memory, fit, a worker (GB)",
             mem_classify = "peak memory, classify, main (GB)", accuracy = "in-sample accuracy",
-            early = sprintf("early recognition, %d folds, 2 workers, elapsed (s)", early_folds),
+            early = if (is.null(early_folds)) "early recognition, default folds, 2 workers, elapsed (s)"
+                    else sprintf("early recognition, %d folds, 2 workers, elapsed (s)", early_folds),
             early_cpu_main = "early recognition, main-process CPU (s)",
             generation = "evaluate_generation(), 2 sets, reps 5, elapsed (s)",
             generation_cpu_main = "evaluate_generation(), CPU (s)")

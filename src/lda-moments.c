@@ -33,19 +33,26 @@ SEXP hm_lda_w2(SEXP F, SEXP rows, SEXP cls, SEXP means, SEXP inv_s) {
     if (ci[q] < 1 || ci[q] > K) error("lda kernel: class %d out of range", ci[q]);
   }
   const double *X = REAL(F), *M = REAL(means), *s = REAL(inv_s);
-  long double w2 = 0;
-  for (R_xlen_t q = 0; q < m; q++) {
-    if ((q & 4095) == 4095) R_CheckUserInterrupt();
-    const R_xlen_t r = ri[q] - 1;
-    const int c = ci[q] - 1;
-    double sq = 0, q4 = 0;
-    for (int i = 0; i < d; i++) {
-      const double x = (X[r + n * i] - M[c + (R_xlen_t) K * i]) * s[i];
+  /* Feature by feature (down each column of F, whose rows are used in
+   * increasing order), each row's two sums kept in sq[] and q4[]: row by
+   * row, every feature of a row is on another cache line, and with 10^5
+   * rows each step missed the cache (ten times the rows took 14 times the
+   * time). Each row's sums add the features in the same order as before,
+   * and the rows add up in the same order: the same result to the bit. */
+  double *sq = (double *) R_alloc(m > 0 ? m : 1, sizeof(double));
+  double *q4 = (double *) R_alloc(m > 0 ? m : 1, sizeof(double));
+  for (R_xlen_t q = 0; q < m; q++) sq[q] = q4[q] = 0;
+  for (int i = 0; i < d; i++) {
+    if ((i & 15) == 15) R_CheckUserInterrupt();
+    const double *col = X + n * (R_xlen_t) i, *mean = M + (R_xlen_t) K * i, si = s[i];
+    for (R_xlen_t q = 0; q < m; q++) {
+      const double x = (col[ri[q] - 1] - mean[ci[q] - 1]) * si;
       const double x2 = x * x;
-      sq += x2;
-      q4 += x2 * x2;
+      sq[q] += x2;
+      q4[q] += x2 * x2;
     }
-    w2 += (long double) sq * sq - q4;
   }
+  long double w2 = 0;
+  for (R_xlen_t q = 0; q < m; q++) w2 += (long double) sq[q] * sq[q] - q4[q];
   return ScalarReal((double) w2);
 }

@@ -9,9 +9,11 @@
 #    its boxes, and the search box finds pages and its first result opens
 #    its page, over HTTP (driven from a harness page holding the site in a
 #    frame) and from file:// (a copy of the page that searches by itself);
-# 5. the pages with the 3D viewer draw every widget, with pixels on the
-#    canvas, and the 2D animation plays.
-# Uses the browser helpers of the test suite (one copy).
+# 5. the pages with the 3D viewer draw every widget, each with a hand's
+#    coloured pixels on its canvas (read on the page), and the 2D animation
+#    plays.
+# The browser runs of 3-5 are started together (four at a time) and judged
+# after; uses the browser helpers of the test suite (one copy).
 args <- commandArgs(trailingOnly = TRUE)
 site <- normalizePath(if (length(args)) args[1] else "site")
 source("tests/testthat/helper-browser.R")
@@ -82,28 +84,58 @@ invisible(reg.finalizer(server_guard, function(e) server$kill(), onexit = TRUE))
 http_base <- sprintf("http://127.0.0.1:%d/site/", port)
 file_base <- paste0("file://", site, "/")
 # every host but this machine unreachable: the pages must not need one
-# (quoted: system2() passes the arguments through a shell)
-offline <- shQuote("--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1")
+offline <- "--host-resolver-rules=MAP * ~NOTFOUND, EXCLUDE 127.0.0.1"
+
+# Every browser run of the checks below is started at once (at most
+# `parallel` at a time) and judged when all have ended: each run mostly
+# waits for its own start-up and virtual time, so one after another they
+# took minutes. Each is a fresh headless chromium (browser_args(): its own
+# profile, no background networking) under coreutils' timeout.
+browser_batch <- function(runs, seconds = 150, parallel = 4L) {
+  files <- lapply(runs, function(r) c(tempfile("stdout-"), tempfile("stderr-")))
+  running <- list()
+  began <- took <- numeric(length(runs))
+  todo <- seq_along(runs)
+  while (length(todo) || length(running)) {
+    while (length(running) < parallel && length(todo)) {
+      i <- todo[1]
+      todo <- todo[-1]
+      running[[as.character(i)]] <- processx::process$new(
+        "timeout", c(as.character(seconds), chromium_path(), runs[[i]]),
+        stdout = files[[i]][1], stderr = files[[i]][2])
+      began[i] <- proc.time()[["elapsed"]]
+    }
+    Sys.sleep(0.1)
+    for (k in names(running)) if (!running[[k]]$is_alive()) {
+      took[as.integer(k)] <- proc.time()[["elapsed"]] - began[as.integer(k)]
+      running[[k]] <- NULL
+    }
+  }
+  out <- lapply(files, function(f) {
+    list(stdout = readLines(f[1], warn = FALSE), stderr = readLines(f[2], warn = FALSE))
+  })
+  names(out) <- names(runs)
+  attr(out, "seconds") <- stats::setNames(took, names(runs))
+  out
+}
+runs <- list()
 
 # -- 3: no script error on the main pages -------------------------------------
-console_errors <- function(url) {
-  out <- browser_run(c(browser_args(2000), offline, "--enable-logging=stderr", "--v=0", "--dump-dom",
-                       shQuote(url)), stdout = FALSE, stderr = TRUE)
-  lines <- grep(":CONSOLE|ERROR:.*(net::|Failed to load)", out, value = TRUE)
+# (every page runs the same template scripts: one page of each kind over
+# HTTP, the home page and an article from file://; the pages with widgets
+# are checked for script errors below)
+error_urls <- c(paste0(http_base, c("index.html", "reference/index.html", "articles/index.html", "news/index.html",
+                                    "articles/getting-started.html")),
+                paste0(file_base, c("index.html", "articles/getting-started.html")))
+for (url in error_urls) {
+  runs[[paste("errors", url)]] <- c(browser_args(2000), offline, "--enable-logging=stderr", "--v=0", "--dump-dom", url)
+}
+console_errors <- function(out) {
+  lines <- grep(":CONSOLE|ERROR:.*(net::|Failed to load)", out$stderr, value = TRUE)
   lines <- sub("^.*:CONSOLE[^]]*\\] ", "", lines)
   # errors and uncaught exceptions; console.log/info chatter is not an error
   grep("Uncaught|Error|error|Failed|net::ERR", lines, value = TRUE)
 }
-# (every page runs the same template scripts: one page of each kind over
-# HTTP, the home page and an article from file://; the pages with widgets
-# are checked for script errors below)
-for (url in c(paste0(http_base, c("index.html", "reference/index.html", "articles/index.html", "news/index.html",
-                                  "articles/getting-started.html")),
-              paste0(file_base, c("index.html", "articles/getting-started.html")))) {
-  errs <- console_errors(url)
-  if (length(errs)) fail("script errors on ", url, ":\n  ", paste(utils::head(errs, 5), collapse = "\n  "))
-}
-message("site: no script errors on the main pages, over HTTP or from file://")
 
 # -- 4: contents and search ----------------------------------------------------
 # Over HTTP, the harness loads a site page in a frame, counts its contents links, types
@@ -146,21 +178,160 @@ f.onload = function() {
 };
 </script></body></html>', page, jsonlite::toJSON(query, auto_unbox = TRUE))
 }
-run_harness <- function(base, harness_base, page, query) {
-  h <- file.path(root, sprintf("harness-%s.html", gsub("[^a-z0-9]", "-", page)))
-  writeLines(harness(paste0(base, page), query), h)
-  dom <- browser_run(c(browser_args(12000), offline, "--dump-dom", shQuote(paste0(harness_base, basename(h)))),
-                     stdout = TRUE, stderr = FALSE)
-  dom <- paste(dom, collapse = "\n")
-  json <- sub('(?s).*<pre id="result">(.*?)</pre>.*', "\\1", dom, perl = TRUE)
-  json <- gsub("&quot;", '"', gsub("&amp;", "&", gsub("&lt;", "<", gsub("&gt;", ">", json))))
-  if (identical(json, "pending") || !jsonlite::validate(json)) fail("the harness got no answer from ", base, page)
-  jsonlite::fromJSON(json)
-}
 # the search must find pages by a word of the site's titles
 query <- "hands"
-for (pg in c("index.html", "articles/reproduce-thesis.html")) {
-  r <- run_harness(http_base, sprintf("http://127.0.0.1:%d/", port), pg, query)
+search_pages <- c("index.html", "articles/reproduce-thesis.html")
+for (pg in search_pages) {
+  h <- file.path(root, sprintf("harness-%s.html", gsub("[^a-z0-9]", "-", pg)))
+  writeLines(harness(paste0(http_base, pg), query), h)
+  runs[[paste("harness", pg)]] <- c(browser_args(12000), offline, "--dump-dom",
+                                     sprintf("http://127.0.0.1:%d/%s", port, basename(h)))
+}
+harness_result <- function(out, pg) {
+  dom <- paste(out$stdout, collapse = "\n")
+  json <- sub('(?s).*<pre id="result">(.*?)</pre>.*', "\\1", dom, perl = TRUE)
+  json <- gsub("&quot;", '"', gsub("&amp;", "&", gsub("&lt;", "<", gsub("&gt;", ">", json))))
+  if (identical(json, "pending") || !jsonlite::validate(json)) fail("the harness got no answer from ", http_base, pg)
+  jsonlite::fromJSON(json)
+}
+# From file:// a page may not reach into a frame (each file is its own
+# origin), and chromium's flag that would allow it would also allow the
+# fetch() that a reader's browser refuses there. So a copy of the page, in
+# its own folder, searches by itself: it types the query, records how many
+# results it got, and picks the first; a page that opens with the query's
+# words marked (mark.js, <mark data-markjs>) is the result page.
+# (copies of pages lie beside them until the runs end)
+copies <- character()
+copy_guard <- new.env()
+invisible(reg.finalizer(copy_guard, function(e) unlink(copies), onexit = TRUE))
+page_copy <- function(pg, tag, script) {
+  copy <- file.path(site, dirname(pg), sprintf("zz-check-%s-%s", tag, basename(pg)))
+  copies <<- c(copies, copy)
+  writeLines(sub("</body>", paste0(script, "</body>"), read_text(file.path(site, pg)), fixed = TRUE), copy)
+  sub(paste0(site, "/"), "", copy, fixed = TRUE)
+}
+for (pg in search_pages) {
+  script <- sprintf('<script>window.addEventListener("load", function() {
+  var $ = window.jQuery, input = $("#search-input");
+  input.trigger("focus");
+  setTimeout(function() {
+    input.val(%s).trigger("input");
+    setTimeout(function() {
+      var s = document.querySelectorAll(".aa-suggestion");
+      document.body.setAttribute("data-check-results", s.length);
+      if (s.length) $(s[0]).trigger("click");
+    }, 2000);
+  }, 1000);
+});</script>', jsonlite::toJSON(query, auto_unbox = TRUE))
+  runs[[paste("file search", pg)]] <- c(browser_args(8000), offline, "--dump-dom",
+                                         paste0(file_base, page_copy(pg, "search", script)))
+}
+file_search_result <- function(out, pg) {
+  dom <- paste(out$stdout, collapse = "\n")
+  if (grepl("data-check-results=", dom, fixed = TRUE)) {
+    n <- sub('.*data-check-results="([0-9]+)".*', "\\1", dom)
+    fail(sprintf("from file://, %s: search for '%s' found %s results and opened none", pg, query, n))
+  }
+  if (!grepl("data-markjs", dom, fixed = TRUE)) fail(sprintf("from file://, %s: the search result page shows no marked words", pg))
+  title <- sub("(?s).*<title>([^<]*)</title>.*", "\\1", dom, perl = TRUE)
+  # the result is an article: its contents, built from file:// too
+  # (scrollspy may have marked the link of the section in view "active")
+  toc <- lengths(regmatches(dom, gregexpr('class="nav-link( active)?" href="#', dom)))
+  main <- sub("(?s).*<main(.*)</main>.*", "\\1", dom, perl = TRUE)
+  h2 <- lengths(regmatches(main, gregexpr("<h2(?![^>]*data-toc-skip)", main, perl = TRUE)))
+  if (h2 == 0 || toc < h2) fail(sprintf("from file://, %s: the contents list %d links for %d sections", title, toc, h2))
+  message(sprintf("site: from file://, %s: search '%s' opened \"%s\" with the words marked and %d contents links for %d sections",
+                  pg, query, title, toc, h2))
+}
+
+# -- 5: 3D widgets and the 2D animation ----------------------------------------
+# The widgets' pixels are read on the page itself: a copy of the page draws
+# each widget's WebGL canvas (preserveDrawingBuffer, as the widget makes it)
+# onto a 2D canvas once the widgets have been drawn and counts its coloured
+# pixels. The hands are drawn in colour, the widget's background in grey: a
+# widget that draws nothing has (almost) none. (A screenshot of the screen
+# did the same at up to 100 s a try, and hung now and then.)
+widget_script <- '<script>window.addEventListener("load", function() {
+  setTimeout(function() {
+    var counts = [];
+    document.querySelectorAll(".hand3d.html-widget").forEach(function(el) {
+      var c = el.querySelector("canvas"), n = -1;
+      if (c) {
+        var box = c.getBoundingClientRect();
+        var vis = box.width > 0 && box.height > 0 && getComputedStyle(c).visibility !== "hidden";
+        var t = document.createElement("canvas");
+        t.width = c.width; t.height = c.height;
+        var ctx = t.getContext("2d");
+        ctx.drawImage(c, 0, 0);
+        var px = ctx.getImageData(0, 0, t.width, t.height).data;
+        n = 0;
+        for (var i = 0; i < px.length; i += 4) {
+          var hi = Math.max(px[i], px[i + 1], px[i + 2]), lo = Math.min(px[i], px[i + 1], px[i + 2]);
+          if (hi - lo > 80) n++;
+        }
+        if (!vis) n = -2;
+      }
+      counts.push(n);
+    });
+    document.body.setAttribute("data-check-coloured", counts.join(","));
+    document.body.setAttribute("data-check-ready", document.querySelectorAll(".hand3d.html-widget[data-ready]").length);
+    /* counted: the widgets leave the page, which stops their drawing (each
+       redraw costs software WebGL time until the run ends) */
+    document.querySelectorAll(".hand3d.html-widget").forEach(function(el) { el.remove(); });
+  }, 200);
+});</script>'
+widget_pages <- c("articles/looking-at-hands.html", "reference/hand_3d.html")
+for (pg in widget_pages) {
+  runs[[paste("widgets", pg)]] <- c(browser_args(600), "--window-size=1000,1400", "--dump-dom",
+                                     paste0(http_base, page_copy(pg, "widgets", widget_script)))
+}
+check_widgets <- function(out, page, expected) {
+  dom <- paste(out$stdout, collapse = "\n")
+  ready <- as.integer(sub('.*data-check-ready="([0-9]+)".*', "\\1", dom))
+  if (!grepl("data-check-ready=", dom, fixed = TRUE)) ready <- 0L
+  errs <- if (grepl("data-js-error", dom, fixed = TRUE)) {
+    strsplit(sub('.*data-js-error="([^"]*)".*', "\\1", dom), " | ", fixed = TRUE)[[1]]
+  } else character()
+  if (length(errs)) fail("script error in ", page, ": ", paste(errs, collapse = "; "))
+  if (ready < expected) fail(sprintf("%s drew %d of %d 3D widgets", page, ready, expected))
+  if (!grepl("data-check-coloured=", dom, fixed = TRUE)) fail(page, ": the widgets' pixels could not be read")
+  coloured <- as.integer(strsplit(sub('.*data-check-coloured="([^"]*)".*', "\\1", dom), ",")[[1]])
+  # every widget shows a hand (a blank canvas has none: the background,
+  # text and controls are grey): 1,000-15,000 coloured pixels per widget
+  # at these sizes (the grey palm and the pale skin of an overlay count
+  # little), over 5,000 per page (a screenshot used to count those)
+  if (length(coloured) < expected || any(coloured < 500) || sum(coloured) < 5000) {
+    fail(sprintf("%s: a widget shows no hand (coloured pixels per widget: %s; -2: not visible)", page,
+                 paste(coloured, collapse = ", ")))
+  }
+  message(sprintf("site: %s: %d 3D widget(s) drawn, no script errors, coloured pixels per widget %s",
+                  page, ready, paste(coloured, collapse = ", ")))
+}
+# the 2D animation embedded in the GraspDB14 article draws lines (its <svg>
+# carries `fill="none"`) and plays: its frame label has moved on
+runs[["animation"]] <- c(browser_args(1500), "--dump-dom", paste0(http_base, "articles/graspdb14.html"))
+check_animation <- function(out, page) {
+  dom <- paste(out$stdout, collapse = "\n")
+  if (!grepl('class="handmotion-animation"', dom, fixed = TRUE)) fail("no 2D animation in ", page)
+  if (!grepl('<svg[^>]*fill="none"', dom)) fail("the 2D animation in ", page, " lost its line style")
+  at <- as.integer(sub(".*>frame ([0-9]+) \\(.*", "\\1", dom))
+  if (is.na(at) || at <= 1L) fail("the 2D animation in ", page, " does not play")
+  message(sprintf("site: %s: 2D animation plays (frame %d after 1.5 s)", page, at))
+}
+
+# -- all runs at once, then the verdicts in order ------------------------------
+started <- proc.time()[["elapsed"]]
+res <- browser_batch(runs)
+slowest <- sort(attr(res, "seconds"), decreasing = TRUE)[1:3]
+message(sprintf("site: %d browser runs in %.0f s (slowest: %s)", length(runs), proc.time()[["elapsed"]] - started,
+                paste(sprintf("%s %.0f s", names(slowest), slowest), collapse = ", ")))
+for (url in error_urls) {
+  errs <- console_errors(res[[paste("errors", url)]])
+  if (length(errs)) fail("script errors on ", url, ":\n  ", paste(utils::head(errs, 5), collapse = "\n  "))
+}
+message("site: no script errors on the main pages, over HTTP or from file://")
+for (pg in search_pages) {
+  r <- harness_result(res[[paste("harness", pg)]], pg)
   if (!is.null(r$error)) fail("harness error on ", pg, ": ", r$error)
   if (r$overflow > 0 || isTRUE(r$page_wider)) {
     fail(sprintf("%s: %d code boxes run past their edge%s", pg, r$overflow,
@@ -177,84 +348,8 @@ for (pg in c("index.html", "articles/reproduce-thesis.html")) {
   message(sprintf("site: over HTTP, %s: %d contents links for %d sections, code inside its boxes; search '%s': %d results, the first opened %s",
                   pg, r$toc, r$headings, query, r$suggestions, sub("^.*/site/", "", r$opened)))
 }
-# From file:// a page may not reach into a frame (each file is its own
-# origin), and chromium's flag that would allow it would also allow the
-# fetch() that a reader's browser refuses there. So a copy of the page, in
-# its own folder, searches by itself: it types the query, records how many
-# results it got, and picks the first; a page that opens with the query's
-# words marked (mark.js, <mark data-markjs>) is the result page.
-file_search <- function(pg, query) {
-  copy <- file.path(site, dirname(pg), "zz-check-search.html")
-  on.exit(unlink(copy))
-  html <- read_text(file.path(site, pg))
-  script <- sprintf('<script>window.addEventListener("load", function() {
-  var $ = window.jQuery, input = $("#search-input");
-  input.trigger("focus");
-  setTimeout(function() {
-    input.val(%s).trigger("input");
-    setTimeout(function() {
-      var s = document.querySelectorAll(".aa-suggestion");
-      document.body.setAttribute("data-check-results", s.length);
-      if (s.length) $(s[0]).trigger("click");
-    }, 2000);
-  }, 1000);
-});</script></body>', jsonlite::toJSON(query, auto_unbox = TRUE))
-  writeLines(sub("</body>", script, html, fixed = TRUE), copy)
-  dom <- paste(browser_run(c(browser_args(8000), offline, "--dump-dom", shQuote(paste0("file://", copy))),
-                           stdout = TRUE, stderr = FALSE), collapse = "\n")
-  if (grepl("data-check-results=", dom, fixed = TRUE)) {
-    n <- sub('.*data-check-results="([0-9]+)".*', "\\1", dom)
-    fail(sprintf("from file://, %s: search for '%s' found %s results and opened none", pg, query, n))
-  }
-  if (!grepl("data-markjs", dom, fixed = TRUE)) fail(sprintf("from file://, %s: the search result page shows no marked words", pg))
-  title <- sub("(?s).*<title>([^<]*)</title>.*", "\\1", dom, perl = TRUE)
-  # the result is an article: its contents, built from file:// too
-  toc <- lengths(regmatches(dom, gregexpr('class="nav-link" href="#', dom, fixed = TRUE)))
-  main <- sub("(?s).*<main(.*)</main>.*", "\\1", dom, perl = TRUE)
-  h2 <- lengths(regmatches(main, gregexpr("<h2(?![^>]*data-toc-skip)", main, perl = TRUE)))
-  if (h2 == 0 || toc < h2) fail(sprintf("from file://, %s: the contents list %d links for %d sections", title, toc, h2))
-  message(sprintf("site: from file://, %s: search '%s' opened \"%s\" with the words marked and %d contents links for %d sections",
-                  pg, query, title, toc, h2))
-}
-for (pg in c("index.html", "articles/reproduce-thesis.html")) file_search(pg, query)
-
-# -- 5: 3D widgets and the 2D animation ----------------------------------------
-# `height`: a window tall enough to hold the page's widgets, so the
-# screenshot shows them (the reference page's examples are 2,500 px down)
-# `pixels`: also look at the screen (one page suffices: the widget's code is
-# the same on every page, and a WebGL screenshot is the slowest check here)
-check_widgets <- function(page, expected, height = 1400L, pixels = TRUE) {
-  dom <- browser_dom(paste0(http_base, page), 2500)
-  ready <- lengths(regmatches(dom, gregexpr('data-ready="1"', dom, fixed = TRUE)))
-  errs <- if (grepl("data-js-error", dom, fixed = TRUE)) {
-    strsplit(sub('.*data-js-error="([^"]*)".*', "\\1", dom), " | ", fixed = TRUE)[[1]]
-  } else character()
-  if (length(errs)) fail("script error in ", page, ": ", paste(errs, collapse = "; "))
-  if (ready < expected) fail(sprintf("%s drew %d of %d 3D widgets", page, ready, expected))
-  if (!pixels) {
-    return(message(sprintf("site: %s: %d 3D widget(s) drawn, no script errors", page, ready)))
-  }
-  # the hands are drawn in colour, the page around them in greys: a widget
-  # that draws nothing leaves (almost) no saturated pixel (hand_3d.html has
-  # about 70,000 with its two widgets, looking-at-hands.html 21,000 in its
-  # first 1,400 px, the text of either page none)
-  px <- matrix(png_pixels(browser_screenshot(paste0(http_base, page), 1000, c(1000, height))), ncol = 3)
-  coloured <- sum(pmax(px[, 1], px[, 2], px[, 3]) - pmin(px[, 1], px[, 2], px[, 3]) > 80)
-  if (coloured < 5000) fail(sprintf("%s shows no hand in the browser (%d coloured pixels)", page, coloured))
-  message(sprintf("site: %s: %d 3D widget(s) drawn, no script errors, %d coloured pixels on screen",
-                  page, ready, coloured))
-}
-# the 2D animation embedded in the GraspDB14 article draws lines (its <svg>
-# carries `fill="none"`) and plays: its frame label has moved on
-check_animation <- function(page) {
-  dom <- browser_dom(paste0(http_base, page), 1500)
-  if (!grepl('class="handmotion-animation"', dom, fixed = TRUE)) fail("no 2D animation in ", page)
-  if (!grepl('<svg[^>]*fill="none"', dom)) fail("the 2D animation in ", page, " lost its line style")
-  at <- as.integer(sub(".*>frame ([0-9]+) \\(.*", "\\1", dom))
-  if (is.na(at) || at <= 1L) fail("the 2D animation in ", page, " does not play")
-  message(sprintf("site: %s: 2D animation plays (frame %d after 1.5 s)", page, at))
-}
-check_animation("articles/graspdb14.html")
-check_widgets("articles/looking-at-hands.html", 2L)
-check_widgets("reference/hand_3d.html", 2L, pixels = FALSE)
+for (pg in search_pages) file_search_result(res[[paste("file search", pg)]], pg)
+check_animation(res[["animation"]], "articles/graspdb14.html")
+for (pg in widget_pages) check_widgets(res[[paste("widgets", pg)]], pg, 2L)
+unlink(copies)
 message("site: ok")

@@ -16,7 +16,9 @@ export NOT_CRAN="${NOT_CRAN:-true}"
 # workers: no start-up cost; results are the same under any plan)
 export R_FUTURE_PLAN="${R_FUTURE_PLAN:-multicore}"
 start=$(date +%s)
-Rscript -e 'pkgdown::build_site(preview = FALSE, install = FALSE, new_process = FALSE)'
+# (pkgdown::build_site()'s steps, the reference and the articles on both
+# cores: tools/site-build.R)
+Rscript tools/site-build.R
 # The search index as a script as well: a page opened from file:// may load
 # a script but not fetch() a JSON file (pkgdown/assets/pkgdown.js loads it).
 Rscript -e 'writeLines(c("window.pkgdownSearchIndex = ", readLines("site/search.json", warn = FALSE), ";"), "site/search-index.js")'

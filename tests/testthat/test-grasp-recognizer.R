@@ -98,6 +98,22 @@ test_that("early recognition is evaluated held out by subject, against time and 
   expect_equal(byrec$n, 36L)
 })
 
+test_that("by default early recognition holds out each subject, in at most 30 folds", {
+  # 30 subjects: one fold each; 31: 30 seeded groups of subjects, the same
+  # evaluation as asking for 30 folds (the cost grows with the data, not
+  # with subjects x data)
+  g <- simulate_grasps(subjects = 31, grasps = c(1, 17), objects = 1, trials = 1, seed = 2)
+  thirty <- g[g$meta$subject != "S31"]
+  expect_equal(attr(evaluate_early_recognition(thirty, ms = 400, fractions = NULL), "scheme"),
+               "leave-one-subject-out")
+  er <- evaluate_early_recognition(g, ms = 400, fractions = NULL)
+  expect_equal(attr(er, "scheme"), "leave-group-out (30 folds of subjects)")
+  expect_identical(er, evaluate_early_recognition(g, ms = 400, fractions = NULL, folds = 30))
+  expect_equal(er$n, length(g))
+  expect_match(attr(evaluate_early_recognition(g, ms = 400, fractions = NULL, split = "recording"),
+                    "scheme"), "5-fold by recording")
+})
+
 test_that("fitting only the horizons a fold needs changes no prediction", {
   g <- late_types(n_per = 18, subjects = 4)
   er <- evaluate_early_recognition(g, ms = c(100, 600), fractions = 0.5, at = c(0, 1))

@@ -175,43 +175,14 @@ test_that("the vignette is a thin wrapper around the report template", {
   expect_true(nzchar(system.file("report", "reproduce-thesis.Rmd", package = "handmotion")))
 })
 
-test_that("the progress lines estimate the time left from the measured pace", {
-  lines <- character()
-  con <- textConnection("lines", "w", local = TRUE)
-  bar <- handmotion:::report_progress(TRUE, out = con, every = 0)
+test_that("the cost model of the design grows with the design", {
+  # (the estimate of the time left is tested in test-report-eta.R)
   settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
-  cost <- handmotion:::report_step_costs(settings, workers = future::nbrOfWorkers())
-  bar$begin(settings)
-  bar$step(names(cost)[1])
-  Sys.sleep(1.2)
-  bar$step(names(cost)[2])
-  # the first step ran at (1.2 s / its predicted time) of the model's pace:
-  # the rest is predicted at that pace
-  second <- lines[grep("\\[ 2/", lines)]
-  secs_left <- function(line) {
-    left <- as.numeric(sub(".*about ([0-9.]+) (s|min) left.*", "\\1", line))
-    if (grepl("min left", line)) 60 * left else left
-  }
-  expect_equal(secs_left(second), 1.2 / cost[[1]] * sum(cost[-1]), tolerance = 0.3)
-  # within a step, its own progress steps give the rate of what remains of
-  # it, trusted as far as the step has gone (here a quarter: the rest from
-  # the model at the measured pace)
-  bar$tick(list(type = "initiate", steps = 4))
-  Sys.sleep(1.2)
-  bar$tick(list(type = "update", amount = 1))
-  within <- lines[length(lines)]
-  expect_match(within, "fit the grasp models: 25%", fixed = TRUE)
-  pace <- 1.2 / cost[[1]]
-  expect_equal(secs_left(within),
-               0.75 * max(0, cost[[2]] * pace - 1.2) + 0.25 * 3 * 1.2 + pace * sum(cost[-(1:2)]), tolerance = 0.3)
-  bar$done("/somewhere/reproduce-thesis.html")
-  close(con)
-  expect_match(lines[1], "30 subjects x 33 grasp types, leave-one-subject-out", fixed = TRUE)
-  expect_match(lines[grep("\\[ 1/", lines)], "simulate the data (0 s so far)", fixed = TRUE)
-  expect_match(lines[length(lines) - 1L], "report written in .*: /somewhere/reproduce-thesis.html")
-  # the model grows with the design: ten times the subjects, about ten times the work
+  # ten times the subjects, about ten times the work
   big <- handmotion:::report_step_costs(list(subjects = 300, grasps = 1:33, loso_folds = NULL), 1)
   expect_gt(sum(big) / sum(handmotion:::report_step_costs(settings, 1)), 8)
-  quiet <- handmotion:::report_progress(FALSE, out = con)
-  expect_silent({quiet$step("x"); quiet$done("y")})
+  # every step of the model has a kind
+  kinds <- handmotion:::report_step_kinds(handmotion:::report_step_model$step)
+  expect_false(anyNA(kinds))
+})
 })
