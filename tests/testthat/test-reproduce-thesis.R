@@ -185,4 +185,3 @@ test_that("the cost model of the design grows with the design", {
   kinds <- handmotion:::report_step_kinds(handmotion:::report_step_model$step)
   expect_false(anyNA(kinds))
 })
-})
