@@ -25,10 +25,11 @@ report_chunk_signal <- function(label) {
 # design): `seconds` is the step's time on the default design (30 subjects x
 # 33 types, leave-one-subject-out) on one worker, from its start to the next
 # step's (so with the tables and figures drawn in between: most of them
-# after the frame-PCA step): bench/bench-eta.R (`make demo`'s run) on the
-# 2-core machine (the mean of three runs of 220-270 s on 2 workers at load
-# 1.5-4: the held-out steps after the FPCA folds took half as long in the
-# quietest), parallel steps
+# after the frame-PCA step): bench/bench-eta.R (`make demo`'s run, the
+# installed -O2 build; BENCH_ETA_EVENTS, the steps' start times) on the
+# quiet 2-core machine (a 137 s run on 2 workers at load 1.4; runs at load 1.5-4 while other jobs ran took 220-270 s, their
+# FPCA folds relatively longer, and a pkgload build at -O0 its C-bound folds
+# 2.6 times longer: the model is of the build `make demo` runs), parallel steps
 # counted twice (the FPCA folds: 30 refits of the 33 models with one
 # Gaussian, saved for the weighted FPCA folds, which read them, are more
 # than half of it); `scale` says how it
@@ -50,7 +51,7 @@ report_step_model <- data.frame(
            "recognition: weighted FPCA distance (learn weights)", "recognition: shrinkage LDA (fit)",
            "recognition: classify the held-out subjects", "recognition: early recognition, held out by subject",
            "the figures and the page"),
-  seconds = c(1, 17, 1.1, 1.4, 0.3, 0.1, 283, 50, 40, 27, 0.9, 7.8, 8.6, 5.7, 6.4, 11, 0.1, 0.3, 1.8, 7.6, 1.5),
+  seconds = c(1.4, 6.6, 0.8, 1.1, 0.3, 0.1, 127, 31, 30, 19, 0.9, 7, 5, 4.1, 6, 5.9, 0.1, 0.3, 1.8, 4, 1.4),
   scale = c("N", "N", "NT", "N", "N", "T", "NF", "NF", "NF", "NF", "const", "T", "N", "N", "NT", "N",
             "NT", "N", "NT", "NF", "T"),
   parallel = c(FALSE, TRUE, FALSE, FALSE, FALSE, FALSE, TRUE, TRUE, TRUE, TRUE, FALSE, FALSE, TRUE, TRUE,
