@@ -103,7 +103,7 @@ classifier_parts <- list(
 
 # The first numeric part (by its path, `fit$coef`) holding a missing or
 # infinite value, or NULL. Data frames (reports) are not model parts; a
-# single number may be infinite (a setting: k = Inf, all neighbours), not
+# single number may be infinite (a setting: neighbours = Inf), not
 # missing.
 nonfinite_part <- function(x, path) {
   if (is.data.frame(x) || is.environment(x) || is.function(x)) return(NULL)

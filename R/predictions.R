@@ -85,7 +85,7 @@
 #' cl <- fit_grasp_classifier(train)
 #' predict(cl, test)
 #' predict(cl, test, type = "prob")
-#' ms <- fit_grasp_models(train, seed = 1, k = 1)
+#' ms <- fit_grasp_models(train, seed = 1, mixture_components = 1)
 #' p <- predict(ms, test, type = "prob")
 #' rowSums(p)
 #' table(predict(ms, test)$.pred_class, test$meta$grasp)

@@ -48,7 +48,7 @@
 #' cl <- classify(ms, g)
 #' thesis_table("5.3", classification = cl)
 #' thesis_table("5.6", confusion = grasp_confusion(cl))
-#' lf <- fit_grasp_classifier(g, method = "last_frame", k = 2)
+#' lf <- fit_grasp_classifier(g, method = "last_frame", ncomp = 2)
 #' thesis_table("5.7", fit = lf, pcs = 1:3)
 thesis_table <- function(id = c("5.1", "5.2", "5.3", "5.3 claims", "5.6", "5.7", "5.8"), ...) {
   call <- rlang::caller_env()
