@@ -84,9 +84,7 @@
 classify <- function(models, x, method = c("fpca", "last_frame", "discriminant", "weighted_fpca"), ...) {
   call <- rlang::caller_env()
   # (non-finite values: those recordings are left unclassified, with a warning)
-  check_grasps(x, call = call, finite = FALSE)
-  check_not_empty(x, what = "classify", call = call)
-  warn_short_recordings(x, action = "classified")
+  check_new_recordings(x, "x", "classify", finite = FALSE, call = call)
   rlang::check_dots_empty(error = function(cnd) {
     hm_abort(c("{.fn classify} takes fitted models and the recordings, nothing more.",
                i = "Give fitting arguments to {.fn fit_grasp_models} or {.fn fit_grasp_classifier}."),

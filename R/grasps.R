@@ -148,25 +148,25 @@ check_rate <- function(rate, call = rlang::caller_env()) {
   invisible(rate)
 }
 
-# A grasps set a verb reads recordings from: an empty selection gave an
-# empty result (predict(), project()) or a base R error (plots) without
-# saying why.
-check_not_empty <- function(x, arg = "x", what = "use", call = rlang::caller_env()) {
-  if (length(x$recordings) == 0L) {
+# A grasps set a verb reads recordings from, with at least one recording:
+# an empty selection gave an empty result (predict(), project()), a base R
+# error deep inside ggplot2 (plots) or a page with nothing on it, without
+# saying why. `what` the verb does with them.
+check_some_recordings <- function(x, arg = "x", what = "draw", call = rlang::caller_env()) {
+  if (inherits(x, "grasps") && length(x) == 0L) {
     hm_abort("{.arg {arg}} holds no recordings (an empty selection?): there is nothing to {what}.",
-             "bad_input", argument = arg, call = call)
+             "bad_recording", argument = arg, call = call)
   }
   invisible(x)
 }
 
-# A grasps object with at least one recording: drawing or animating an empty
-# set used to fail deep inside ggplot2 or write a page with nothing on it.
-check_some_recordings <- function(x, arg = "x", call = rlang::caller_env()) {
-  if (inherits(x, "grasps") && length(x) == 0L) {
-    hm_abort("{.arg {arg}} holds no recordings; there is no hand to draw.", "bad_recording",
-             argument = arg, call = call)
-  }
-  invisible(x)
+# Recordings a fitted model is applied to (`verb` "project" or "classify"):
+# a valid grasps set (`finite = FALSE` where a recording with non-finite
+# values gets NA instead), not empty, its too-short recordings named.
+check_new_recordings <- function(x, arg, verb, finite = TRUE, call = rlang::caller_env()) {
+  check_grasps(x, arg, call = call, finite = finite)
+  check_some_recordings(x, arg, verb, call = call)
+  warn_short_recordings(x, arg, action = c(project = "projected", classify = "classified")[[verb]])
 }
 
 check_unit <- function(unit, call = rlang::caller_env()) {
@@ -325,8 +325,7 @@ validate_grasps <- function(x, arg = "x", call = rlang::caller_env(), finite = T
   }
   # builtins mapped over the recordings (a closure call per recording would
   # cost more than all the checks): numeric matrices, their dimensions and
-  # column names, and their sums (NaN or infinite when any value is; an
-  # overflowing sum is checked value by value below)
+  # column names, then their values (recordings_finite())
   is_mat <- vapply(recs, is.matrix, NA) & vapply(recs, is.numeric, NA)
   shape <- function(test, what) {
     i <- which(test)
@@ -343,10 +342,7 @@ validate_grasps <- function(x, arg = "x", call = rlang::caller_env(), finite = T
     shape(!vapply(cols, identical, NA, dofs), "has columns other than {.field dofs}")
   }
   if (!is.null(meta$n_frames)) shape(is.na(meta$n_frames) | meta$n_frames != dims[1, ], "has a {.field meta$n_frames} other than its frame count")
-  sums_finite <- is.finite(vapply(recs, sum, numeric(1), USE.NAMES = FALSE))
-  suspect <- which(!sums_finite & finite)
-  ok <- rep(TRUE, length(recs))
-  ok[suspect] <- vapply(recs[suspect], function(r) all(is.finite(r)), logical(1))
+  ok <- if (finite) recordings_finite(recs) else rep(TRUE, length(recs))
   if (!all(ok)) {
     i <- which(!ok)[1]
     bad <- which(!is.finite(recs[[i]]), arr.ind = TRUE)
@@ -356,6 +352,15 @@ validate_grasps <- function(x, arg = "x", call = rlang::caller_env(), finite = T
              "bad_recording", argument = arg, recording = ids[i], call = call)
   }
   invisible(x)
+}
+
+# Which recordings (a list of matrices) hold only finite values: a sum per
+# recording (a builtin) is finite when every value is, so only the others
+# (and sums that overflow) are read value by value.
+recordings_finite <- function(recs) {
+  ok <- is.finite(vapply(recs, sum, numeric(1), USE.NAMES = FALSE))
+  ok[!ok] <- vapply(recs[!ok], function(r) all(is.finite(r)), logical(1))
+  ok
 }
 
 #' @export
@@ -571,8 +576,8 @@ autoplot.grasps <- function(object, type = c("curves", "poses", "hand", "strip",
   type <- check_choice(type, arg = "type", call = rlang::current_env())
   hand_colour <- check_choice(hand_colour, arg = "hand_colour", call = rlang::current_env())
   check_grasps(object, "object", call = call)
-  # (the hand pictures say it their own way, check_some_recordings())
-  if (!type %in% c("hand", "poses")) check_not_empty(object, "object", "draw", call = call)
+  # (the hand pictures check it themselves)
+  if (!type %in% c("hand", "poses")) check_some_recordings(object, "object", call = call)
   sets <- function() {
     if (is.null(compare)) return(if (is.null(label)) object else stats::setNames(list(object), label))
     if (!is.list(compare) || inherits(compare, "grasps") || is.null(names(compare)) ||

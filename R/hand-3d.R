@@ -166,7 +166,7 @@ hand_3d_max <- 8L
 # a matrix, or a named list of either.
 hand_3d_inputs <- function(x, recording, rate, call) {
   from_grasps <- function(g, label_prefix = NULL, pick = NULL) {
-    check_some_recordings(g, if (is.null(label_prefix)) "x" else paste0("x$", label_prefix), call)
+    check_some_recordings(g, if (is.null(label_prefix)) "x" else paste0("x$", label_prefix), call = call)
     idx <- if (is.null(pick)) seq_along(g) else resolve_recordings(g, pick, call)
     lapply(idx, function(i) {
       m <- g$meta[i, ]

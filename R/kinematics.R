@@ -280,7 +280,7 @@ fk_input <- function(x, unit, call) {
   mapping <- NULL
   if (inherits(x, "grasps")) {
     check_grasps(x, call = call)
-    check_not_empty(x, what = "pose", call = call)
+    check_some_recordings(x, what = "pose", call = call)
     recs <- x$recordings
     unit <- x$unit
     dofs <- x$dofs

@@ -280,7 +280,7 @@ plot_pose_grid <- function(x, frame = "last", by = "grasp", per_group = 1L,
     hm_abort("{.arg x} must be a {.cls grasps} object or a list of them.", "bad_input",
              argument = "x", call = call)
   }
-  for (k in seq_along(sets)) check_some_recordings(sets[[k]], if (length(sets) == 1L) "x" else sprintf("x[[%d]]", k), call)
+  for (k in seq_along(sets)) check_some_recordings(sets[[k]], if (length(sets) == 1L) "x" else sprintf("x[[%d]]", k), call = call)
   if (is.null(names(sets))) names(sets) <- if (length(sets) == 1L) "" else paste("set", seq_along(sets))
   poses <- lapply(seq_along(sets), function(k) {
     g <- sets[[k]]

@@ -141,9 +141,7 @@ predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, 
   type <- check_choice(type, c("class", "prob", "distance"), arg = "type", call = call)
   check_fitted_parts(object, arg, call = call)
   if (!checked) {
-    check_grasps(new_data, arg = "new_data", call = call, finite = FALSE)
-    check_not_empty(new_data, "new_data", "classify", call = call)
-    warn_short_recordings(new_data, "new_data", action = "classified")
+    check_new_recordings(new_data, "new_data", "classify", finite = FALSE, call = call)
   }
   res <- finite_distances(object, new_data, call, seen)
   d <- res$distances
@@ -160,10 +158,7 @@ predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, 
 # with a NaN or an infinite value has none (NA), so one bad recording does
 # not stop the others.
 finite_distances <- function(object, x, call, seen) {
-  # a sum per recording (a builtin) is finite when every value is; only the
-  # others are read value by value
-  finite <- is.finite(vapply(x$recordings, sum, numeric(1), USE.NAMES = FALSE))
-  finite[!finite] <- vapply(x$recordings[!finite], function(r) all(is.finite(r)), logical(1))
+  finite <- recordings_finite(x$recordings)
   if (all(finite)) return(classifier_distances(object, x, call = call, seen = seen))
   bad <- x$meta$id[!finite]
   hm_warn(c("{.arg new_data} has {length(bad)} recording{?s} with missing or infinite values, not classified: {.val {bad}}.",

@@ -61,9 +61,7 @@ project <- function(object, new_data, ...) {
 project.grasp_model <- function(object, new_data, details = TRUE, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), project.grasp_model, "project", call = call)
-  check_grasps(new_data, "new_data", call = call)
-  check_not_empty(new_data, "new_data", "project", call = call)
-  warn_short_recordings(new_data, "new_data", action = "projected")
+  check_new_recordings(new_data, "new_data", "project", call = call)
   validate_projection_model(object, call)
   check_projection_dofs(object, new_data, call)
   # recordings projected on a model of trimmed motion are trimmed alike
@@ -76,9 +74,7 @@ project.grasp_model <- function(object, new_data, details = TRUE, ...) {
 project.grasp_models <- function(object, new_data, details = FALSE, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), project.grasp_models, "project", call = call)
-  check_grasps(new_data, "new_data", call = call)
-  check_not_empty(new_data, "new_data", "project", call = call)
-  warn_short_recordings(new_data, "new_data", action = "projected")
+  check_new_recordings(new_data, "new_data", "project", call = call)
   check_grasp_models(object, "object", "project", each = FALSE, call = call)
   project_models(object, new_data, "object", details = details, call = call)
 }

@@ -27,10 +27,10 @@ report_chunk_signal <- function(label) {
 # step's (so with the tables and figures drawn in between: most of them
 # after the frame-PCA step): bench/bench-eta.R (`make demo`'s run, the
 # installed -O2 build; BENCH_ETA_EVENTS, the steps' start times) on the
-# quiet 2-core machine (a 137 s run on 2 workers at load 1.4; runs at load 1.5-4 while other jobs ran took 220-270 s, their
-# FPCA folds relatively longer, and a pkgload build at -O0 its C-bound folds
-# 2.6 times longer: the model is of the build `make demo` runs), parallel steps
-# counted twice (the FPCA folds: 30 refits of the 33 models with one
+# quiet 2-core machine (a 137 s run on 2 workers at load 1.4; runs at load
+# 1.5-4 while other jobs ran took 220-270 s, their FPCA folds relatively
+# longer, and a pkgload build at -O0 its C-bound folds 2.6 times longer: the
+# model is of the build `make demo` runs), parallel steps counted twice (the FPCA folds: 30 refits of the 33 models with one
 # Gaussian, saved for the weighted FPCA folds, which read them, are more
 # than half of it); `scale` says how it
 # grows with the design (recordings N, types T, folds F) and `parallel`

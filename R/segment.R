@@ -56,7 +56,7 @@
 find_motion <- function(x, high = 0.15, low = 0.03, smooth = 0.08, min_still = 0.1) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  check_some_recordings(x, call = call)
+  check_some_recordings(x, what = "find motion in", call = call)
   high <- check_number(high, "high", min = 0, max = 1, min_open = TRUE, call = call)
   low <- check_number(low, "low", min = 0, max = high, min_open = TRUE, call = call)
   smooth <- check_number(smooth, "smooth", min = 0, max = 10, call = call)
@@ -96,7 +96,7 @@ trim_motion <- function(x, ...) {
 cut_motion <- function(x, min_motion = 0.3, min_gap = 0.3, high = 0.15, low = 0.03, smooth = 0.08) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  check_some_recordings(x, call = call)
+  check_some_recordings(x, what = "cut", call = call)
   min_motion <- check_number(min_motion, "min_motion", min = 0, max = 600, call = call)
   min_gap <- check_number(min_gap, "min_gap", min = 0, max = 600, call = call)
   spread <- channel_spread(x)

@@ -47,7 +47,7 @@ write_bvh <- function(x, file, skeleton = hand_skeleton(), recording = 1L, rate 
   dots <- list(...)
   if (inherits(x, "grasps")) {
     check_grasps(x, call = call)
-    check_not_empty(x, what = "write", call = call)
+    check_some_recordings(x, what = "write", call = call)
     recording <- check_recording_pick(recording, x, call = call)
     # a BVH read back: its own hierarchy and channels
     if (!is.null(attr(x, "bvh"))) {

@@ -40,7 +40,7 @@ write_hust <- function(x, dir, file_names = NULL, sep = ",", header = FALSE, dig
                        manifest = "manifest.csv", overwrite = FALSE) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  check_not_empty(x, what = "write", call = call)
+  check_some_recordings(x, what = "write", call = call)
   dofs <- handmotion::hust_dofs$name
   if (length(x$dofs) != length(dofs) || !setequal(x$dofs, dofs)) {
     hm_abort(c("{.arg x} must have the 16 HUST DoFs to be written in the HUST layout.",
