@@ -1,8 +1,17 @@
+# A random HUST-shaped recording of `frames` frames written as BVH at `rate`
+# into a temporary file (removed when the calling test ends).
+written_bvh <- function(seed, frames, rate, env = parent.frame()) {
+  set.seed(seed)
+  rec <- matrix(runif(frames * 16, -10, 80), frames, 16, dimnames = list(NULL, hust_dofs$name))
+  f <- withr::local_tempfile(fileext = ".bvh", .local_envir = env)
+  write_bvh(rec, f, rate = rate)
+  list(rec = rec, file = f)
+}
+
 test_that("BVH output re-parses with the right joints, frames and motion", {
-  set.seed(6)
-  rec <- matrix(runif(30 * 16, -10, 80), 30, 16, dimnames = list(NULL, hust_dofs$name))
-  f <- withr::local_tempfile(fileext = ".bvh")
-  write_bvh(rec, f, rate = 60)
+  w <- written_bvh(6, 30, 60)
+  rec <- w$rec
+  f <- w$file
   x <- read_bvh(f)
   expect_s3_class(x, "grasps")
   b <- attr(x, "bvh")
@@ -68,10 +77,7 @@ test_that("grasps export, scaling and bad files", {
 })
 
 test_that("a BVH read back is written back unchanged, and its angles are the recording's", {
-  set.seed(7)
-  rec <- matrix(runif(12 * 16, -10, 80), 12, 16, dimnames = list(NULL, hust_dofs$name))
-  f <- withr::local_tempfile(fileext = ".bvh")
-  write_bvh(rec, f, rate = 30)
+  f <- written_bvh(7, 12, 30)$file
   x <- read_bvh(f)
   f2 <- withr::local_tempfile(fileext = ".bvh")
   write_bvh(x, f2)
