@@ -73,7 +73,7 @@ test_that("GraspDB14 files whose time stamps do not move forward are refused, na
   writeLines(same, path)                    # repeated
   expect_error(read_graspdb14(path), class = "handmotion_error_bad_value")
   # in a directory read the bad file is reported and the good ones are read
-  writeLines(lines, file.path(dir, basename(sub("su", "su9", path))))
+  writeLines(lines, file.path(dir, sub("su", "su9", basename(path))))   # (a copy beside it, named apart)
   out <- suppressWarnings(read_graspdb14(dir))
   expect_length(out, 1L)
   expect_identical(nrow(read_failures(out)), 1L)
