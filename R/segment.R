@@ -1,10 +1,8 @@
 # Where the grasping motion is. Real recordings start with the hand at rest
 # and end holding the object; the thesis' recordings were cut to the motion.
-# The motion is found from the joint speed: every channel scaled by its
-# spread over the set (so raw counts and degrees weigh alike and a stuck
-# channel not at all), differentiated, combined into one speed per frame and
-# smoothed; then a hysteresis threshold between the recording's still level
-# and its peak speed finds where the motion starts and ends.
+# The signals (each channel's noise, departure from rest and rate, in noise
+# sds) are in motion-signals.R, shared with cut_motion() and the recogniser's
+# onset detector.
 
 #' Find the grasping motion in recordings that rest before and hold after it
 #'
@@ -14,23 +12,28 @@
 #' clear motion are kept whole and listed). `cut_motion()` cuts a continuous
 #' stream into one recording per motion.
 #'
-#' The speed of frame `t` is the root mean square over channels of the
-#' central difference of each channel divided by its spread (the
-#' interquartile range of the channel over all recordings, so channels in
-#' counts and in degrees weigh alike and constant channels not at all),
-#' smoothed by a moving average of `smooth` seconds. With `still` the speed
-#' while the hand is still (the 10% quantile of the recording's speed) and
-#' `peak` its 98% quantile, the motion is where the speed exceeds `still +
-#' high * (peak - still)`, extended on both sides while it exceeds `still +
-#' low * (peak - still)` (hysteresis: tremor during rest and hold does not
-#' start or end a motion, and the slow start of a reach is still counted).
-#' `trim_motion()` keeps the span from the first onset to the last end, so a
-#' grasp that pauses midway stays one grasp.
+#' Every channel is measured in units of its own noise (the robust sd of its
+#' second differences, so a smooth motion does not count as noise), after a
+#' running median of 3 frames that removes one-frame spikes. A channel
+#' *moves* when it leaves its rest level (the median of the first 0.15 s) by
+#' at least `min_move` noise sds and by at least a fifth of the largest move
+#' of the recording; channels that only jitter, carry spikes or hardly change
+#' never move, so they never start or end a motion, and a pressure pad that
+#' rises at contact moves late and does not start it either. A recording
+#' where no channel moves is reported as rest only.
+#'
+#' The motion starts where the first moving channel leaves the band of 3
+#' noise sds around its rest level (found walking back from where it has
+#' made 30% of its move), extended back while the moving channels together
+#' are still moving in the direction of their move (their rate, pooled with
+#' weights proportional to their moves, above 6 noise sds and 5% of its peak:
+#' the slow start of a smooth reach). It ends where the last moving channel
+#' slows below those rate levels after its last frame at half its peak rate
+#' (slow creep while holding is not motion).
 #'
 #' @param x A [grasps()] object.
-#' @param high,low The hysteresis thresholds, as fractions of the way from
-#'   the still speed to the peak speed (`0 < low < high < 1`).
-#' @param smooth Width of the moving average of the speed, in seconds.
+#' @param min_move How far, in noise sds, a channel must leave its rest level
+#'   to count as moving.
 #' @param min_still Shortest still phase, in seconds, at the start or end of
 #'   a recording for it to count as rest or hold; shorter ones are kept as
 #'   part of the motion.
@@ -38,12 +41,15 @@
 #'   and the shortest still gap that separates two motions, in seconds.
 #' @return `find_motion()`: a data frame with one row per recording: `id`,
 #'   `start` and `end` (first and last frame of the motion), `n_frames`,
-#'   `rest` and `hold` (frames before and after it) and `found` (`FALSE`
-#'   where no motion stands out from the still speed; then `start` is 1 and
-#'   `end` the last frame). `trim_motion()`: the recordings cut to their
-#'   motion, with metadata columns `trim_start` and `trim_end` (the frames
-#'   kept, in the original recording) and the attribute `motion` (the
-#'   `find_motion()` table). `cut_motion()`: one recording per motion, with
+#'   `rest` and `hold` (frames before and after it), `found`, `status`
+#'   (`"motion"`, `"rest only"` where no channel moves, or `"too short"`
+#'   under 0.3 s; then `found` is `FALSE`, `start` is 1 and `end` the last
+#'   frame) and `lead` (the channel whose departure starts the motion).
+#'   `trim_motion()`: the recordings cut to their motion, with metadata
+#'   columns `trim_start`, `trim_end` (the frames kept, in the original
+#'   recording) and `motion_status`, and the attribute `motion` (the
+#'   `find_motion()` table); recordings without a motion are kept whole and
+#'   named in a message. `cut_motion()`: one recording per motion, with
 #'   `parent` (the stream's id), `trim_start` and `trim_end`.
 #' @seealso [fit_grasp_model()] (argument `motion`), [segment_by_switch()]
 #' @export
@@ -51,32 +57,27 @@
 #' raw <- simulate_grasps(subjects = 1, grasps = c(bottle = 3, pen = 20), objects = 1,
 #'                        trials = 3, glove = "resistive", rest = 1, hold = 1, seed = 1)
 #' m <- find_motion(raw)
-#' cbind(m[c("id", "start", "end")], planted = raw$meta$motion_start)
+#' cbind(m[c("id", "start", "end", "lead")], planted = raw$meta$motion_start)
 #' trim_motion(raw)
-find_motion <- function(x, high = 0.15, low = 0.03, smooth = 0.08, min_still = 0.1) {
+find_motion <- function(x, min_move = 12, min_still = 0.1) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   check_some_recordings(x, what = "find motion in", call = call)
-  high <- check_number(high, "high", min = 0, max = 1, min_open = TRUE, call = call)
-  low <- check_number(low, "low", min = 0, max = high, min_open = TRUE, call = call)
-  smooth <- check_number(smooth, "smooth", min = 0, max = 10, call = call)
+  min_move <- check_number(min_move, "min_move", min = 3, max = 1e6, call = call)
   min_still <- check_number(min_still, "min_still", min = 0, max = 60, call = call)
-  spread <- channel_spread(x)
-  width <- smoothing_width(smooth, x$rate)
-  rows <- lapply(seq_along(x), function(i) {
-    s <- motion_speed(x$recordings[[i]], spread, width)
-    motion_span(s, high, low, max(1L, round(min_still * x$rate)))
-  })
+  rows <- lapply(x$recordings, motion_span, rate = x$rate, min_move = min_move,
+                 min_still = max(1L, round(min_still * x$rate)))
   n <- x$meta$n_frames
   start <- vapply(rows, `[[`, integer(1), "start")
   end <- vapply(rows, `[[`, integer(1), "end")
   data.frame(id = x$meta$id, start = start, end = end, n_frames = n, rest = start - 1L,
-             hold = n - end, found = vapply(rows, `[[`, logical(1), "found"), stringsAsFactors = FALSE)
+             hold = n - end, found = vapply(rows, `[[`, logical(1), "found"),
+             status = vapply(rows, `[[`, character(1), "status"),
+             lead = vapply(rows, `[[`, character(1), "lead"), stringsAsFactors = FALSE)
 }
 
 #' @rdname find_motion
-#' @param ... For `trim_motion()` and `cut_motion()`: passed to
-#'   `find_motion()`.
+#' @param ... For `trim_motion()`: passed to `find_motion()`.
 #' @export
 trim_motion <- function(x, ...) {
   call <- rlang::caller_env()
@@ -86,6 +87,11 @@ trim_motion <- function(x, ...) {
   meta <- x$meta
   meta$trim_start <- m$start
   meta$trim_end <- m$end
+  meta$motion_status <- m$status
+  if (any(!m$found)) {
+    cli::cli_inform(c("i" = "No motion found in {sum(!m$found)} of {nrow(m)} recording{?s}, kept whole: {.val {utils::head(paste0(m$id[!m$found], ' (', m$status[!m$found], ')'), 10)}}{if (sum(!m$found) > 10) ' ...' else ''}."),
+                    class = "handmotion_message_no_motion")
+  }
   out <- new_grasps(recs, meta, x$dofs, x$rate, x$unit, glove = x$glove)
   attr(out, "motion") <- m
   out
@@ -93,23 +99,18 @@ trim_motion <- function(x, ...) {
 
 #' @rdname find_motion
 #' @export
-cut_motion <- function(x, min_motion = 0.3, min_gap = 0.3, high = 0.15, low = 0.03, smooth = 0.08) {
+cut_motion <- function(x, min_motion = 0.3, min_gap = 0.3, min_move = 12) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
   check_some_recordings(x, what = "cut", call = call)
   min_motion <- check_number(min_motion, "min_motion", min = 0, max = 600, call = call)
   min_gap <- check_number(min_gap, "min_gap", min = 0, max = 600, call = call)
-  spread <- channel_spread(x)
-  width <- smoothing_width(smooth, x$rate)
+  min_move <- check_number(min_move, "min_move", min = 3, max = 1e6, call = call)
   pieces <- list()
   meta_rows <- list()
   for (i in seq_along(x)) {
-    s <- motion_speed(x$recordings[[i]], spread, width)
-    lv <- speed_levels(s, high, low)
-    runs <- motion_runs(s, lv, round(min_gap * x$rate), round(min_motion * x$rate))
+    runs <- stream_runs(x$recordings[[i]], x$rate, min_move, round(min_gap * x$rate), round(min_motion * x$rate))
     for (k in seq_len(nrow(runs))) {
-      runs$start[k] <- edge_extrapolate(s, runs$start[k], lv, forward = TRUE)
-      runs$end[k] <- edge_extrapolate(s, runs$end[k], lv, forward = FALSE)
       id <- sprintf("%s-m%d", x$meta$id[i], k)
       pieces[[id]] <- x$recordings[[i]][runs$start[k]:runs$end[k], , drop = FALSE]
       row <- x$meta[i, , drop = FALSE]
@@ -121,93 +122,33 @@ cut_motion <- function(x, min_motion = 0.3, min_gap = 0.3, high = 0.15, low = 0.
     }
   }
   if (!length(pieces)) {
-    hm_abort("No motion found in {.arg x}: the speed never stands out from its still level.",
+    hm_abort("No motion found in {.arg x}: no channel's rate stands out from its noise.",
              c("no_segments", "bad_recording"), argument = "x", call = call)
   }
   meta <- do.call(rbind, meta_rows)
   new_grasps(pieces, meta, x$dofs, x$rate, x$unit, glove = x$glove)
 }
 
-# Frames of the speed's moving average: `smooth` seconds, at least one.
-smoothing_width <- function(smooth, rate) max(1L, round(smooth * rate))
-
-# The spread of each channel over every frame of a set (interquartile range,
-# else the range), zero for a constant channel.
-channel_spread <- function(x) {
-  X <- do.call(rbind, x$recordings)
-  apply(X, 2, function(v) {
-    q <- stats::quantile(v, c(0.25, 0.75), names = FALSE)
-    if (q[2] > q[1]) q[2] - q[1] else diff(range(v))
-  })
-}
-
-# Speed per frame: root mean square over the varying channels of the scaled
-# central difference, smoothed by a centred moving average of `width` frames.
-motion_speed <- function(rec, spread, width, lag = width %/% 2L) {
-  n <- nrow(rec)
-  use <- spread > 0
-  if (n < 3L || !any(use)) return(rep(0, n))
-  r <- sweep(rec[, use, drop = FALSE], 2, spread[use], "/")
-  # central difference over +-lag frames (clamped at the ends): per-frame
-  # differences of counts are mostly quantisation noise at high rates
-  lag <- max(1L, lag)
-  ahead <- pmin(seq_len(n) + lag, n)
-  behind <- pmax(seq_len(n) - lag, 1L)
-  d <- (r[ahead, , drop = FALSE] - r[behind, , drop = FALSE]) / (ahead - behind)
-  s <- sqrt(rowMeans(d^2))
-  if (width > 1L && n > width) {
-    k <- rep(1 / width, width)
-    f <- stats::filter(s, k, sides = 2)
-    f[is.na(f)] <- s[is.na(f)]
-    s <- as.numeric(f)
-  }
-  s
-}
-
-# Thresholds between the still level and the peak of a speed curve.
-# The still level is the median of the slowest 30% of frames and its noise
-# their spread; the low level stays 4 noise sds above the still level, so
-# tremor during rest and hold does not pass for motion.
-speed_levels <- function(s, high, low) {
-  slow <- s[s <= stats::quantile(s, 0.3, names = FALSE)]
-  still <- stats::median(slow)
-  noise <- stats::mad(slow)
-  peak <- stats::quantile(s, 0.98, names = FALSE)
-  lo <- still + max(low * (peak - still), 4 * noise)
-  list(still = still, peak = peak, hi = max(still + high * (peak - still), lo), lo = lo,
-       clear = peak > 4 * still + 1e-12)
-}
-
-# The one motion of a recording: first crossing of the high level, walked back
-# while above the low level; the same from the end.
-motion_span <- function(s, high, low, min_still) {
-  n <- length(s)
-  lv <- speed_levels(s, high, low)
-  above <- which(s > lv$hi)
-  if (!lv$clear || !length(above)) return(list(start = 1L, end = n, found = FALSE))
-  a <- above[1]
-  while (a > 1L && s[a - 1L] > lv$lo) a <- a - 1L
-  a <- edge_extrapolate(s, a, lv, forward = TRUE)
-  b <- above[length(above)]
-  while (b < n && s[b + 1L] > lv$lo) b <- b + 1L
-  b <- edge_extrapolate(s, b, lv, forward = FALSE)
-  # a still phase shorter than min_still is part of the motion
-  if (a - 1L < min_still) a <- 1L
-  if (n - b < min_still) b <- n
-  list(start = as.integer(a), end = as.integer(b), found = TRUE)
-}
-
-# Every motion of a stream: runs above the low level of `lv` (speed_levels())
-# that reach its high level, joined across gaps shorter than `min_gap`, at least `min_len` long.
-motion_runs <- function(s, lv, min_gap, min_len) {
+# Every motion of a stream. There is no one rest level in a stream, so a
+# channel moves when its peak rate reaches `min_move` noise sds (and a fifth
+# of the largest); the activity is the root mean square of the moving
+# channels' rates (noise sds), and a motion is a run above the rate level of
+# find_motion() (6 noise sds, 5% of the activity's peak) that reaches twice
+# it, joined across gaps shorter than `min_gap` frames, at least `min_len` long.
+stream_runs <- function(rec, rate, min_move, min_gap, min_len) {
   empty <- data.frame(start = integer(), end = integer())
-  if (!lv$clear) return(empty)
-  r <- rle(s > lv$lo)
+  if (nrow(rec) < 2L * rest_frames(rate)) return(empty)
+  sig <- motion_signals(rec, rate)
+  use <- moving_channels(sig$peak_rate, sig$peak_rate, min_move)
+  if (!length(use)) return(empty)
+  act <- sqrt(rowMeans(sig$R[, use, drop = FALSE]^2))
+  lo <- max(motion_rate_share * max(act), motion_rate_z)
+  r <- rle(act > lo)
   ends <- cumsum(r$lengths)
   starts <- ends - r$lengths + 1L
   on <- which(r$values)
   runs <- data.frame(start = starts[on], end = ends[on])
-  runs <- runs[vapply(seq_len(nrow(runs)), function(k) any(s[runs$start[k]:runs$end[k]] > lv$hi), logical(1)), ,
+  runs <- runs[vapply(seq_len(nrow(runs)), function(k) any(act[runs$start[k]:runs$end[k]] > 2 * lo), logical(1)), ,
                drop = FALSE]
   if (!nrow(runs)) return(empty)
   joined <- runs[1, ]
@@ -219,30 +160,6 @@ motion_runs <- function(s, lv, min_gap, min_len) {
   joined <- joined[joined$end - joined$start + 1L >= min_len, , drop = FALSE]
   rownames(joined) <- NULL
   joined
-}
-
-# A smooth reach starts with a speed that grows like the square of the time
-# since onset (minimum-jerk profiles), so the threshold crossing comes a few
-# frames late. The square root of the speed above the still level rises
-# linearly: fit a line to it on the rising edge (from the low-level crossing
-# to half the peak) and take its zero as the onset; the same backwards for
-# the end. The crossing is kept when the edge is too short to fit.
-edge_extrapolate <- function(s, at, lv, forward = TRUE) {
-  n <- length(s)
-  half <- lv$still + 0.5 * (lv$peak - lv$still)
-  idx <- if (forward) at:n else at:1
-  stop_at <- which(s[idx] >= half)[1]
-  if (is.na(stop_at) || stop_at < 3L) return(at)
-  t <- idx[seq_len(stop_at)]
-  y <- sqrt(pmax(s[t] - lv$still, 0))
-  fit <- stats::lm.fit(cbind(1, t), y)
-  b <- fit$coefficients
-  if (anyNA(b) || (forward && b[2] <= 0) || (!forward && b[2] >= 0)) return(at)
-  # never further back than half the edge (a minimum-jerk start lies a third
-  # of it back): a shallow fit is not evidence of an early start
-  reach <- (stop_at - 1L) %/% 2L
-  t0 <- round(-b[1] / b[2])
-  if (forward) as.integer(min(max(t0, 1, at - reach), at)) else as.integer(max(min(t0, n, at + reach), at))
 }
 
 # Share of still frames (rest plus hold) above which "auto" trims a set: the
@@ -286,27 +203,33 @@ still_phases <- function(x, motion) {
 # --- onset detection for recognition -------------------------------------
 # A recogniser of recordings that start at rest must know where the motion
 # starts without seeing its end. The detector is fitted once on the training
-# recordings (channel spreads, and the median high and low speed levels of
-# their motions) and then reads a recording, or a live stream, from the
-# start: the motion starts where the speed first passes the high level,
-# walked back to where it passed the low one. The speed is centred, so the
-# detector looks `lag + width / 2` frames ahead (about 80 ms).
-fit_onset_detector <- function(x, high = 0.15, low = 0.03, smooth = 0.08) {
-  spread <- channel_spread(x)
-  width <- smoothing_width(smooth, x$rate)
-  lv <- lapply(x$recordings, function(r) speed_levels(motion_speed(r, spread, width), high, low))
-  list(spread = spread, width = width, hi = stats::median(vapply(lv, `[[`, 0, "hi")),
-       lo = stats::median(vapply(lv, `[[`, 0, "lo")), rate = x$rate)
+# recordings (each channel's noise, the median over them, and the channels
+# that move in most of them) and then reads a recording, or a live stream,
+# from the start with find_motion()'s signals: the motion is sure once a
+# moving channel has left its rest level by `min_move` noise sds, and its
+# onset is walked back from there as in find_motion(). The rate is centred,
+# so the detector looks `motion_rate_s` (0.12 s) ahead.
+fit_onset_detector <- function(x, min_move = 12) {
+  noise <- vapply(seq_along(x$dofs), function(j) {
+    stats::median(vapply(x$recordings, function(r) channel_noise(r[, j, drop = FALSE]), numeric(1)))
+  }, numeric(1))
+  moving <- vapply(x$recordings, function(r) {
+    sig <- motion_signals(r, x$rate, noise)
+    seq_along(x$dofs) %in% moving_channels(sig$move, sig$peak_rate, min_move)
+  }, logical(length(x$dofs)))
+  share <- rowMeans(matrix(moving, nrow = length(x$dofs)))
+  list(noise = noise, use = which(share >= 0.5), min_move = min_move, rate = x$rate)
 }
 
-# The onset frame of one recording by a fitted detector, NA when the speed
-# never passes the high level.
+# The onset frame of one recording by a fitted detector, NA while no moving
+# channel has left its rest level by `min_move` noise sds.
 detect_onset <- function(rec, det) {
-  s <- motion_speed(rec, det$spread, det$width)
-  a <- which(s > det$hi)[1]
-  if (is.na(a)) return(NA_integer_)
-  while (a > 1L && s[a - 1L] > det$lo) a <- a - 1L
-  as.integer(a)
+  if (!length(det$use) || nrow(rec) < 3L) return(NA_integer_)
+  sig <- motion_signals(rec, det$rate, det$noise)
+  sure <- vapply(det$use, function(j) which(abs(sig$D[, j]) >= det$min_move)[1], integer(1))
+  if (all(is.na(sure))) return(NA_integer_)
+  keep <- !is.na(sure)
+  walk_back_onset(sig, det$use[keep], sure[keep])$onset
 }
 
 # Recordings cut to start at their detected onset (kept whole where none is

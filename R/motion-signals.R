@@ -1,0 +1,153 @@
+# The signals that find a grasping motion, shared by find_motion(),
+# cut_motion() and the recogniser's onset detector (fit_onset_detector()).
+#
+# Every threshold is in units of a channel's own noise, estimated from the
+# recording itself, because real gloves mix channels that move a lot with
+# channels that only jitter (loose sensors, pressure pads that stay at zero
+# until contact, stuck channels): scaling by a channel's spread over the set,
+# as before, made a jittery channel's noise look like motion, and quantiles of
+# the speed, on short recordings that are mostly motion, put the "still" level
+# inside the motion (flexglove: median rest 0.00 s).
+#
+#  * noise: sd of the white noise of a channel, from the median absolute
+#    second difference (robust to the motion, which is smooth, and to spikes);
+#    floored at half the smallest step between frames (quantisation: a
+#    channel in counts that never changes has noise 0.5, not 0).
+#  * smoothed channel: running median of 3 frames (removes one-frame spikes).
+#  * departure: the smoothed channel minus its rest level (the median of the
+#    first `motion_rest_s` seconds), in noise sds; its largest absolute value
+#    is how far the channel moves ("move").
+#  * rate: central difference over +-`motion_rate_s` seconds, in noise sds of
+#    that difference.
+#
+# A channel "moves" when its move and its peak rate are at least `min_move`
+# noise sds and its move at least `motion_weight_share` of the largest: a channel
+# that only jitters, or carries spikes, or is nearly constant, never reaches
+# it, so it can never start or end a motion.
+
+motion_rest_s <- 0.15       # rest window for the rest level
+motion_rate_s <- 0.12       # half-width of the rate's central difference
+motion_level_z <- 3         # a channel is at rest while within 3 noise sds of its rest level
+motion_rate_z <- 6          # ... or moving while its rate exceeds 6 noise sds of the rate
+motion_rate_share <- 0.05   # ... and 5% of its peak rate
+motion_edge_share <- 0.3    # the motion is first sure where a channel has moved 30% of its move
+motion_weight_share <- 0.2  # a channel moving less than 20% of the largest move is ignored
+
+# Noise sd per column of a matrix (see above).
+channel_noise <- function(X) {
+  apply(X, 2, function(v) {
+    v <- v[is.finite(v)]
+    if (length(v) < 4L) return(Inf)
+    d <- abs(diff(v))
+    step <- if (any(d > 0)) min(d[d > 0]) / 2 else 0.5
+    max(stats::mad(diff(v, differences = 2)) / sqrt(6), step)
+  })
+}
+
+# Running median of 3 frames per column (a recording of 3 frames or fewer as is).
+smooth_channels <- function(X) {
+  if (nrow(X) <= 3L) return(X)
+  S <- apply(X, 2, function(v) as.numeric(stats::runmed(v, 3L, endrule = "median")))
+  matrix(S, nrow(X), dimnames = dimnames(X))
+}
+
+# Frames of the rest window and of the rate's half-width at `rate` Hz.
+rest_frames <- function(rate) max(3L, round(motion_rest_s * rate))
+rate_lag <- function(rate) max(1L, round(motion_rate_s * rate))
+
+# Signed rate per column: central difference over +-lag frames (clamped at
+# the ends), per frame.
+channel_rate <- function(S, lag) {
+  n <- nrow(S)
+  ahead <- pmin(seq_len(n) + lag, n)
+  behind <- pmax(seq_len(n) - lag, 1L)
+  (S[ahead, , drop = FALSE] - S[behind, , drop = FALSE]) / pmax(ahead - behind, 1L)
+}
+
+# Everything find_motion() and detect_onset() read from one recording:
+# smoothed channels, noise, departure from rest (noise sds), moves, rate and
+# the rate's noise sd. `noise` may be given (a fitted detector's).
+motion_signals <- function(rec, rate, noise = NULL) {
+  rec <- as.matrix(rec)
+  S <- smooth_channels(rec)
+  if (is.null(noise)) noise <- channel_noise(rec)
+  rest <- apply(S[seq_len(min(rest_frames(rate), nrow(S))), , drop = FALSE], 2, stats::median)
+  lag <- rate_lag(rate)
+  D <- sweep(sweep(S, 2, rest), 2, noise, "/")
+  R <- sweep(channel_rate(S, lag), 2, noise * sqrt(2) / (2 * lag), "/")
+  list(S = S, noise = noise, D = D, move = apply(abs(D), 2, max), lag = lag, R = R,
+       peak_rate = apply(abs(R), 2, max))
+}
+
+# Channels that move: a move of at least `min_move` noise sds and a fifth of
+# the largest move, reached at a peak rate of at least `min_move` noise sds of
+# the rate (a hold's slow creep can add up to a large move, but slowly).
+moving_channels <- function(move, peak_rate, min_move) {
+  move[!is.finite(move)] <- 0
+  peak_rate[!is.finite(peak_rate)] <- 0
+  which(move >= min_move & peak_rate >= min_move & move >= motion_weight_share * max(move))
+}
+
+# The onset of a motion, walked back from frame `sure[j]` of each moving
+# channel j (where it is surely moving): first back to where that channel is
+# within `motion_level_z` noise sds of its rest level, then, from the earliest
+# channel, further back while the channels together are still moving in the
+# direction of their move (the pooled rate, weighting each channel by its
+# move, above `motion_rate_z` and `motion_rate_share` of its peak). The second
+# walk finds the slow start of a smooth reach that is still inside the noise
+# band of any one channel. Returns the onset and the channel that starts it.
+walk_back_onset <- function(sig, use, sure) {
+  a <- vapply(seq_along(use), function(i) {
+    d <- abs(sig$D[, use[i]])
+    t <- sure[i]
+    while (t > 1L && d[t - 1L] > motion_level_z) t <- t - 1L
+    t
+  }, numeric(1))
+  dir <- vapply(seq_along(use), function(i) sign(sig$D[sure[i], use[i]]), numeric(1))
+  w <- sig$move[use] / sqrt(sum(sig$move[use]^2))
+  pooled <- as.numeric(sig$R[, use, drop = FALSE] %*% (dir * w))
+  first <- which.min(a)
+  t <- a[first]
+  thr <- max(motion_rate_share * max(pooled), motion_rate_z)
+  while (t > 1L && pooled[t - 1L] > thr) t <- t - 1L
+  list(onset = as.integer(t), lead = use[first])
+}
+
+# The end of a motion: for each channel moving at least `motion_weight_share`
+# of the largest move, from its last frame at half its peak rate forward while
+# its rate stays above `motion_rate_z` noise sds and `motion_rate_share` of its
+# peak; the latest of these. Slow creep while holding is not motion.
+walk_forward_end <- function(sig, use) {
+  n <- nrow(sig$R)
+  ends <- vapply(use, function(j) {
+    r <- abs(sig$R[, j])
+    pk <- max(r)
+    thr <- max(motion_rate_share * pk, motion_rate_z)
+    e <- max(which(r >= 0.5 * pk))
+    while (e < n && r[e + 1L] > thr) e <- e + 1L
+    e
+  }, numeric(1))
+  as.integer(max(ends))
+}
+
+# The motion of one recording: list(start, end, found, status, lead).
+motion_span <- function(rec, rate, min_move, min_still) {
+  n <- nrow(rec)
+  none <- function(status) list(start = 1L, end = n, found = FALSE, status = status, lead = NA_character_)
+  if (n < 2L * rest_frames(rate)) return(none("too short"))
+  sig <- motion_signals(rec, rate)
+  use <- moving_channels(sig$move, sig$peak_rate, min_move)
+  if (!length(use)) return(none("rest only"))
+  sure <- vapply(use, function(j) {
+    d <- abs(sig$D[, j])
+    which(d > motion_edge_share * max(d))[1]
+  }, integer(1))
+  on <- walk_back_onset(sig, use, sure)
+  a <- on$onset
+  b <- max(walk_forward_end(sig, use), a)
+  # a still phase shorter than min_still is part of the motion
+  if (a - 1L < min_still) a <- 1L
+  if (n - b < min_still) b <- n
+  list(start = as.integer(a), end = as.integer(b), found = TRUE, status = "motion",
+       lead = colnames(rec)[on$lead] %||% as.character(on$lead))
+}
