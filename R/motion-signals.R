@@ -15,23 +15,25 @@
 #    channel in counts that never changes has noise 0.5, not 0).
 #  * smoothed channel: running median of 3 frames (removes one-frame spikes).
 #  * departure: the smoothed channel minus its rest level (the median of the
-#    first `motion_rest_s` seconds), in noise sds; its largest absolute value
-#    is how far the channel moves ("move").
+#    first `motion_rest_s` seconds), in noise sds; the largest absolute value
+#    it keeps for `motion_sustain` frames is how far the channel moves
+#    ("move"; a spike of one or two frames moves nothing).
 #  * rate: central difference over +-`motion_rate_s` seconds, in noise sds of
 #    that difference.
 #
 # A channel "moves" when its move and its peak rate are at least `min_move`
-# noise sds and its move at least `motion_weight_share` of the largest: a channel
-# that only jitters, or carries spikes, or is nearly constant, never reaches
-# it, so it can never start or end a motion.
+# noise sds: a channel that only jitters, or carries spikes, or is nearly
+# constant, never reaches it, so it can never start or end a motion. (No
+# threshold is relative to the other channels: a clean pressure pad that
+# jumps by hundreds of sds at contact must not silence the fingers.)
 
 motion_rest_s <- 0.15       # rest window for the rest level
 motion_rate_s <- 0.12       # half-width of the rate's central difference
-motion_level_z <- 3         # a channel is at rest while within 3 noise sds of its rest level
+motion_level_z <- 4         # a channel is at rest while within 4 noise sds of its rest level
 motion_rate_z <- 6          # ... or moving while its rate exceeds 6 noise sds of the rate
 motion_rate_share <- 0.05   # ... and 5% of its peak rate
 motion_edge_share <- 0.3    # the motion is first sure where a channel has moved 30% of its move
-motion_weight_share <- 0.2  # a channel moving less than 20% of the largest move is ignored
+motion_sustain <- 3L         # a departure counts once it lasts 3 frames (spikes last 1 or 2)
 
 # Noise sd per column of a matrix (see above).
 channel_noise <- function(X) {
@@ -75,25 +77,36 @@ motion_signals <- function(rec, rate, noise = NULL) {
   lag <- rate_lag(rate)
   D <- sweep(sweep(S, 2, rest), 2, noise, "/")
   R <- sweep(channel_rate(S, lag), 2, noise * sqrt(2) / (2 * lag), "/")
-  list(S = S, noise = noise, D = D, move = apply(abs(D), 2, max), lag = lag, R = R,
+  held <- sustained(abs(D))
+  list(S = S, noise = noise, D = D, held = held, move = apply(held, 2, max), lag = lag, R = R,
        peak_rate = apply(abs(R), 2, max))
 }
 
-# Channels that move: a move of at least `min_move` noise sds and a fifth of
-# the largest move, reached at a peak rate of at least `min_move` noise sds of
-# the rate (a hold's slow creep can add up to a large move, but slowly).
+# Per column, the smallest of each frame and the next `motion_sustain - 1`
+# frames: the level a departure keeps for `motion_sustain` frames.
+sustained <- function(A) {
+  n <- nrow(A)
+  out <- A
+  for (k in seq_len(motion_sustain - 1L)) out <- pmin(out, A[pmin(seq_len(n) + k, n), , drop = FALSE])
+  out
+}
+
+# Channels that move: a move of at least `min_move` noise sds, reached at a
+# peak rate of at least `min_move` noise sds of the rate (a hold's slow creep
+# can add up to a large move, but slowly).
 moving_channels <- function(move, peak_rate, min_move) {
   move[!is.finite(move)] <- 0
   peak_rate[!is.finite(peak_rate)] <- 0
-  which(move >= min_move & peak_rate >= min_move & move >= motion_weight_share * max(move))
+  which(move >= min_move & peak_rate >= min_move)
 }
 
 # The onset of a motion, walked back from frame `sure[j]` of each moving
 # channel j (where it is surely moving): first back to where that channel is
 # within `motion_level_z` noise sds of its rest level, then, from the earliest
-# channel, further back while the channels together are still moving in the
-# direction of their move (the pooled rate, weighting each channel by its
-# move, above `motion_rate_z` and `motion_rate_share` of its peak). The second
+# channel, further back while the channels that leave rest with it are still
+# moving in the direction of their move (their pooled rate, weighting each
+# channel by its move, above `motion_rate_z` and `motion_rate_share` of its
+# peak). The second
 # walk finds the slow start of a smooth reach that is still inside the noise
 # band of any one channel. Returns the onset and the channel that starts it.
 walk_back_onset <- function(sig, use, sure) {
@@ -103,18 +116,22 @@ walk_back_onset <- function(sig, use, sure) {
     while (t > 1L && d[t - 1L] > motion_level_z) t <- t - 1L
     t
   }, numeric(1))
-  dir <- vapply(seq_along(use), function(i) sign(sig$D[sure[i], use[i]]), numeric(1))
-  w <- sig$move[use] / sqrt(sum(sig$move[use]^2))
-  pooled <- as.numeric(sig$R[, use, drop = FALSE] %*% (dir * w))
   first <- which.min(a)
+  # pool the channels that leave rest together with the first (within the
+  # rate's half-width): a channel that starts later, such as a pressure pad
+  # at contact, is still at rest there and would only dilute the rate
+  lead <- which(a <= a[first] + sig$lag)
+  dir <- vapply(lead, function(i) sign(sig$D[sure[i], use[i]]), numeric(1))
+  w <- sig$move[use[lead]] / sqrt(sum(sig$move[use[lead]]^2))
+  pooled <- as.numeric(sig$R[, use[lead], drop = FALSE] %*% (dir * w))
   t <- a[first]
   thr <- max(motion_rate_share * max(pooled), motion_rate_z)
   while (t > 1L && pooled[t - 1L] > thr) t <- t - 1L
   list(onset = as.integer(t), lead = use[first])
 }
 
-# The end of a motion: for each channel moving at least `motion_weight_share`
-# of the largest move, from its last frame at half its peak rate forward while
+# The end of a motion: for each moving channel, from its last frame at half
+# its peak rate forward while
 # its rate stays above `motion_rate_z` noise sds and `motion_rate_share` of its
 # peak; the latest of these. Slow creep while holding is not motion.
 walk_forward_end <- function(sig, use) {
@@ -138,10 +155,7 @@ motion_span <- function(rec, rate, min_move, min_still) {
   sig <- motion_signals(rec, rate)
   use <- moving_channels(sig$move, sig$peak_rate, min_move)
   if (!length(use)) return(none("rest only"))
-  sure <- vapply(use, function(j) {
-    d <- abs(sig$D[, j])
-    which(d > motion_edge_share * max(d))[1]
-  }, integer(1))
+  sure <- vapply(use, function(j) which(sig$held[, j] > motion_edge_share * sig$move[j])[1], integer(1))
   on <- walk_back_onset(sig, use, sure)
   a <- on$onset
   b <- max(walk_forward_end(sig, use), a)

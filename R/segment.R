@@ -16,13 +16,13 @@
 #' second differences, so a smooth motion does not count as noise), after a
 #' running median of 3 frames that removes one-frame spikes. A channel
 #' *moves* when it leaves its rest level (the median of the first 0.15 s) by
-#' at least `min_move` noise sds and by at least a fifth of the largest move
-#' of the recording; channels that only jitter, carry spikes or hardly change
+#' at least `min_move` noise sds for at least 3 frames, at a peak rate of at
+#' least `min_move` noise sds; channels that only jitter, carry spikes or hardly change
 #' never move, so they never start or end a motion, and a pressure pad that
 #' rises at contact moves late and does not start it either. A recording
 #' where no channel moves is reported as rest only.
 #'
-#' The motion starts where the first moving channel leaves the band of 3
+#' The motion starts where the first moving channel leaves the band of 4
 #' noise sds around its rest level (found walking back from where it has
 #' made 30% of its move), extended back while the moving channels together
 #' are still moving in the direction of their move (their rate, pooled with
@@ -130,8 +130,7 @@ cut_motion <- function(x, min_motion = 0.3, min_gap = 0.3, min_move = 12) {
 }
 
 # Every motion of a stream. There is no one rest level in a stream, so a
-# channel moves when its peak rate reaches `min_move` noise sds (and a fifth
-# of the largest); the activity is the root mean square of the moving
+# channel moves when its peak rate reaches `min_move` noise sds; the activity is the root mean square of the moving
 # channels' rates (noise sds), and a motion is a run above the rate level of
 # find_motion() (6 noise sds, 5% of the activity's peak) that reaches twice
 # it, joined across gaps shorter than `min_gap` frames, at least `min_len` long.
@@ -226,7 +225,7 @@ fit_onset_detector <- function(x, min_move = 12) {
 detect_onset <- function(rec, det) {
   if (!length(det$use) || nrow(rec) < 3L) return(NA_integer_)
   sig <- motion_signals(rec, det$rate, det$noise)
-  sure <- vapply(det$use, function(j) which(abs(sig$D[, j]) >= det$min_move)[1], integer(1))
+  sure <- vapply(det$use, function(j) which(sig$held[, j] >= det$min_move)[1], integer(1))
   if (all(is.na(sure))) return(NA_integer_)
   keep <- !is.na(sure)
   walk_back_onset(sig, det$use[keep], sure[keep])$onset
