@@ -1,7 +1,8 @@
 # Finding the grasping motion on real sensors (issue 40): find_motion() on the
 # 626 real flexglove recordings against 80 hand-marked onsets and ends
-# (tests/testthat/fixtures/flexglove-motion.csv, see the .md beside it), and
-# on a simulated wide glove (15 raw channels at 100 Hz, 1.4 s of rest, 1 s of
+# (tests/testthat/fixtures/flexglove-motion.csv, see the .md beside it; and
+# 20 more marked after tuning, flexglove-motion-heldout.csv), and on a
+# simulated wide glove (15 raw channels at 100 Hz, 1.4 s of rest, 1 s of
 # hold, one person, six objects) with 8 planted channels that carry noise but
 # no motion (white noise, spikes, near-constant) or only rise at contact
 # (pressure pads).
@@ -35,7 +36,7 @@ fg <- file.path(Sys.getenv("HANDMOTION_SHARED", "/work/shared"), "data", "flexgl
 if (dir.exists(fg)) {
   fx <- utils::read.csv("tests/testthat/fixtures/flexglove-motion.csv", comment.char = "#", stringsAsFactors = FALSE)
   man <- utils::read.csv(file.path(fg, "manifest.csv"), stringsAsFactors = FALSE)
-  if (bench_quick) man <- man[man$file %in% fx$file, ]  # the 80 marked recordings only
+  if (bench_quick) man <- man[man$file %in% fx$file, ]  # the 80 marked recordings only (no held-out figure)
   read_one <- function(f) as.matrix(utils::read.csv(file.path(fg, f)))
   all <- grasps(lapply(man$file, read_one), meta = data.frame(grasp = man$label, subject = man$subject),
                 rate = 33.3)
@@ -50,6 +51,14 @@ if (dir.exists(fg)) {
               mean(abs(on_err[fx$clear])), mean(on_err)))
   cat(sprintf("  end MAE    %.2f frames (clear ones %.2f), mean error %+.2f\n", mean(abs(end_err)),
               mean(abs(end_err[fx$clear])), mean(end_err)))
+  ho <- utils::read.csv("tests/testthat/fixtures/flexglove-motion-heldout.csv", comment.char = "#",
+                        stringsAsFactors = FALSE)
+  kh <- match(ho$file, man$file)
+  if (!anyNA(kh)) {
+    cat(sprintf("  held out (%d marked after tuning): onset MAE %.2f frames, end MAE %.2f frames\n", nrow(ho),
+                mean(abs(m$start[kh] - ho$onset)), mean(abs(m$end[kh] - ho$end))))
+    bench_record("flexglove held-out onset MAE (frames)", mean(abs(m$start[kh] - ho$onset)), "frames")
+  }
   cat(sprintf("  hand marks' median rest %.2f s\n", stats::median(fx$onset - 1) / 33.3))
   cat(sprintf("  median rest: find_motion %.2f s, plain threshold %.2f s (%d recordings)\n",
               stats::median(m$rest) / 33.3, stats::median(plain - 1) / 33.3, length(all)))

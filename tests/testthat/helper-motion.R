@@ -31,12 +31,12 @@ plant_motion <- function(n_rec = 40, rate = 100, p = 12, noise = 1.5, seed = 1) 
 # not in R CMD check.
 slow_tests_enabled <- function() identical(Sys.getenv("HANDMOTION_SLOW_TESTS"), "true")
 
-# The hand-marked flexglove recordings (fixtures/flexglove-motion.csv), read
-# in place from the shared folder (skips without it): list(g, marks).
-flexglove_marked <- function() {
+# The hand-marked flexglove recordings (fixtures/flexglove-motion.csv, or the
+# held-out flexglove-motion-heldout.csv), read in place from the shared
+# folder (skips without it): list(g, marks).
+flexglove_marked <- function(file = "flexglove-motion.csv") {
   dir <- dirname(shared_file("data", "flexglove", "manifest.csv"))
-  marks <- utils::read.csv(test_path("fixtures", "flexglove-motion.csv"), comment.char = "#",
-                           stringsAsFactors = FALSE)
+  marks <- utils::read.csv(test_path("fixtures", file), comment.char = "#", stringsAsFactors = FALSE)
   recs <- lapply(marks$file, function(f) as.matrix(utils::read.csv(file.path(dir, f))))
   list(g = grasps(recs, meta = data.frame(grasp = marks$label, subject = marks$subject), rate = 33.3),
        marks = marks)
