@@ -231,7 +231,7 @@ hust_read_plan <- function(files, manifest, pattern, base_dir, from_dir, call = 
     }
     meta <- man
     meta$file <- NULL
-    if (!"id" %in% names(meta)) meta$id <- unique_ids(file_stem(listed), file_stem_path(man$file))
+    if (!"id" %in% names(meta)) meta$id <- unique_ids(file_stem(listed), file_stem_path(man$file), listed)
     meta$source <- listed
     errors <- lapply(seq_along(listed), function(k) {
       if (!file.exists(listed[k])) {
@@ -244,7 +244,7 @@ hust_read_plan <- function(files, manifest, pattern, base_dir, from_dir, call = 
   }
   files <- files[basename(files) != hust_manifest_name]
   rel <- relative_stems(files, base_dir)
-  meta <- data.frame(id = unique_ids(file_stem(files), rel), source = files, stringsAsFactors = FALSE)
+  meta <- data.frame(id = unique_ids(file_stem(files), rel, files), source = files, stringsAsFactors = FALSE)
   errors <- vector("list", length(files))
   if (!is.null(pattern)) {
     # a pattern with a "/" is about the folders too: matched against the
@@ -287,8 +287,14 @@ relative_stems <- function(files, base_dir) {
 }
 
 # Recording ids: the file names, or, when a name repeats (the same
-# "P1_pen_1.csv" in two label folders), every file's relative path.
-unique_ids <- function(stems, rel) if (anyDuplicated(stems)) rel else stems
+# "P1_pen_1.csv" in two label folders), every file's relative path, or when
+# even those repeat (files named one by one from different folders), the
+# full paths.
+unique_ids <- function(stems, rel, full) {
+  if (!anyDuplicated(stems)) return(stems)
+  if (!anyDuplicated(rel)) return(rel)
+  file_stem_path(normalizePath(full, winslash = "/", mustWork = FALSE))
+}
 
 # A classed condition object built like hm_abort() would, without raising it.
 hm_condition <- function(message, class, ..., .envir = parent.frame()) {

@@ -34,6 +34,10 @@ test_that("a folder per label: labels from folders, repeated file names give uni
   # without a pattern (sub-folders asked for): still no error, ids unique
   h <- read_glove(dir, glove = tiny_glove(), recursive = TRUE)
   expect_identical(h$meta$id, g$meta$id)
+  # files named one by one from two folders: the full paths
+  two <- file.path(dir, c("pen/P1_a_1.csv", "cup/P1_a_1.csv"))
+  k <- read_glove(two, glove = tiny_glove())
+  expect_identical(k$meta$id, sub("\\.csv$", "", normalizePath(two, winslash = "/")))
 })
 
 test_that("uneven time stamps are resampled to a constant grid (planted signal recovered)", {

@@ -90,7 +90,14 @@ def read_hust(path, manifest=None, pattern=None, **kwargs):
     other arguments are R's (see :func:`read_glove`). Files that could not be read are in
     ``result.failures``.
     """
-    return _with_failures(call("read_hust", str(path), manifest=manifest, pattern=pattern, **kwargs))
+    return _with_failures(call("read_hust", _path_arg(path), manifest=manifest, pattern=pattern, **kwargs))
+
+
+def _path_arg(path):
+    """A path (str or os.PathLike) or a list of them, as R's character vector wants them."""
+    if isinstance(path, (list, tuple)):
+        return [os.fspath(p) for p in path]
+    return os.fspath(path)
 
 
 def _with_failures(res):
@@ -552,7 +559,7 @@ def read_glove(path, glove, rate=None, time=None, time_unit=None, pattern=None, 
                 pattern=pattern, manifest=manifest)
     if recursive is not None:
         args["recursive"] = bool(recursive)
-    return _with_failures(call("read_glove", str(path), glove=_glove_arg(glove), **args, **kwargs))
+    return _with_failures(call("read_glove", _path_arg(path), glove=_glove_arg(glove), **args, **kwargs))
 
 
 def calibrate(x, poses=None, angles=None, ranges=None):

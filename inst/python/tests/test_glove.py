@@ -117,3 +117,14 @@ def test_read_glove_time_column_and_folder_labels(tmp_path):
     assert list(g.failures["line"]) == [4]
     with pytest.raises(hm.BadInputError, match="unit"):
         hm.read_glove(tmp_path, glove=glove, time="t", recursive=True)
+
+
+def test_read_glove_files_named_one_by_one(tmp_path):
+    glove = pd.DataFrame({"channel": ["a", "b"], "unit": "raw", "min": 0, "max": 1023})
+    for label in ["cup", "pen"]:
+        (tmp_path / label).mkdir()
+        (tmp_path / label / "r1.csv").write_text("a,b\n1,2\n3,4\n")
+    files = [tmp_path / "cup" / "r1.csv", tmp_path / "pen" / "r1.csv"]
+    g = hm.read_glove(files, glove=glove, rate=10)
+    assert len(g) == 2 and g.meta["id"].is_unique
+    assert list(g.meta["id"].map(os.path.basename)) == ["r1", "r1"]
