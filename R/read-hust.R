@@ -43,7 +43,9 @@ hust_manifest_name <- "manifest.csv"
 #' suffix: `"time_ms"` is milliseconds, `"t_s"` seconds, `"t_us"`
 #' microseconds). Files with a header must have that column (anywhere);
 #' files without one have it first. Times must increase from frame to
-#' frame. Every recording is then resampled onto a constant grid from its
+#' frame. Time stamps kept in files of their own (one per data file, at the
+#' same path below a folder) are read with `timestamps`. Every recording is
+#' then resampled onto a constant grid from its
 #' first time by linear interpolation, at `rate`, or by default at one over
 #' the median interval between frames over the whole set. The metadata
 #' column `recorded_rate` keeps each file's own rate (one over its median
@@ -84,6 +86,11 @@ hust_manifest_name <- "manifest.csv"
 #'   constant rate.
 #' @param time_unit Unit of the time column: `"ms"`, `"s"` or `"us"`;
 #'   `NULL` reads it from the column name's suffix (`"time_ms"`).
+#' @param timestamps `NULL` (the time column is in the data files), or a
+#'   folder (below `path`, or a path) holding the `time` column of each data
+#'   file in a file at the same relative path, e.g. `"timestamps"` for
+#'   `timestamps/Ventral/P1_pen_1.csv` beside `Ventral/P1_pen_1.csv`; its
+#'   files are not read as recordings.
 #' @return A `grasps` object with the 16 HUST DoFs (or the glove's
 #'   channels). Attribute `"failures"`
 #'   lists every file that could not be read (see [read_failures()]): bad
@@ -106,7 +113,7 @@ hust_manifest_name <- "manifest.csv"
 read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = NA,
                       rate = NULL, unit = NULL, file_pattern = "\\.(csv|txt)$",
                       recursive = NA, truncated = c("error", "drop"), glove = NULL,
-                      time = NULL, time_unit = NULL) {
+                      time = NULL, time_unit = NULL, timestamps = NULL) {
   call <- rlang::caller_env()
   truncated <- check_choice(truncated, arg = "truncated", call = call)
   pattern <- check_regex(pattern, "pattern", perl = TRUE, allow_null = TRUE, call = call)
@@ -126,6 +133,8 @@ read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = 
   }
   input <- list_input_files(path, file_pattern, recursive, call = call)
   base_dir <- if (length(path) == 1L && dir.exists(path)) path else dirname(path[1])
+  ts_dir <- timestamps_dir(timestamps, time, base_dir, call = call)
+  if (!is.null(ts_dir)) input$files <- input$files[!under_dir(input$files, ts_dir)]
   if (is.null(manifest) && is.null(pattern) && length(path) == 1L && dir.exists(path) &&
       file.exists(file.path(path, hust_manifest_name))) {
     manifest <- file.path(path, hust_manifest_name)
@@ -138,9 +147,15 @@ read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = 
   reader <- function(k) {
     pre <- plan$errors[[k]]
     if (!is.null(pre)) stop(pre)
-    rec <- parse_hust_content(plan$files[k], dofs = columns, header = header, sep = sep,
-                              truncated = truncated, time = time$column, call = call)
-    if (!is.null(time)) rec <- split_time_column(rec, time, plan$files[k], call = call)
+    if (is.null(ts_dir)) {
+      rec <- parse_hust_content(plan$files[k], dofs = columns, header = header, sep = sep,
+                                truncated = truncated, time = time$column, call = call)
+    } else {
+      rec <- parse_hust_content(plan$files[k], dofs = dofs, header = header, sep = sep,
+                                truncated = truncated, call = call)
+      rec <- add_time_file(rec, plan$files[k], base_dir, ts_dir, time, header, sep, truncated, call = call)
+    }
+    if (!is.null(time)) rec <- split_time_column(rec, time, rec$time_file %||% plan$files[k], call = call)
     rec
   }
   if (!input$many) {
@@ -277,14 +292,17 @@ is_path_pattern <- function(pattern) !is.null(pattern) && grepl("/", pattern, fi
 # A path without its extension (a file_stem() that keeps the folders).
 file_stem_path <- function(path) sub("\\.[[:alnum:]]+$", "", trimws(path))
 
-# Each file's path below `base_dir`, "/"-separated and without extension
-# ("Ventral/P1_pen_1"); a file outside `base_dir` keeps only its name.
-relative_stems <- function(files, base_dir) {
+# Each file's path below `base_dir`, "/"-separated ("Ventral/P1_pen_1.csv");
+# a file outside `base_dir` keeps only its name.
+relative_paths <- function(files, base_dir) {
   f <- normalizePath(files, winslash = "/", mustWork = FALSE)
   b <- sub("/+$", "", normalizePath(base_dir, winslash = "/", mustWork = FALSE))
   inside <- startsWith(f, paste0(b, "/"))
-  file_stem_path(ifelse(inside, substring(f, nchar(b) + 2L), basename(f)))
+  ifelse(inside, substring(f, nchar(b) + 2L), basename(f))
 }
+
+# The same without extension ("Ventral/P1_pen_1").
+relative_stems <- function(files, base_dir) file_stem_path(relative_paths(files, base_dir))
 
 # Recording ids: the file names, or, when a name repeats (the same
 # "P1_pen_1.csv" in two label folders), every file's relative path, or when
@@ -454,7 +472,7 @@ detect_separator <- function(line) {
 #' @param rate Sampling rate in Hz. `NULL` (default): with `time`, one over
 #'   the median interval between frames; else the manifest's, else 50.
 #' @param ... Further arguments of [read_hust()]: `manifest`, `pattern`,
-#'   `time`, `time_unit`, `header`, `sep`, `unit`, `file_pattern`,
+#'   `time`, `time_unit`, `timestamps`, `header`, `sep`, `unit`, `file_pattern`,
 #'   `recursive`, `truncated`.
 #' @return A [grasps()] object carrying `glove`.
 #' @seealso [glove_profile()], [calibrate()], [trim_motion()]

@@ -94,3 +94,55 @@ resampled_note <- function(meta, rate) {
   sprintf("resampled to %.4g Hz from time stamps (recorded at %.4g to %.4g Hz, median %.4g)",
           rate, min(r, na.rm = TRUE), max(r, na.rm = TRUE), stats::median(r, na.rm = TRUE))
 }
+
+# Time stamps kept apart from the channels: a folder (`timestamps`, below
+# `path` or anywhere) holding, for each data file, a file at the same
+# relative path with the `time` column (what the flexglove source's copy in
+# /work/shared keeps: <label>/<name>.csv and timestamps/<label>/<name>.csv).
+# Returns the folder's normalised path, or NULL.
+timestamps_dir <- function(timestamps, time, base_dir, call = rlang::caller_env()) {
+  if (is.null(timestamps)) return(NULL)
+  if (!is.character(timestamps) || length(timestamps) != 1L || is.na(timestamps)) {
+    hm_abort("{.arg timestamps} must be the folder of the time stamp files, not {describe_value(timestamps)}.",
+             "bad_input", argument = "timestamps", call = call)
+  }
+  if (is.null(time)) {
+    hm_abort("{.arg timestamps} needs {.arg time}: the name of the time column in its files.",
+             "bad_input", argument = "time", call = call)
+  }
+  dir <- c(file.path(base_dir, timestamps), timestamps)
+  dir <- dir[dir.exists(dir)]
+  if (!length(dir)) {
+    hm_abort("{.arg timestamps} folder {.file {timestamps}} does not exist (in {.file {base_dir}} or as given).",
+             "file_not_found", argument = "timestamps", file = timestamps, call = call)
+  }
+  normalizePath(dir[1], winslash = "/")
+}
+
+# Whether each file lies inside `dir` (the time stamp files are not data).
+under_dir <- function(files, dir) {
+  startsWith(normalizePath(files, winslash = "/", mustWork = FALSE), paste0(dir, "/"))
+}
+
+# A parsed data file with the times of its time stamp file put first (as if
+# the file had the column), for split_time_column(). Its frames and times
+# must pair up one to one.
+add_time_file <- function(rec, file, base_dir, ts_dir, time, header, sep, truncated,
+                          call = rlang::caller_env()) {
+  rel <- relative_paths(file, base_dir)
+  tfile <- file.path(ts_dir, rel)
+  if (!file.exists(tfile)) {
+    abort_bad_file("No time stamp file {.file {tfile}} for {.file {file}}.", "file_not_found",
+                   file = file, call = call)
+  }
+  t <- parse_hust_content(tfile, dofs = time$column, header = header, sep = sep, truncated = truncated,
+                          time = time$column, call = call)
+  if (nrow(t$values) != nrow(rec$values)) {
+    abort_bad_file("{.file {tfile}} has {nrow(t$values)} time{?s} for the {nrow(rec$values)} frame{?s} of {.file {file}}.",
+                   "bad_time", file = file, line = NA_integer_, call = call)
+  }
+  rec$values <- cbind(t$values, rec$values)
+  rec$line_no <- t$line_no
+  rec$time_file <- tfile
+  rec
+}

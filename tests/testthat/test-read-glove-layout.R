@@ -119,6 +119,40 @@ test_that("bad time columns and unmatched folder patterns are classed errors nam
   expect_error(read_glove(dir, glove = tiny_glove(), recursive = "yes"), class = "handmotion_error_bad_input")
 })
 
+test_that("time stamps in files of their own (a timestamps folder) pair with the data files", {
+  dir <- withr::local_tempdir()
+  m <- matrix(c(0, 10, 20, 30, 5, 5, 5, 5, 1, 2, 3, 4), 4, 3)
+  put <- function(rel, lines) write_fixture(dirname(file.path(dir, rel)), basename(rel), lines)
+  data_lines <- c("a,b,c", apply(m, 1, paste, collapse = ","))
+  put("cup/r1.csv", data_lines)
+  put("pen/r1.csv", data_lines)
+  put("timestamps/cup/r1.csv", c("time_ms", 100, 110, 130, 140))
+  put("timestamps/pen/r1.csv", c("time_ms", 0, 20, 40, 60))
+  g <- read_glove(dir, glove = tiny_glove(), time = "time_ms", timestamps = "timestamps",
+                  pattern = "^(?<grasp>[^/]+)/")
+  expect_identical(nrow(read_failures(g)), 0L)
+  expect_identical(g$meta$id, c("cup/r1", "pen/r1"))
+  # median interval over both files: 20 ms; cup's frames at 100, 110, 130, 140
+  # come back at 100, 120, 140 (channel a is 0, 10, 20, 30 at those times)
+  expect_equal(g$rate, 50)
+  expect_equal(unname(g$recordings[[1]][, "a"]), c(0, 15, 30))
+  expect_equal(unname(g$recordings[[2]][, "a"]), c(0, 10, 20, 30))
+  expect_equal(g$meta$recorded_rate, c(1000 / 10, 1000 / 20))
+  # a missing or short time stamp file: a failure naming the data file
+  put("timestamps/pen/r1.csv", c("time_ms", 0, 20, 40))
+  put("cup/r2.csv", data_lines)
+  g <- suppressWarnings(read_glove(dir, glove = tiny_glove(), time = "time_ms", timestamps = "timestamps",
+                                   pattern = "^(?<grasp>[^/]+)/"))
+  f <- read_failures(g)
+  expect_identical(g$meta$id, "cup/r1")
+  expect_identical(sub(".*/([a-z]+/r\\d)\\.csv$", "\\1", f$file), c("cup/r2", "pen/r1"))
+  expect_identical(f$class, c("handmotion_error_file_not_found", "handmotion_error_bad_time"))
+  expect_error(read_glove(dir, glove = tiny_glove(), timestamps = "timestamps", recursive = TRUE),
+               class = "handmotion_error_bad_input")
+  expect_error(read_glove(dir, glove = tiny_glove(), time = "time_ms", timestamps = "nowhere", recursive = TRUE),
+               class = "handmotion_error_file_not_found")
+})
+
 test_that("the shipped flexglove recordings read in one line, no manifest", {
   dir <- system.file("extdata", "flexglove", package = "handmotion")
   skip_if(!nzchar(dir), "flexglove extdata not installed")
@@ -140,6 +174,19 @@ test_that("the shipped flexglove recordings read in one line, no manifest", {
   expect_equal(unname(g$recordings[["Ventral/P1_pen_1"]][1, ]), unname(unlist(raw[1, -1])))
   expect_equal(g$rate, 1000 / 30)
   expect_identical(g$glove$name, "flexglove")
+  # the project's copy of the source (times in files of their own) reads to
+  # the same set: the shipped files hold its values unchanged
+  shared <- file.path(Sys.getenv("HANDMOTION_SHARED", "/work/shared"), "data", "flexglove")
+  skip_if_not(dir.exists(shared), "the shared flexglove copy is not on this machine")
+  expect_warning(
+    s <- read_glove(shared, glove = "flexglove", time = "time_ms", timestamps = "timestamps",
+                    pattern = "^(?<grasp>[^/]+)/(?<subject>P\\d)_(?<object>[a-z]+)_(?<trial>\\d+)$"),
+    "excluded_synthetic", class = "handmotion_warning_read_failures")
+  # (its list of left-out files sits beside the folders: reported, not read)
+  expect_identical(basename(read_failures(s)$file), "excluded_synthetic.csv")
+  expect_identical(s$meta$id, g$meta$id)
+  expect_identical(s$rate, g$rate)
+  expect_identical(unname(s$recordings), unname(g$recordings))
 })
 
 test_that("the flexglove profile: 6 raw channels 0-1023, flexion lowers the count", {

@@ -534,8 +534,8 @@ def _glove_arg(glove):
     return glove
 
 
-def read_glove(path, glove, rate=None, time=None, time_unit=None, pattern=None, manifest=None,
-               recursive=None, **kwargs):
+def read_glove(path, glove, rate=None, time=None, time_unit=None, timestamps=None, pattern=None,
+               manifest=None, recursive=None, **kwargs):
     r"""Read any glove's delimited files (one per recording) with the channels of ``glove``
     (a profile name or DataFrame), as R's ``read_glove()``.
 
@@ -546,7 +546,8 @@ def read_glove(path, glove, rate=None, time=None, time_unit=None, pattern=None, 
     when a name repeats across folders. ``time`` names a time column (unit from
     ``time_unit``, or the name's suffix: ``"time_ms"``); the unevenly spaced frames are then
     resampled to one constant ``rate`` (default: one over the median interval), each file's
-    own rate kept in ``meta["recorded_rate"]``. ``recursive=None`` looks into sub-folders
+    own rate kept in ``meta["recorded_rate"]``; ``timestamps`` names a folder (below ``path``)
+    holding that column in a file per data file at the same relative path. ``recursive=None`` looks into sub-folders
     when ``pattern`` holds a ``/``. Files that could not be read are in ``result.failures``.
 
     The shipped real recordings (626 files, 8 grasp folders, participants P1 and P2)::
@@ -556,7 +557,8 @@ def read_glove(path, glove, rate=None, time=None, time_unit=None, pattern=None, 
                           pattern=r"^(?<grasp>[^/]+)/(?<subject>P\d)_(?<object>[a-z]+)_(?<trial>\d+)$")
     """
     args = dict(rate=None if rate is None else float(rate), time=time, time_unit=time_unit,
-                pattern=pattern, manifest=manifest)
+                timestamps=None if timestamps is None else os.fspath(timestamps), pattern=pattern,
+                manifest=manifest)
     if recursive is not None:
         args["recursive"] = bool(recursive)
     return _with_failures(call("read_glove", _path_arg(path), glove=_glove_arg(glove), **args, **kwargs))

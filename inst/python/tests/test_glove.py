@@ -128,3 +128,19 @@ def test_read_glove_files_named_one_by_one(tmp_path):
     g = hm.read_glove(files, glove=glove, rate=10)
     assert len(g) == 2 and g.meta["id"].is_unique
     assert list(g.meta["id"].map(os.path.basename)) == ["r1", "r1"]
+
+
+def test_read_glove_timestamps_folder(tmp_path):
+    # times in files of their own, as the project's copy of the flexglove source keeps them
+    glove = pd.DataFrame({"channel": ["a"], "unit": "raw", "min": 0, "max": 1023})
+    for label in ["cup", "pen"]:
+        (tmp_path / label).mkdir()
+        (tmp_path / label / "r1.csv").write_text("a\n0\n10\n20\n30\n")
+        (tmp_path / "timestamps" / label).mkdir(parents=True)
+    (tmp_path / "timestamps" / "cup" / "r1.csv").write_text("time_ms\n100\n110\n130\n140\n")
+    (tmp_path / "timestamps" / "pen" / "r1.csv").write_text("time_ms\n0\n20\n40\n60\n")
+    g = hm.read_glove(tmp_path, glove=glove, time="time_ms", timestamps="timestamps",
+                      pattern="^(?<grasp>[^/]+)/")
+    assert list(g.meta["id"]) == ["cup/r1", "pen/r1"] and len(g.failures) == 0
+    assert g.rate == pytest.approx(50)
+    np.testing.assert_allclose(g.recordings[0][:, 0], [0, 15, 30])
