@@ -26,7 +26,9 @@
 #'   `file_not_found`, `missing_file`, `not_in_manifest`, `bad_manifest`,
 #'   `no_files`, `file_exists`, `no_switch`, `no_segments`, `unreadable_file`
 #'   (a folder, a broken link or no read permission), `not_text` (a binary
-#'   file), `unwritable_file` (a path a writer cannot write), and
+#'   file), `unwritable_file` (a path a writer cannot write),
+#'   `missing_column` (a file without the named time column), `bad_time`
+#'   (time stamps that do not increase), and
 #'   `bad_skeleton`
 #'   raised while reading an `.xmlskel` file.
 #' * `handmotion_error_fit_failed`: data that cannot be fitted, or a fitted
@@ -101,6 +103,7 @@ error_families <- c(
   not_in_manifest = "bad_file", bad_manifest = "bad_file", no_files = "bad_file",
   file_exists = "bad_file", no_switch = "bad_file", no_segments = "bad_file",
   unreadable_file = "bad_file", not_text = "bad_file", unwritable_file = "bad_file",
+  missing_column = "bad_file", bad_time = "bad_file",
   fit_failed = "fit_failed", too_few_recordings = "fit_failed",
   reference_too_small = "fit_failed", model_failed = "fit_failed",
   alignment_failed = "fit_failed", engine_failed = "fit_failed", bad_model = "fit_failed",

@@ -41,6 +41,15 @@ glove_channel_cols <- c("channel", "joint", "axis", "sign", "scale", "frame", "u
 #'   two bend sensors per finger (thumb MCP and IP, finger MCP and PIP), four
 #'   abduction sensors between neighbouring fingers and a thumb cross-over
 #'   sensor, with nominal angle ranges for the counts.
+#' * `"flexglove"`: the six-flex-sensor glove of the shipped real recordings
+#'   (`system.file("extdata", "flexglove", package = "handmotion")`, see
+#'   [read_glove()]): channels `flex1`..`flex6`, raw 10-bit counts 0-1023
+#'   that fall as a finger bends (`sign` -1). Its source does not say which
+#'   channel is which finger; the profile assumes flex1-flex5 are the MCP
+#'   flexion of thumb, index, middle, ring and little finger and flex6 the
+#'   thumb-index adduction (for drawing only), with a nominal map from the
+#'   recordings' typical levels (straight at about 230 counts, 0.6 degrees
+#'   of flexion per count below it).
 #'
 #' Your own glove: give a data frame (or the path of a CSV file) with at
 #' least the column `channel`; every other column is optional (missing
@@ -371,12 +380,36 @@ resistive_glove_channels <- function() {
     stuck = FALSE, stringsAsFactors = FALSE)
 }
 
+# The six-flex-sensor glove of the flexglove recordings (inst/extdata/flexglove,
+# Oooorca/AML_LAB_Project): raw 10-bit counts 0-1023 that FALL as a finger
+# bends, hence sign -1. The source says "5 fingers + 1 for thumb-index
+# adduction" but not which channel is which; the profile assumes flex1-flex5
+# are the thumb, index, middle, ring and little MCP flexion and flex6 the
+# thumb-index adduction (used only to draw the hand; models use the counts).
+# Nominal map from the recordings' typical levels (median rest 130-225
+# counts, grasp 90-180): a finger at rest near 230 counts is straight and
+# each count of drop is 0.6 degrees of flexion (90 degrees at 80 counts); the
+# adduction sensor 0.2 degrees per count about a rest of 130.
+flexglove_channels <- function() {
+  per_count <- c(rep(0.6, 5), 0.2)
+  rest <- c(rep(230, 5), 130)
+  data.frame(
+    channel = paste0("flex", 1:6),
+    joint = c("th-mcp", "if-mcp", "mf-mcp", "rf-mcp", "lf-mcp", "th-mcp"),
+    axis = c(rep("x", 5), "z"), sign = -1, scale = 1, frame = "joint", unit = "raw",
+    min = 0, max = 1023,
+    # the channel's reading before the sign: per_count * (count - rest)
+    angle_min = per_count * (0 - rest), angle_max = per_count * (1023 - rest),
+    stuck = FALSE, stringsAsFactors = FALSE)
+}
+
 shipped_gloves <- list(
   hust = hust_glove_channels,
   graspdb14 = graspdb14_glove_channels,
   cyberglove18 = function() cyberglove_channels(cyberglove18_sensors),
   cyberglove22 = function() cyberglove_channels(cyberglove22_sensors),
-  resistive = resistive_glove_channels
+  resistive = resistive_glove_channels,
+  flexglove = flexglove_channels
 )
 
 # One recording of a set as forward kinematics wants it: angles in degrees

@@ -413,6 +413,8 @@ print.grasps <- function(x, ...) {
                 length(unique(stats::na.omit(m$object)))))
     cat("  DoFs: ", paste(utils::head(x$dofs, 16), collapse = " "),
         if (length(x$dofs) > 16) " ..." else "", "\n", sep = "")
+    note <- resampled_note(m, x$rate)
+    if (!is.null(note)) cat("  ", note, "\n", sep = "")
   }
   print_glove_line(x)
   invisible(x)
@@ -441,7 +443,8 @@ summary.grasps <- function(object, ...) {
   rownames(out) <- NULL
   structure(out, class = c("summary_grasps", "data.frame"),
             rate = object$rate, unit = object$unit, dofs = object$dofs,
-            glove = object$glove$name %||% NA_character_, stuck = stuck_channels(object))
+            glove = object$glove$name %||% NA_character_, stuck = stuck_channels(object),
+            resampled = resampled_note(m, object$rate))
 }
 
 #' @export
@@ -451,6 +454,7 @@ print.summary_grasps <- function(x, ...) {
   print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
   stuck <- attr(x, "stuck")
   if (length(stuck)) cat(sprintf("Stuck channels (constant, left out of models): %s\n", paste(stuck, collapse = " ")))
+  if (!is.null(attr(x, "resampled"))) cat("Recordings ", attr(x, "resampled"), "\n", sep = "")
   invisible(x)
 }
 

@@ -21,10 +21,35 @@ hust_manifest_name <- "manifest.csv"
 #'    `subject`, `object`, `trial`, `id`) matched against each file name
 #'    without its extension, e.g.
 #'    `"^s(?<subject>\\d+)_g(?<grasp>\\d+)_o(?<object>\\d+)_t(?<trial>\\d+)$"`.
+#'    A pattern that contains a `/` is matched against the file's path
+#'    below `path` instead (folders separated by `/`, no extension), so
+#'    labels can come from folders: `"^(?<grasp>[^/]+)/"` takes the label
+#'    from the first folder (a folder per label), and
+#'    `"^(?<grasp>[^/]+)/(?<subject>P\\d)_"` the subject from the file name
+#'    as well. Such a pattern looks into sub-folders (`recursive = NA`).
 #' 3. A `manifest.csv` in a directory given as `path` (what [write_hust()]
 #'    writes).
 #' 4. Otherwise ids are the file names and grasp, subject, object and trial
 #'    are unknown (`NA`).
+#'
+#' Recording ids are the file names without extension; when a name
+#' repeats (the same `P1_pen_1.csv` in two label folders) every id is the
+#' file's path below `path` instead (`"Ventral/P1_pen_1"`), so ids are
+#' always unique.
+#'
+#' **Time stamps.** Files whose frames are not evenly spaced (an Arduino
+#' glove writes a line about every 30 ms, unevenly) carry a time column:
+#' name it with `time` (its unit from `time_unit`, or from the name's
+#' suffix: `"time_ms"` is milliseconds, `"t_s"` seconds, `"t_us"`
+#' microseconds). Files with a header must have that column (anywhere);
+#' files without one have it first. Times must increase from frame to
+#' frame. Time stamps kept in files of their own (one per data file, at the
+#' same path below a folder) are read with `timestamps`. Every recording is
+#' then resampled onto a constant grid from its
+#' first time by linear interpolation, at `rate`, or by default at one over
+#' the median interval between frames over the whole set. The metadata
+#' column `recorded_rate` keeps each file's own rate (one over its median
+#' interval) and `print()` and `summary()` say the set was resampled.
 #'
 #' Files may have a header row or none (detected by default: a first row
 #' that is not all numbers is a header; header names matching the HUST DoF
@@ -36,30 +61,48 @@ hust_manifest_name <- "manifest.csv"
 #' @param path A directory, or one or more files.
 #' @param manifest `NULL`, a data frame or the path of a manifest CSV (see
 #'   Details).
-#' @param pattern `NULL` or a regular expression with named groups.
+#' @param pattern `NULL` or a regular expression with named groups, matched
+#'   against file names, or against paths below `path` when it holds a `/`
+#'   (see Details).
 #' @param header `NA` (detect), `TRUE` or `FALSE`.
 #' @param sep `NA` (detect per file) or the separator, e.g. `","` or `";"`.
 #' @param rate Sampling rate in Hz; `NULL` takes it from the manifest's
-#'   `rate` column, else 50 Hz (the HUST rate).
+#'   `rate` column, else, with `time`, one over the median interval between
+#'   frames, else 50 Hz (the HUST rate). With `time`, the rate the
+#'   recordings are resampled to.
 #' @param unit Angle unit; `NULL` takes it from the manifest's `unit`
 #'   column, else `"deg"`.
 #' @param file_pattern Regular expression selecting data files in a directory.
-#' @param recursive Look into sub-directories.
+#' @param recursive Look into sub-directories: `TRUE`, `FALSE`, or `NA`
+#'   (default) for "when `pattern` holds a `/`".
 #' @param truncated `"error"` or `"drop"` a truncated last line (fewer
 #'   fields than DoFs); see [read_graspdb14()].
 #' @param glove `NULL` for the 16 HUST DoFs, or the [glove_profile()] (or a
 #'   shipped profile's name) of the glove that wrote the files: its channels
 #'   are the columns (matched to a header by name, else in the profile's
 #'   order), and `unit` defaults to the profile's. See [read_glove()].
-#' @return A `grasps` object with the 16 HUST DoFs. Attribute `"failures"`
+#' @param time `NULL` (frames evenly spaced at `rate`), or the name of the
+#'   files' time column (see Details): the recordings are resampled to a
+#'   constant rate.
+#' @param time_unit Unit of the time column: `"ms"`, `"s"` or `"us"`;
+#'   `NULL` reads it from the column name's suffix (`"time_ms"`).
+#' @param timestamps `NULL` (the time column is in the data files), or a
+#'   folder (below `path`, or a path) holding the `time` column of each data
+#'   file in a file at the same relative path, e.g. `"timestamps"` for
+#'   `timestamps/Ventral/P1_pen_1.csv` beside `Ventral/P1_pen_1.csv`; its
+#'   files are not read as recordings.
+#' @return A `grasps` object with the 16 HUST DoFs (or the glove's
+#'   channels). Attribute `"failures"`
 #'   lists every file that could not be read (see [read_failures()]): bad
 #'   content (classed errors as in [read_graspdb14()]), a file name the
 #'   `pattern` does not match (`handmotion_error_unknown_file_name`), a
 #'   manifest row whose file is missing (`handmotion_error_file_not_found`)
 #'   or whose grasp is unknown (`handmotion_error_unknown_grasp`), and files
 #'   of the directory the manifest does not list
-#'   (`handmotion_error_not_in_manifest`). Reading a single file raises these
-#'   errors instead.
+#'   (`handmotion_error_not_in_manifest`), a file without the `time`
+#'   column (`handmotion_error_missing_column`) or whose times do not
+#'   increase (`handmotion_error_bad_time`). Reading a single file raises
+#'   these errors instead.
 #' @seealso [write_hust()], [simulate_grasps()]
 #' @export
 #' @examples
@@ -69,10 +112,19 @@ hust_manifest_name <- "manifest.csv"
 #' g$meta
 read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = NA,
                       rate = NULL, unit = NULL, file_pattern = "\\.(csv|txt)$",
-                      recursive = FALSE, truncated = c("error", "drop"), glove = NULL) {
+                      recursive = NA, truncated = c("error", "drop"), glove = NULL,
+                      time = NULL, time_unit = NULL, timestamps = NULL) {
   call <- rlang::caller_env()
   truncated <- check_choice(truncated, arg = "truncated", call = call)
   pattern <- check_regex(pattern, "pattern", perl = TRUE, allow_null = TRUE, call = call)
+  time <- check_time_arg(time, time_unit, call = call)
+  if (!is.logical(recursive) || length(recursive) != 1L) {
+    hm_abort("{.arg recursive} must be {.code TRUE}, {.code FALSE} or {.code NA}, not {describe_value(recursive)}.",
+             "bad_input", argument = "recursive", call = call)
+  }
+  # a pattern about folders means the files are in folders
+  if (is.na(recursive)) recursive <- is_path_pattern(pattern)
+  if (!is.null(rate)) check_rate(rate, call = call)
   file_pattern <- check_regex(file_pattern, "file_pattern", allow_null = TRUE, call = call)
   sep <- check_sep(sep, call = call)
   if (!is.null(manifest) && !is.null(pattern)) {
@@ -81,6 +133,8 @@ read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = 
   }
   input <- list_input_files(path, file_pattern, recursive, call = call)
   base_dir <- if (length(path) == 1L && dir.exists(path)) path else dirname(path[1])
+  ts_dir <- timestamps_dir(timestamps, time, base_dir, call = call)
+  if (!is.null(ts_dir)) input$files <- input$files[!under_dir(input$files, ts_dir)]
   if (is.null(manifest) && is.null(pattern) && length(path) == 1L && dir.exists(path) &&
       file.exists(file.path(path, hust_manifest_name))) {
     manifest <- file.path(path, hust_manifest_name)
@@ -89,11 +143,20 @@ read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = 
                          from_dir = any(dir.exists(path)), call = call)
   if (!is.null(glove)) glove <- glove_profile(glove)
   dofs <- if (is.null(glove)) handmotion::hust_dofs$name else glove$channels$channel
+  columns <- c(time$column, dofs)
   reader <- function(k) {
     pre <- plan$errors[[k]]
     if (!is.null(pre)) stop(pre)
-    parse_hust_content(plan$files[k], dofs = dofs, header = header, sep = sep,
-                       truncated = truncated, call = call)
+    if (is.null(ts_dir)) {
+      rec <- parse_hust_content(plan$files[k], dofs = columns, header = header, sep = sep,
+                                truncated = truncated, time = time$column, call = call)
+    } else {
+      rec <- parse_hust_content(plan$files[k], dofs = dofs, header = header, sep = sep,
+                                truncated = truncated, call = call)
+      rec <- add_time_file(rec, plan$files[k], base_dir, ts_dir, time, header, sep, truncated, call = call)
+    }
+    if (!is.null(time)) rec <- split_time_column(rec, time, rec$time_file %||% plan$files[k], call = call)
+    rec
   }
   if (!input$many) {
     rec <- reader(1L)
@@ -116,12 +179,20 @@ read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = 
   meta <- plan$meta[keep, , drop = FALSE]
   # only a "drop" read can drop lines; record which files lost one
   if (truncated == "drop") meta$dropped_last_line <- vapply(recs, `[[`, logical(1), "dropped")
-  if (is.null(rate)) rate <- manifest_single(meta, "rate", 50, call = call)
+  if (is.null(rate)) rate <- manifest_single(meta, "rate", if (is.null(time)) 50, call = call)
   if (is.null(unit)) unit <- manifest_single(meta, "unit", NA, call = call)
   if (is.na(unit)) unit <- NULL   # the glove's unit, else degrees
   meta$rate <- NULL
   meta$unit <- NULL
-  out <- grasps(lapply(recs, `[[`, "values"), meta = meta, dofs = dofs, rate = as.numeric(rate),
+  values <- lapply(recs, `[[`, "values")
+  if (!is.null(time)) {
+    # uneven frames onto one constant grid, recorded in the metadata
+    res <- resample_read(recs, rate)
+    values <- res$values
+    rate <- res$rate
+    meta$recorded_rate <- res$recorded_rate
+  }
+  out <- grasps(values, meta = meta, dofs = dofs, rate = as.numeric(rate),
                 unit = unit, glove = glove)
   attr(out, "failures") <- failures
   out
@@ -175,7 +246,7 @@ hust_read_plan <- function(files, manifest, pattern, base_dir, from_dir, call = 
     }
     meta <- man
     meta$file <- NULL
-    if (!"id" %in% names(meta)) meta$id <- file_stem(listed)
+    if (!"id" %in% names(meta)) meta$id <- unique_ids(file_stem(listed), file_stem_path(man$file), listed)
     meta$source <- listed
     errors <- lapply(seq_along(listed), function(k) {
       if (!file.exists(listed[k])) {
@@ -187,11 +258,14 @@ hust_read_plan <- function(files, manifest, pattern, base_dir, from_dir, call = 
     return(list(files = listed, meta = meta, errors = errors, unlisted = unlisted))
   }
   files <- files[basename(files) != hust_manifest_name]
-  stems <- file_stem(files)
-  meta <- data.frame(id = stems, source = files, stringsAsFactors = FALSE)
+  rel <- relative_stems(files, base_dir)
+  meta <- data.frame(id = unique_ids(file_stem(files), rel, files), source = files, stringsAsFactors = FALSE)
   errors <- vector("list", length(files))
   if (!is.null(pattern)) {
-    groups <- lapply(stems, function(s) regex_groups(s, pattern))
+    # a pattern with a "/" is about the folders too: matched against the
+    # path below `path`, without extension
+    target <- if (is_path_pattern(pattern)) rel else file_stem(files)
+    groups <- lapply(target, function(s) regex_groups(s, pattern))
     known <- c("grasp", "subject", "object", "trial", "id")
     names_found <- unique(unlist(lapply(groups, names)))
     if (length(groups) && !length(intersect(names_found, known)) && all(!vapply(groups, is.null, logical(1)))) {
@@ -204,12 +278,40 @@ hust_read_plan <- function(files, manifest, pattern, base_dir, from_dir, call = 
                             character(1))
     }
     for (k in which(vapply(groups, is.null, logical(1)))) {
-      errors[[k]] <- hm_condition("File name {.file {basename(files[k])}} does not match {.arg pattern}.",
+      errors[[k]] <- hm_condition("File name {.file {target[k]}} does not match {.arg pattern} ({.code {pattern}}).",
                                   c("unknown_file_name", "bad_file"), file = files[k], line = NA_integer_)
     }
     if ("trial" %in% names(meta)) meta$trial <- suppressWarnings(as.integer(meta$trial))
   }
   list(files = files, meta = meta, errors = errors, unlisted = unlisted)
+}
+
+# Whether a file-name pattern is about folders too (it holds a "/").
+is_path_pattern <- function(pattern) !is.null(pattern) && grepl("/", pattern, fixed = TRUE)
+
+# A path without its extension (a file_stem() that keeps the folders).
+file_stem_path <- function(path) sub("\\.[[:alnum:]]+$", "", trimws(path))
+
+# Each file's path below `base_dir`, "/"-separated ("Ventral/P1_pen_1.csv");
+# a file outside `base_dir` keeps only its name.
+relative_paths <- function(files, base_dir) {
+  f <- normalizePath(files, winslash = "/", mustWork = FALSE)
+  b <- sub("/+$", "", normalizePath(base_dir, winslash = "/", mustWork = FALSE))
+  inside <- startsWith(f, paste0(b, "/"))
+  ifelse(inside, substring(f, nchar(b) + 2L), basename(f))
+}
+
+# The same without extension ("Ventral/P1_pen_1").
+relative_stems <- function(files, base_dir) file_stem_path(relative_paths(files, base_dir))
+
+# Recording ids: the file names, or, when a name repeats (the same
+# "P1_pen_1.csv" in two label folders), every file's relative path, or when
+# even those repeat (files named one by one from different folders), the
+# full paths.
+unique_ids <- function(stems, rel, full) {
+  if (!anyDuplicated(stems)) return(stems)
+  if (!anyDuplicated(rel)) return(rel)
+  file_stem_path(normalizePath(full, winslash = "/", mustWork = FALSE))
 }
 
 # A classed condition object built like hm_abort() would, without raising it.
@@ -260,7 +362,7 @@ read_hust_manifest <- function(manifest, call = rlang::caller_env()) {
 
 # Parse one HUST file into a frames x DoF matrix (columns in `dofs` order).
 parse_hust_content <- function(file, dofs, header = NA, sep = NA, truncated = "error",
-                               call = rlang::caller_env()) {
+                               time = NULL, call = rlang::caller_env()) {
   text <- read_text_lines(file, call = call)$text
   keep <- nzchar(text) & !startsWith(text, "#")
   if (!any(keep)) {
@@ -271,13 +373,19 @@ parse_hust_content <- function(file, dofs, header = NA, sep = NA, truncated = "e
   text <- text[keep]
   if (is.na(sep)) sep <- detect_separator(text[min(2L, length(text))])
   tokens <- if (sep == " ") strsplit(text, "[ \t]+", perl = TRUE) else strsplit(text, sep, fixed = TRUE)
-  tokens <- lapply(tokens, function(t) {
-    t <- gsub("^[\"' ]+|[\"' ]+$", "", trimws(t))
-    # a trailing separator leaves one empty last field
-    if (length(t) && t[length(t)] == "") t <- t[-length(t)]
-    t
-  })
-  if (sep == ";") tokens <- lapply(tokens, function(t) sub("^([-+]?[0-9]*),([0-9]+([eE][-+]?[0-9]+)?)$", "\\1.\\2", t))
+  # cleaned in one pass over all fields (per line, this was most of the
+  # time of reading a folder of small files)
+  n <- lengths(tokens)
+  u <- gsub("^[\"' ]+|[\"' ]+$", "", trimws(unlist(tokens, use.names = FALSE)))
+  # a trailing separator leaves one empty last field
+  ends <- cumsum(n)
+  empty_last <- n > 0L & u[pmax(ends, 1L)] == ""
+  if (any(empty_last)) {
+    u <- u[-ends[empty_last]]
+    n[empty_last] <- n[empty_last] - 1L
+  }
+  if (sep == ";") u <- sub("^([-+]?[0-9]*),([0-9]+([eE][-+]?[0-9]+)?)$", "\\1.\\2", u)
+  tokens <- unname(split(u, factor(rep.int(seq_along(n), n), levels = seq_along(n))))
   first <- tokens[[1]]
   has_header <- if (is.na(header)) any(is.na(suppressWarnings(as.numeric(first)))) else isTRUE(header)
   order <- seq_along(dofs)
@@ -291,8 +399,21 @@ parse_hust_content <- function(file, dofs, header = NA, sep = NA, truncated = "e
                      file = file, line = hdr_line, call = call)
     }
     m <- match(toupper(hdr), toupper(dofs))
+    # a named time column must be in the header: taking another column as
+    # the time would resample the recording on its values
+    if (!is.null(time) && !toupper(time) %in% toupper(hdr)) {
+      abort_bad_file(c("{.file {file}}, line {hdr_line}: no time column {.val {time}} in the header.",
+                       i = "Its columns: {.val {hdr}}."),
+                     "missing_column", file = file, line = hdr_line, call = call)
+    }
     if (length(hdr) == length(dofs) && !anyNA(m) && !anyDuplicated(m)) {
       order <- match(seq_along(dofs), m)
+    } else if (length(hdr) == length(dofs) && !is.null(time)) {
+      # the time column where the header says, the channels in file order
+      tp <- match(toupper(time), toupper(hdr))
+      order <- c(tp, setdiff(seq_along(hdr), tp))
+      hm_warn("Header of {.file {file}} does not name the glove's channels; they are taken in file order.",
+              "unknown_header", file = file, line = hdr_line)
     } else if (length(hdr) == length(dofs)) {
       hm_warn("Header of {.file {file}} does not name the HUST DoFs; columns taken in the standard order.",
               "unknown_header", file = file, line = hdr_line)
@@ -310,7 +431,7 @@ parse_hust_content <- function(file, dofs, header = NA, sep = NA, truncated = "e
                             length(dofs), file, call = call)
   values <- matrix(v, ncol = length(dofs), byrow = TRUE)[, order, drop = FALSE]
   colnames(values) <- dofs
-  list(values = values, dropped = checked$dropped)
+  list(values = values, dropped = checked$dropped, line_no = checked$line_no)
 }
 
 # The separator of a data line: semicolon, comma, tab, else blanks.
@@ -324,21 +445,45 @@ detect_separator <- function(line) {
 #' Read recordings of any data glove
 #'
 #' Reads delimited text files of a data glove's channels, one file per
-#' recording and one row per frame, with labels from the file names
-#' (`pattern`) or a manifest: [read_hust()] with the columns and units of
-#' the `glove` profile. Every file that cannot be read is reported (attribute
-#' `"failures"`, see [read_failures()]), never dropped silently.
+#' recording and one row per frame, with labels from the file names or
+#' folders (`pattern`) or a manifest: [read_hust()] with the columns and
+#' units of the `glove` profile. Every file that cannot be read is reported
+#' (attribute `"failures"`, see [read_failures()]), never dropped silently.
+#'
+#' Files as labs keep them: a folder per label (`pattern` with a `/` is
+#' matched against the path below `path`, e.g. `"^(?<grasp>[^/]+)/"` for
+#' "the label is the first folder"; sub-folders are then read), the same
+#' file name in several folders (ids become the relative paths), and time
+#' stamps in a column (`time`) when frames are unevenly spaced: every
+#' recording is resampled to one constant rate by linear interpolation
+#' (`rate`, by default one over the median interval between frames), each
+#' file's own rate kept in `meta$recorded_rate` and the resampling shown by
+#' `print()` and `summary()`. Details in [read_hust()].
+#'
+#' The package ships 626 real recordings of a six-flex-sensor glove in this
+#' layout (`system.file("extdata", "flexglove", package = "handmotion")`:
+#' folders per grasp type, files `<P1|P2>_<object>_<trial>.csv` with columns
+#' `time_ms,flex1,...,flex6`; source Oooorca/AML_LAB_Project, MIT licence;
+#' see the README.md there): the first example reads them all.
 #'
 #' @param path A directory, or one or more files.
 #' @param glove The [glove_profile()] of the glove (or a shipped profile's
 #'   name).
-#' @param rate Sampling rate in Hz.
+#' @param rate Sampling rate in Hz. `NULL` (default): with `time`, one over
+#'   the median interval between frames; else the manifest's, else 50.
 #' @param ... Further arguments of [read_hust()]: `manifest`, `pattern`,
-#'   `header`, `sep`, `unit`, `file_pattern`, `recursive`, `truncated`.
+#'   `time`, `time_unit`, `timestamps`, `header`, `sep`, `unit`, `file_pattern`,
+#'   `recursive`, `truncated`.
 #' @return A [grasps()] object carrying `glove`.
 #' @seealso [glove_profile()], [calibrate()], [trim_motion()]
 #' @export
 #' @examples
+#' # the shipped real recordings: 626 files, 8 grasp folders, 2 participants
+#' g <- read_glove(system.file("extdata", "flexglove", package = "handmotion"), glove = "flexglove", time = "time_ms", pattern = "^(?<grasp>[^/]+)/(?<subject>P\\d)_(?<object>[a-z]+)_(?<trial>\\d+)$")
+#' g
+#' table(g$meta$grasp, g$meta$subject)
+#'
+#' # your own files: labels from the file names
 #' raw <- simulate_grasps(subjects = 1, grasps = c(bottle = 3, pen = 20), objects = 1,
 #'                        trials = 2, glove = "resistive", rest = 1, hold = 1, seed = 1)
 #' dir <- tempfile("glove")
@@ -350,7 +495,7 @@ detect_separator <- function(line) {
 #' g <- read_glove(dir, glove = "resistive", rate = 50,
 #'                 pattern = "^(?<grasp>[a-z]+)_(?<trial>\\d+)$")
 #' g
-read_glove <- function(path, glove, rate = 50, ...) {
+read_glove <- function(path, glove, rate = NULL, ...) {
   call <- rlang::caller_env()
   if (missing(glove)) {
     hm_abort("{.arg glove} is needed: the profile that says what each column measures.",

@@ -2,7 +2,7 @@
 # limits and calibration all read.
 
 test_that("every shipped profile validates and says which channels are drawn", {
-  for (nm in c("hust", "graspdb14", "cyberglove18", "cyberglove22", "resistive")) {
+  for (nm in c("hust", "graspdb14", "cyberglove18", "cyberglove22", "resistive", "flexglove")) {
     p <- glove_profile(nm)
     expect_s3_class(p, "glove_profile")
     expect_false(anyDuplicated(p$channels$channel) > 0)

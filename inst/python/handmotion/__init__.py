@@ -36,15 +36,17 @@ and argument names (a test compares this list with R's NAMESPACE):
 Deliberately not mirrored: ``autoplot`` (ggplot2 graphics belong to R; every result
 is a DataFrame or numpy array to plot in Python), ``hand_3d_output`` and
 ``render_hand_3d`` (Shiny bindings, R-only) and ``joint_map`` (R's mapping of DoFs to
-skeleton joints, used inside forward_kinematics()). One Python-only helper:
-``joint_names`` (the joint order of ``forward_kinematics`` arrays).
+skeleton joints, used inside forward_kinematics()). Python-only helpers:
+``joint_names`` (the joint order of ``forward_kinematics`` arrays) and ``extdata`` (the path
+of a file or folder the R package ships, R's ``system.file("extdata", ...)``, e.g. the real
+flexglove recordings for ``read_glove``).
 
 Names R removed before its first release (``?handmotion-renamed``) are not kept as
 aliases: asking for one raises an ``AttributeError`` that names the replacement.
 """
 
 from .api import (calibrate, calibration_pose_angles, classify, cut_motion, evaluate_early_recognition,
-                  evaluate_generation, evaluate_loso, find_motion, fit_grasp_classifier, fit_grasp_model,
+                  evaluate_generation, evaluate_loso, extdata, find_motion, fit_grasp_classifier, fit_grasp_model,
                   fit_grasp_models, fit_grasp_recognizer, fit_handover, forward_kinematics, generate, glove_profile,
                   grasp_confusion, graspdb14_to_hust, hand_skeleton, handover_error, joint_names, read_bvh,
                   read_failures, read_glove, read_graspdb14, read_hust, read_skeleton, reproduce_thesis,
@@ -94,7 +96,7 @@ __all__ = [
     "glove_profile", "read_glove", "calibrate", "calibration_pose_angles", "find_motion", "trim_motion",
     "cut_motion",
     "read_hust", "write_hust", "read_graspdb14", "write_graspdb14", "read_failures", "graspdb14_to_hust",
-    "read_skeleton", "write_skeleton", "read_bvh", "write_bvh",
+    "read_skeleton", "write_skeleton", "read_bvh", "write_bvh", "extdata",
     "hand_skeleton", "forward_kinematics", "joint_names",
     "fit_grasp_model", "fit_grasp_models", "project",
     "generate", "evaluate_generation",

@@ -85,9 +85,35 @@ def read_hust(path, manifest=None, pattern=None, **kwargs):
     """Read HUST-layout CSV files (one per grasp, 16 DoF columns) into a :class:`Grasps`.
 
     ``manifest`` is a pandas DataFrame or CSV path mapping files to grasp, subject,
-    object and trial; ``pattern`` a regular expression with named groups.
+    object and trial; ``pattern`` a regular expression with named groups (matched against
+    the relative path when it holds a ``/``). ``time``, ``time_unit``, ``recursive`` and the
+    other arguments are R's (see :func:`read_glove`). Files that could not be read are in
+    ``result.failures``.
     """
-    return r_to_py(call("read_hust", path, manifest=manifest, pattern=pattern, **kwargs))
+    return _with_failures(call("read_hust", _path_arg(path), manifest=manifest, pattern=pattern, **kwargs))
+
+
+def _path_arg(path):
+    """A path (str or os.PathLike) or a list of them, as R's character vector wants them."""
+    if isinstance(path, (list, tuple)):
+        return [os.fspath(p) for p in path]
+    return os.fspath(path)
+
+
+def _with_failures(res):
+    """The Grasps of a reader's R result, its ``"failures"`` attribute as ``.failures``."""
+    out = r_to_py(res)
+    out.failures = r_to_py(r().r["attr"](res, "failures"))
+    return out
+
+
+def extdata(*parts):
+    """The path of a file or folder shipped in the R package's ``inst/extdata`` (R's
+    ``system.file("extdata", ..., package = "handmotion")``), e.g. ``extdata("flexglove")``."""
+    path = str(r().r["system.file"]("extdata", *parts, package="handmotion")[0])
+    if not path:
+        raise BadInputError(f"handmotion ships no extdata {'/'.join(parts)!r}")
+    return path
 
 
 def read_graspdb14(path, **kwargs):
@@ -96,11 +122,7 @@ def read_graspdb14(path, **kwargs):
     Files that fail to parse are listed in ``result.failures`` (a DataFrame of file,
     line, class and message) rather than dropped silently.
     """
-    res = call("read_graspdb14", path, **kwargs)
-    out = r_to_py(res)
-    failures = r().r["attr"](res, "failures")
-    out.failures = r_to_py(failures)
-    return out
+    return _with_failures(call("read_graspdb14", path, **kwargs))
 
 
 def write_hust(x, dir, **kwargs):
@@ -512,10 +534,34 @@ def _glove_arg(glove):
     return glove
 
 
-def read_glove(path, glove, rate=50, **kwargs):
-    """Read any glove's delimited files (one per recording) with the channels of ``glove``
-    (a profile name or DataFrame); labels from ``pattern`` or ``manifest`` (R's ``read_glove()``)."""
-    return r_to_py(call("read_glove", path, glove=_glove_arg(glove), rate=float(rate), **kwargs))
+def read_glove(path, glove, rate=None, time=None, time_unit=None, timestamps=None, pattern=None,
+               manifest=None, recursive=None, **kwargs):
+    r"""Read any glove's delimited files (one per recording) with the channels of ``glove``
+    (a profile name or DataFrame), as R's ``read_glove()``.
+
+    Labels come from ``pattern`` (a regular expression with named groups ``grasp``,
+    ``subject``, ``object``, ``trial``, ``id``; one that holds a ``/`` is matched against
+    the path below ``path``, so ``"^(?<grasp>[^/]+)/"`` takes the label from the folder and
+    sub-folders are read) or a ``manifest``. Ids are the file names, or the relative paths
+    when a name repeats across folders. ``time`` names a time column (unit from
+    ``time_unit``, or the name's suffix: ``"time_ms"``); the unevenly spaced frames are then
+    resampled to one constant ``rate`` (default: one over the median interval), each file's
+    own rate kept in ``meta["recorded_rate"]``; ``timestamps`` names a folder (below ``path``)
+    holding that column in a file per data file at the same relative path. ``recursive=None`` looks into sub-folders
+    when ``pattern`` holds a ``/``. Files that could not be read are in ``result.failures``.
+
+    The shipped real recordings (626 files, 8 grasp folders, participants P1 and P2)::
+
+        import handmotion as hm
+        g = hm.read_glove(hm.extdata("flexglove"), glove="flexglove", time="time_ms",
+                          pattern=r"^(?<grasp>[^/]+)/(?<subject>P\d)_(?<object>[a-z]+)_(?<trial>\d+)$")
+    """
+    args = dict(rate=None if rate is None else float(rate), time=time, time_unit=time_unit,
+                timestamps=None if timestamps is None else os.fspath(timestamps), pattern=pattern,
+                manifest=manifest)
+    if recursive is not None:
+        args["recursive"] = bool(recursive)
+    return _with_failures(call("read_glove", _path_arg(path), glove=_glove_arg(glove), **args, **kwargs))
 
 
 def calibrate(x, poses=None, angles=None, ranges=None):

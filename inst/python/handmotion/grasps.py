@@ -158,8 +158,11 @@ class Grasps:
     def __repr__(self):
         nf = self.meta["n_frames"]
         span = f", frames {nf.min()}-{nf.max()}" if len(self) else ""
+        # read from uneven time stamps (R's print() says the same)
+        rec = self.meta["recorded_rate"] if "recorded_rate" in self.meta else None
+        note = ", resampled from time stamps" if rec is not None and rec.notna().any() else ""
         return (f"<Grasps: {len(self)} recordings of {len(self.dofs)} DoFs at {self.rate:g} Hz "
-                f"in {self.unit}{span}>")
+                f"in {self.unit}{span}{note}>")
 
     def as_array(self, pad=np.nan):
         """All recordings as one numpy array n x frames x DoF.

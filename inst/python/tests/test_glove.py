@@ -1,5 +1,7 @@
 """Any glove, any labels: the same path as R's, from Python."""
 
+import os
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -59,3 +61,86 @@ def test_read_glove_files(tmp_path, raw):
                           pattern="^(?<grasp>[a-z]+)_(?<trial>\\d+)$")
     assert len(g) == 6
     assert g.glove_name == "resistive"
+
+
+FLEXGLOVE_PATTERN = r"^(?<grasp>[^/]+)/(?<subject>P\d)_(?<object>[a-z]+)_(?<trial>\d+)$"
+
+
+def test_read_the_shipped_flexglove_folder():
+    # the real recordings as the lab kept them: a folder per grasp, names repeating across
+    # folders, uneven Arduino time stamps; no manifest
+    path = hm.extdata("flexglove")
+    g = hm.read_glove(path, glove="flexglove", time="time_ms", pattern=FLEXGLOVE_PATTERN)
+    assert len(g) == 626
+    assert len(g.failures) == 0 and len(hm.read_failures(g)) == 0
+    assert g.meta["id"].is_unique
+    assert sorted(set(g.meta["subject"])) == ["P1", "P2"]
+    assert g.meta["subject"].value_counts().to_dict() == {"P1": 362, "P2": 264}
+    folders = sorted(next(os.walk(path))[1])
+    assert len(folders) == 8
+    assert {s.lower() for s in set(g.meta["grasp"])} == {f.replace("_", " ").lower() for f in folders}
+    assert g.rate == pytest.approx(1000 / 30)
+    assert g.glove_name == "flexglove" and g.unit == "raw"
+    assert g.meta["recorded_rate"].between(30, 40).all()
+    assert "resampled" in repr(g)
+
+
+def test_read_glove_time_column_and_folder_labels(tmp_path):
+    # a planted straight line at uneven times comes back exactly on the constant grid
+    rng = np.random.default_rng(5)
+    times = {}
+    for label, name in [("cup", "r1"), ("pen", "r1"), ("pen", "r2")]:
+        t = 100 + np.concatenate([[0], np.cumsum(rng.uniform(15, 25, 40))])
+        times[f"{label}/{name}"] = t
+        (tmp_path / label).mkdir(exist_ok=True)
+        pd.DataFrame({"t_ms": t, "a": 2 * t, "b": 5.0, "c": 1000 - t}).to_csv(
+            tmp_path / label / f"{name}.csv", index=False)
+    glove = pd.DataFrame({"channel": ["a", "b", "c"], "unit": "raw", "min": 0, "max": 5000})
+    g = hm.read_glove(tmp_path, glove=glove, rate=50, time="t_ms", pattern="^(?<grasp>[^/]+)/")
+    assert list(g.meta["id"]) == ["cup/r1", "pen/r1", "pen/r2"]
+    assert list(g.meta["grasp"]) == ["cup", "pen", "pen"]
+    assert g.rate == 50
+    for rid, rec in zip(g.meta["id"], g.recordings):
+        t = times[rid]
+        grid = t[0] + 20 * np.arange(rec.shape[0])
+        assert grid[-1] <= t[-1] < grid[-1] + 20
+        np.testing.assert_allclose(rec[:, 0], 2 * grid, atol=1e-9)
+        np.testing.assert_allclose(rec[:, 2], 1000 - grid, atol=1e-9)
+    # bad time stamps: a classed error naming the file and line
+    bad = tmp_path / "pen" / "r2.csv"
+    bad.write_text("t_ms,a,b,c\n0,1,2,3\n20,1,2,3\n20,1,2,3\n")
+    with pytest.raises(hm.BadFileError, match="r2.csv"):
+        hm.read_glove(bad, glove=glove, time="t_ms")
+    with pytest.warns(hm.HandmotionWarning, match="could not be read"):
+        g = hm.read_glove(tmp_path, glove=glove, time="t_ms", pattern="^(?<grasp>[^/]+)/")
+    assert list(g.failures["class"]) == ["handmotion_error_bad_time"]
+    assert list(g.failures["line"]) == [4]
+    with pytest.raises(hm.BadInputError, match="unit"):
+        hm.read_glove(tmp_path, glove=glove, time="t", recursive=True)
+
+
+def test_read_glove_files_named_one_by_one(tmp_path):
+    glove = pd.DataFrame({"channel": ["a", "b"], "unit": "raw", "min": 0, "max": 1023})
+    for label in ["cup", "pen"]:
+        (tmp_path / label).mkdir()
+        (tmp_path / label / "r1.csv").write_text("a,b\n1,2\n3,4\n")
+    files = [tmp_path / "cup" / "r1.csv", tmp_path / "pen" / "r1.csv"]
+    g = hm.read_glove(files, glove=glove, rate=10)
+    assert len(g) == 2 and g.meta["id"].is_unique
+    assert list(g.meta["id"].map(os.path.basename)) == ["r1", "r1"]
+
+
+def test_read_glove_timestamps_folder(tmp_path):
+    # times in files of their own, as the project's copy of the flexglove source keeps them
+    glove = pd.DataFrame({"channel": ["a"], "unit": "raw", "min": 0, "max": 1023})
+    for label in ["cup", "pen"]:
+        (tmp_path / label).mkdir()
+        (tmp_path / label / "r1.csv").write_text("a\n0\n10\n20\n30\n")
+        (tmp_path / "timestamps" / label).mkdir(parents=True)
+    (tmp_path / "timestamps" / "cup" / "r1.csv").write_text("time_ms\n100\n110\n130\n140\n")
+    (tmp_path / "timestamps" / "pen" / "r1.csv").write_text("time_ms\n0\n20\n40\n60\n")
+    g = hm.read_glove(tmp_path, glove=glove, time="time_ms", timestamps="timestamps",
+                      pattern="^(?<grasp>[^/]+)/")
+    assert list(g.meta["id"]) == ["cup/r1", "pen/r1"] and len(g.failures) == 0
+    assert g.rate == pytest.approx(50)
+    np.testing.assert_allclose(g.recordings[0][:, 0], [0, 15, 30])

@@ -13,7 +13,7 @@ PKG = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), 
 def _not_mirrored(hm):
     """The R exports the package docstring says are deliberately not mirrored."""
     doc = hm.__doc__
-    para = doc[doc.index("Deliberately not mirrored"):doc.index("One Python-only helper")]
+    para = doc[doc.index("Deliberately not mirrored"):doc.index("Python-only helpers")]
     return set(re.findall(r"``([a-z_0-9]+)``", para))
 
 
