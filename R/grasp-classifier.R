@@ -137,14 +137,15 @@ classifier_fitter <- function(method) {
 
 # method = "discriminant"
 fit_discriminant <- function(x, at = seq(0, 1, by = 0.125), prior = c("equal", "data"),
-                             call = rlang::caller_env()) {
+                             subclasses = "auto", call = rlang::caller_env()) {
   check_grasps(x, call = call)
   at <- check_fractions(at, "at", call = call)
   prior <- check_choice(prior, c("equal", "data"), arg = "prior", call = call)
+  if (!identical(subclasses, "auto")) subclasses <- check_whole(subclasses, "subclasses", call = call)
   y <- check_training_labels(x, call = call)
   F <- classifier_features(x, at)
-  new_grasp_classifier(fit_shrunk_lda(F, y, prior), at = at, dofs = x$dofs, rate = x$rate,
-                       prior = prior, levels = grasp_levels(x))
+  fit <- fit_subclass_lda(F, y, prior, subclasses, subjects = x$meta$subject)
+  new_grasp_classifier(fit, at = at, dofs = x$dofs, rate = x$rate, prior = prior, levels = grasp_levels(x))
 }
 
 classifier_features <- function(x, at) cbind(motion_features(x, at), travel_features(x))
@@ -157,8 +158,9 @@ grasp_levels <- function(x) {
 }
 
 new_grasp_classifier <- function(fit, at, dofs, rate, prior, levels) {
-  structure(list(classes = fit$classes, levels = levels, at = at, dofs = dofs, rate = rate, prior = prior,
-                 fit = fit, n = stats::setNames(fit$n, fit$classes), temperature = 1),
+  n <- tapply(fit$n, factor(fit$type_of, levels = fit$types), sum)
+  structure(list(classes = fit$types, levels = levels, at = at, dofs = dofs, rate = rate, prior = prior,
+                 fit = fit, n = stats::setNames(as.integer(n), fit$types), temperature = 1),
             class = "grasp_classifier")
 }
 
@@ -210,7 +212,7 @@ check_training_labels <- function(x, call = rlang::caller_env()) {
 # that x is what the classifier was trained on.
 classifier_log_posterior <- function(object, x, call = rlang::caller_env()) {
   check_trained_dofs(x, object$dofs, "classifier", call = call)
-  s <- shrunk_lda_scores(object$fit, classifier_features(x, object$at))
+  s <- subclass_lda_scores(object$fit, classifier_features(x, object$at))
   rownames(s) <- x$meta$id
   s
 }
@@ -222,6 +224,10 @@ print.grasp_classifier <- function(x, ...) {
   cat(sprintf("  features: %d DoFs at %d fractions of the motion (%s) + log duration + travel per DoF\n",
               length(x$dofs), length(x$at), paste(signif(x$at, 3), collapse = ", ")))
   cat(sprintf("  correlation shrinkage %.3f; %s priors\n", x$fit$shrinkage, x$prior))
+  used <- x$fit$subclasses_used
+  cat(sprintf("  subclasses per type: up to %d%s; used %d to %d (%d in all)\n", x$fit$subclasses,
+              if (is.null(x$fit$choice)) " (given)" else " (chosen by inner cross-validation on the training recordings)",
+              min(used), max(used), sum(used)))
   invisible(x)
 }
 
@@ -247,5 +253,6 @@ print.grasp_classifier <- function(x, ...) {
 #' summary(fit_grasp_recognizer(g))
 summary.grasp_classifier <- function(object, ...) {
   data.frame(class = object$classes, n = as.integer(object$n[object$classes]),
-             log_prior = object$fit$log_prior, stringsAsFactors = FALSE)
+             log_prior = unname(object$fit$type_prior[object$classes]),
+             subclasses = unname(object$fit$subclasses_used[object$classes]), stringsAsFactors = FALSE)
 }
