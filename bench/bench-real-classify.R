@@ -84,6 +84,14 @@ cat(sprintf("  (targets: evaluate_loso 10 s or less each; early recognition %.1f
 cat("  published, two-fold by participant with synthetic copies in: CNN-BiLSTM 69.5%, SVM on end postures 80.0%\n")
 cat(sprintf("  the recogniser after 300 ms: %s\n\n", fmt(e$accuracy[e$scale == "ms" & e$value == 300])))
 
+# Why the FPCA distance is low: how many training recordings its models keep
+# (alignment and the over-long rule drop some), and whether they are trimmed
+ms <- fit_grasp_models(g[g$meta$subject == "P1"], seed = 1, mixture_components = 1L)
+sm <- summary(ms)
+cat(sprintf("FPCA models on P1: %d of %d recordings kept; motion %s\n\n", sum(sm$n_used), sum(sm$n_input),
+            fitted_models(ms)[[1]]$settings$motion))
+bench_record("flexglove FPCA models: share of recordings kept", sum(sm$n_used) / sum(sm$n_input), "fraction")
+
 # A per-recording offset (the glove slid between sessions): each recording
 # of the test participant gets its own constant per channel, N(0, sd) with sd
 # the observed sd of the rest level between recordings of one type. How many
@@ -93,8 +101,8 @@ slipped <- function(x, sd, seed) {
   x$recordings <- lapply(x$recordings, function(r) sweep(r, 2, stats::rnorm(ncol(r), 0, sd), "+"))
   x
 }
-rest_sd <- stats::median(unlist(lapply(split(seq_along(g), g$meta$grasp), function(i) {
-  apply(t(vapply(g$recordings[i], function(r) r[1, ], numeric(length(g$dofs)))), 2, stats::sd)
+rest_sd <- stats::median(na.rm = TRUE, unlist(lapply(split(seq_along(g), g$meta$grasp), function(i) {
+  if (length(i) > 1L) apply(t(vapply(g$recordings[i], function(r) r[1, ], numeric(length(g$dofs)))), 2, stats::sd)
 })))
 changed <- vapply(c("P1", "P2"), function(s) {
   cl <- fit_grasp_classifier(g[g$meta$subject != s])
