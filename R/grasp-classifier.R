@@ -41,7 +41,7 @@
 #'   are shown by `print()` and `summary()`. On the real flexglove
 #'   recordings (6 flex sensors, 8 types, 3 objects each, two participants,
 #'   each classified by a fit on the other) this lifts the held-out accuracy
-#'   from 71.6% (one Gaussian per type) to 82.1%.
+#'   from 71.6% (one Gaussian per type) to 83.1%.
 #'   **Invariance**: the features are postures, log duration and log travel,
 #'   and LDA and the standardised k-means ignore any offset and scale of a
 #'   feature, so a per-channel offset or gain applied to every recording
