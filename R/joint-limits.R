@@ -115,31 +115,7 @@ recorded_limits <- function(x, dofs) {
   } else {
     lim <- empty
   }
-  out <- rbind(lim, sensor_limits(x, dofs, X, exclude = lim$dof))
-  # (a set no skeleton map knows came back as one row of NAs)
-  out <- rbind(out[!is.na(out$dof), , drop = FALSE], unknown_channel_limits(x, dofs, X, exclude = out$dof))
-  rownames(out) <- NULL
-  out
-}
-
-# Channels that neither the skeleton's joint maps (HUST, GraspDB14 names) nor
-# a glove profile know (a home-made glove's flex1..flex6 read in degrees by
-# default): nothing says what their values may be but the training data, so
-# they are kept inside its range as raw channels are. Without it, flexglove
-# read with the default unit generated 6% of frames outside the recorded
-# range and some below 0 counts. Known names without a skeleton limit (CMC1
-# of HUST) are left as they were.
-unknown_channel_limits <- function(x, dofs, X, exclude) {
-  maps <- list(hust_joint_map(), graspdb14_joint_map())
-  known <- dof_key(dofs) %in% unlist(lapply(maps, function(m) dof_key(m$dof)))
-  ch <- if (!is.null(x$glove)) match_glove(x$glove, dofs, x$unit)$channels
-  if (!is.null(ch)) known <- known | !is.na(ch$joint)
-  j <- which(!known & !dofs %in% exclude)
-  if (!length(j)) return(NULL)
-  lo <- apply(X[, j, drop = FALSE], 2, min)
-  hi <- apply(X[, j, drop = FALSE], 2, max)
-  data.frame(dof = dofs[j], col = j, lo = unname(lo), hi = unname(hi), joint = NA_character_,
-             recorded_outside = 0, enforced = hi >= lo, source = "training", stringsAsFactors = FALSE)
+  rbind(lim, sensor_limits(x, dofs, X, exclude = lim$dof))
 }
 
 # Limits of a glove's channels that the skeleton does not limit: the
