@@ -77,6 +77,9 @@ generics::generate
 #' before and held after it, and how much the hand trembled meanwhile;
 #' generated grasps get a rest and a hold drawn from those (the first and
 #' last posture, with the same tremor), so they look like the recordings.
+#' The rest and the hold come together from one training recording whose
+#' motion is among the five nearest in length to the generated motion, so
+#' they follow it as in the recordings (a long reach, a short hold).
 #'
 #' @param x A `grasp_model` ([fit_grasp_model()]) or `grasp_models`
 #'   ([fit_grasp_models()]).
