@@ -77,6 +77,9 @@ generics::generate
 #' before and held after it, and how much the hand trembled meanwhile;
 #' generated grasps get a rest and a hold drawn from those (the first and
 #' last posture, with the same tremor), so they look like the recordings.
+#' The rest and the hold come together from one training recording whose
+#' motion is among the five nearest in length to the generated motion, so
+#' they follow it as in the recordings (a long reach, a short hold).
 #'
 #' @param x A `grasp_model` ([fit_grasp_model()]) or `grasp_models`
 #'   ([fit_grasp_models()]).
@@ -415,14 +418,16 @@ stack_scores <- function(parts, N, ids, model) {
 # One batch from one model as a grasps object.
 
 
-# Rest before and hold after each generated motion: lengths resampled from
-# the training recordings' own, the first and last posture held with the
-# tremor measured in the recordings' still phases.
+# Rest before and hold after each generated motion: the rest and hold of
+# one training recording whose motion is about as long as the generated one
+# (still_phases() keeps them together), the first and last posture held with
+# the tremor measured in the recordings' still phases.
 add_still_phases <- function(got, model) {
   ph <- model$phases
   n <- length(got$recordings)
-  rest <- ph$rest[sample.int(length(ph$rest), n, replace = TRUE)]
-  hold <- ph$hold[sample.int(length(ph$hold), n, replace = TRUE)]
+  pick <- phase_donors(ph$motion, vapply(got$recordings, nrow, integer(1)), length(ph$rest))
+  rest <- ph$rest[pick]
+  hold <- ph$hold[pick]
   p <- length(model$dofs)
   still <- function(row, m) {
     if (m == 0L) return(NULL)
@@ -437,6 +442,22 @@ add_still_phases <- function(got, model) {
   got$n_frames <- got$n_frames + as.integer(rest + hold)
   got
 }
+
+# For each generated motion length, a training recording drawn at random
+# from the `phase_neighbours` whose motions are nearest in length (by rank:
+# the window of that many sorted lengths around it), so the rest and hold
+# follow the motion as in the recordings, resampled rather than copied. A
+# model fitted before the motion lengths were kept pairs at random.
+phase_donors <- function(motion, len, N) {
+  n <- length(len)
+  if (is.null(motion)) return(sample.int(N, n, replace = TRUE))
+  k <- min(phase_neighbours, N)
+  ord <- order(motion)
+  at <- findInterval(len, motion[ord])           # sorted lengths <= each length
+  first <- pmin(pmax(at - k %/% 2L + 1L, 1L), N - k + 1L)
+  ord[first + sample.int(k, n, replace = TRUE) - 1L]
+}
+phase_neighbours <- 5L
 
 # Residual resampling (fit_grasp_model(residuals = "resample")): each
 # generated motion gets the residual curves of one training recording drawn
