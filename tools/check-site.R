@@ -6,7 +6,7 @@
 # 3. the main pages run without a script error, both served over HTTP and
 #    opened from file://, with every outside host unreachable (as offline);
 # 4. the articles' "On this page" contents are filled, code stays inside
-#    its boxes, and the search box finds pages and its first result opens
+#    its boxes (long lines scroll, none wraps), and the search box finds pages and its first result opens
 #    its page, over HTTP (driven from a harness page holding the site in a
 #    frame) and from file:// (a copy of the page that searches by itself);
 # 5. the pages with the 3D viewer draw every widget, each with a hand's
@@ -159,9 +159,16 @@ f.onload = function() {
     input.trigger("focus");
     setTimeout(function() {
       out.toc = d.querySelectorAll("#toc a.nav-link").length;
-      /* code boxes whose text runs past them, a page wider than the window */
-      out.overflow = Array.prototype.filter.call(d.querySelectorAll("pre"),
-        function(p) { return p.scrollWidth > p.clientWidth + 1; }).length;
+      /* code boxes whose text runs past them (a long line scrolls inside
+         its box: white-space pre, overflow-x auto), code that wraps (in
+         the middle of a comment), a page wider than the window */
+      out.overflow = Array.prototype.filter.call(d.querySelectorAll("pre"), function(p) {
+        var scrolls = ["auto", "scroll"].indexOf(w.getComputedStyle(p).overflowX) >= 0;
+        return p.scrollWidth > p.clientWidth + 1 && !scrolls;
+      }).length;
+      out.wrapping = Array.prototype.filter.call(d.querySelectorAll("pre code"), function(c) {
+        return w.getComputedStyle(c).whiteSpace !== "pre";
+      }).length;
       out.page_wider = d.documentElement.scrollWidth > w.innerWidth;
       out.headings = d.querySelectorAll("main h2:not([data-toc-skip])").length;
       input.val(%s).trigger("input");
@@ -333,6 +340,7 @@ message("site: no script errors on the main pages, over HTTP or from file://")
 for (pg in search_pages) {
   r <- harness_result(res[[paste("harness", pg)]], pg)
   if (!is.null(r$error)) fail("harness error on ", pg, ": ", r$error)
+  if (isTRUE(r$wrapping > 0)) fail(sprintf("%s: %d code boxes wrap their lines", pg, r$wrapping))
   if (r$overflow > 0 || isTRUE(r$page_wider)) {
     fail(sprintf("%s: %d code boxes run past their edge%s", pg, r$overflow,
                  if (isTRUE(r$page_wider)) ", and the page is wider than the window" else ""))
