@@ -176,6 +176,12 @@ f.onload = function() {
         var s = d.querySelectorAll(".aa-suggestion");
         out.suggestions = s.length;
         out.first = s.length ? s[0].textContent.replace(/\\s+/g, " ").trim() : "";
+        /* the list of suggestions lies within the window */
+        var menu = d.querySelector(".aa-dropdown-menu");
+        if (menu) {
+          var r = menu.getBoundingClientRect();
+          out.menu_fits = r.left >= 0 && r.right <= w.innerWidth && r.bottom <= w.innerHeight;
+        }
         if (!s.length) return done();
         $(s[0]).trigger("click");
         setTimeout(done, 3000);  /* the frame did not move on */
@@ -194,6 +200,11 @@ for (pg in search_pages) {
   runs[[paste("harness", pg)]] <- c(browser_args(12000), offline, "--dump-dom",
                                      sprintf("http://127.0.0.1:%d/%s", port, basename(h)))
 }
+# a function's name finds its help page first (not a changelog entry)
+ranked <- c(query = "calibrate", page = "reference/calibrate.html")
+writeLines(harness(paste0(http_base, "index.html"), ranked[["query"]]), file.path(root, "harness-rank.html"))
+runs[["harness rank"]] <- c(browser_args(12000), offline, "--dump-dom",
+                            sprintf("http://127.0.0.1:%d/harness-rank.html", port))
 harness_result <- function(out, pg) {
   dom <- paste(out$stdout, collapse = "\n")
   json <- sub('(?s).*<pre id="result">(.*?)</pre>.*', "\\1", dom, perl = TRUE)
@@ -356,6 +367,13 @@ for (pg in search_pages) {
   message(sprintf("site: over HTTP, %s: %d contents links for %d sections, code inside its boxes; search '%s': %d results, the first opened %s",
                   pg, r$toc, r$headings, query, r$suggestions, sub("^.*/site/", "", r$opened)))
 }
+r <- harness_result(res[["harness rank"]], "index.html")
+if (is.null(r$opened) || !grepl(ranked[["page"]], r$opened, fixed = TRUE)) {
+  fail(sprintf("search '%s' opened %s first, not %s", ranked[["query"]], if (is.null(r$opened)) r$first else r$opened, ranked[["page"]]))
+}
+if (!isTRUE(r$menu_fits)) fail(sprintf("search '%s': the list of results runs off the window", ranked[["query"]]))
+message(sprintf("site: search '%s': %d results within the window, the first opened %s", ranked[["query"]],
+                r$suggestions, ranked[["page"]]))
 for (pg in search_pages) file_search_result(res[[paste("file search", pg)]], pg)
 check_animation(res[["animation"]], "articles/graspdb14.html")
 for (pg in widget_pages) check_widgets(res[[paste("widgets", pg)]], pg, 2L)
