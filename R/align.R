@@ -99,6 +99,12 @@ dtw_pair_reference <- function(x, template, window) {
 #' two more iterations; at most five rounds of dropping). If more than half of
 #' the recordings are flagged at once, the template itself is suspect, so only
 #' the worst is dropped and DBA restarts from the linear mean of the rest.
+#' With `degenerate_warps = "constrain"` (default) the flagged recordings
+#' are then aligned again, one by one, to that final template by DTW under a
+#' slope constraint (local slopes between 1/3 and 3, the dtw package's
+#' `symmetricP05`: a frame is held over at most three template frames, while
+#' the recording may shift by any amount), or linearly if no such path exists,
+#' and kept; `"drop"` (the thesis) leaves them out.
 #'
 #' **Fallback**: if DTW fails (an error, e.g. non-finite values or no path
 #' within `window`, a non-finite template, or fewer than two recordings
@@ -133,14 +139,20 @@ dtw_pair_reference <- function(x, template, window) {
 #'   between subjects and objects are not mistaken for timing (DTW on raw
 #'   angles then holds recordings still, a singular warp). `"raw"`: the
 #'   angles as recorded. Either way the warped recordings are in data units.
+#' @param degenerate_warps `"constrain"` keeps degenerate recordings with a
+#'   slope-constrained or linear warp, `"drop"` drops them (the thesis; see Degenerate
+#'   warps).
 #' @return An object of class `grasp_alignment`, a list with `warped` (array
 #'   `[n, L, p]`, dimnames ids, NULL, DoFs), `warps` (`n x L` matrix, original
 #'   frame per template frame), `template` (`L x p`), `target_length`, `ids`,
 #'   `n_frames` (original lengths, named), `method` (`"dtw"` or `"linear"`),
 #'   `fallback_reason` (`NA` unless linear), `degenerate` (data frame `id`,
-#'   `stall`, `n_frames` of the dropped recordings; they are not in `warped`),
-#'   `dropped_warps` (their warping functions), `iterations`, `converged`,
+#'   `stall`, `n_frames`, `fallback` of the recordings with a degenerate DTW
+#'   warp: `"dropped"` ones are not in `warped`, `"slope"` and `"linear"`
+#'   ones are, with that warp), `dropped_warps` (their degenerate DTW
+#'   warping functions), `iterations`, `converged`,
 #'   `changes` (relative template change at each iteration), `engine`,
+#'   `degenerate_warps`,
 #'   `distance` (DTW cost per kept recording), `max_stall`, `features`,
 #'   `feature_template` (the DBA template in the space DTW compared; with
 #'   `features = "raw"` it equals `template`, otherwise `template` is the mean
@@ -160,10 +172,11 @@ dtw_pair_reference <- function(x, template, window) {
 #' @noRd
 align_recordings <- function(recordings, target_length = NULL, engine = c("fast", "reference"),
                              max_iter = 10, tol = 1e-3, max_stall = 0.25, window = NULL,
-                             features = c("shape", "raw")) {
+                             features = c("shape", "raw"), degenerate_warps = c("constrain", "drop")) {
   call <- rlang::caller_env()
   engine <- check_choice(engine, arg = "engine", call = call)
   features <- check_choice(features, arg = "features", call = call)
+  degenerate_warps <- check_choice(degenerate_warps, arg = "degenerate_warps", call = call)
   if (inherits(recordings, "grasps")) recordings <- recordings$recordings
   recs <- align_check_recordings(recordings, call)
   n_frames <- vapply(recs, nrow, integer(1))
@@ -174,7 +187,7 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
   overlong_check_mult(max_stall, "max_stall", call)
   window <- check_number(window, "window", min = 0, allow_null = TRUE, call = call)
 
-  al <- align_checked(recs, L, engine, max_iter, tol, max_stall, window, features)
+  al <- align_checked(recs, L, engine, max_iter, tol, max_stall, window, features, degenerate_warps)
   # degenerate data (one-frame or non-finite recordings, a zero window, the
   # linear fallback) is said at the top level, not only deep in the object
   al$degenerate_data <- alignment_degeneracies(al, recs, window)
@@ -184,7 +197,8 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
 
 # The alignment of checked recordings (align_recordings() without its checks
 # and warnings).
-align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, features) {
+align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, features,
+                          degenerate_warps = "constrain") {
   ids <- names(recs)
   n_frames <- vapply(recs, nrow, integer(1))
   if (length(recs) < 2L) {
@@ -203,6 +217,9 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
       recs, L, engine,
       reason = sprintf("fewer than 2 recordings left after dropping %d degenerate warp(s)",
                        nrow(fit$degenerate))))
+  }
+  if (degenerate_warps == "constrain" && nrow(fit$degenerate) > 0L) {
+    fit <- constrain_degenerate(fit, feats, L, engine, max_stall)
   }
   kept <- fit$kept
   dofs <- colnames(recs[[1]])
@@ -232,7 +249,8 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
     dropped_warps = fit$dropped_warps, iterations = fit$iterations,
     converged = fit$converged, changes = fit$changes, engine = engine,
     distance = stats::setNames(fit$run$distance, ids[kept]), max_stall = max_stall,
-    features = features, feature_template = feature_template)
+    features = features, feature_template = feature_template,
+    degenerate_warps = degenerate_warps)
 }
 
 # Per recording and DoF: centre on the midpoint of the start and end postures
@@ -309,7 +327,8 @@ dba_with_drops <- function(recs, L, engine, max_iter, tol, max_stall, window,
     if (restart) bad <- stall == max(stall)
     degenerate <- rbind(degenerate, data.frame(
       id = names(recs)[kept[bad]], stall = stall[bad],
-      n_frames = vapply(recs[kept[bad]], nrow, integer(1)), stringsAsFactors = FALSE))
+      n_frames = vapply(recs[kept[bad]], nrow, integer(1)), fallback = "dropped",
+      stringsAsFactors = FALSE))
     bw <- run$warps[bad, , drop = FALSE]
     rownames(bw) <- names(recs)[kept[bad]]
     dropped_warps <- rbind(dropped_warps, bw)
@@ -331,7 +350,62 @@ dba_with_drops <- function(recs, L, engine, max_iter, tol, max_stall, window,
 
 empty_degenerate <- function() {
   data.frame(id = character(0), stall = integer(0), n_frames = integer(0),
-             stringsAsFactors = FALSE)
+             fallback = character(0), stringsAsFactors = FALSE)
+}
+
+# Keep the recordings dba_with_drops() flagged as degenerate: each is
+# aligned again, alone, to the final template (estimated without them) by
+# slope-constrained DTW (dtw_slope_pair(), R/align-slope.R, which cannot
+# hold a frame still), or linearly if no such path exists (a recording less
+# than a third or more than three times the template's length) or it still
+# stalls. Returns `fit` with the recordings merged back in input order and
+# `degenerate$fallback` saying which warp each got ("slope" or "linear").
+constrain_degenerate <- function(fit, recs, L, engine, max_stall) {
+  template <- fit$run$template
+  flagged <- match(fit$degenerate$id, names(recs))
+  p <- ncol(template)
+  extra <- list(warped = array(0, c(length(flagged), L, p)), warps = matrix(0, length(flagged), L),
+                distance = rep(NA_real_, length(flagged)))
+  how <- character(length(flagged))
+  for (a in seq_along(flagged)) {
+    x <- recs[[flagged[a]]]
+    path <- tryCatch(dtw_slope_pair(x, template, engine), error = function(e) NULL)
+    r <- if (!is.null(path)) path_alignment(x, path, L)
+    if (!is.null(r)) {
+      st <- stall_lengths(r$warps)
+      if (st >= 2L && st > max_stall * L) r <- NULL
+    }
+    if (is.null(r)) {
+      wl <- linear_warp_function(nrow(x), L)
+      r <- list(warped = array(apply_warp(x, wl), c(1L, L, p)), warps = matrix(wl, 1L),
+                distance = NA_real_)
+      how[a] <- "linear"
+    } else {
+      how[a] <- "slope"
+    }
+    extra$warped[a, , ] <- r$warped[1L, , ]
+    extra$warps[a, ] <- r$warps[1L, ]
+    extra$distance[a] <- r$distance
+  }
+  all <- c(fit$kept, flagged)
+  ord <- order(all)
+  run <- fit$run
+  run$warped <- abind_first(run$warped, extra$warped)[ord, , , drop = FALSE]
+  run$warps <- rbind(run$warps, extra$warps)[ord, , drop = FALSE]
+  run$distance <- c(run$distance, extra$distance)[ord]
+  fit$run <- run
+  fit$kept <- all[ord]
+  fit$degenerate$fallback <- how
+  fit
+}
+
+# Two arrays [n1, L, p] and [n2, L, p] stacked along the first dimension.
+abind_first <- function(a, b) {
+  d <- dim(a)
+  out <- array(0, c(d[1] + dim(b)[1], d[2], d[3]))
+  out[seq_len(d[1]), , ] <- a
+  out[d[1] + seq_len(dim(b)[1]), , ] <- b
+  out
 }
 
 subset_run <- function(run, keep) {
@@ -520,12 +594,24 @@ print.grasp_alignment <- function(x, ...) {
   if (!is.null(notes)) notes <- notes[notes$class != "linear_fallback", , drop = FALSE]
   dg <- format_degenerate(notes)
   if (length(dg)) cat(dg, sep = "\n")
-  nd <- nrow(x$degenerate)
+  deg <- x$degenerate
+  # (alignments made before the fallback existed dropped them all)
+  how <- deg$fallback %||% rep("dropped", nrow(deg))
+  show_ids <- function(ids) {
+    paste0(paste(utils::head(ids, 5), collapse = ", "), if (length(ids) > 5) ", ..." else "")
+  }
+  nd <- sum(how == "dropped")
   if (nd > 0) {
-    shown <- utils::head(x$degenerate$id, 5)
-    cat(sprintf("  dropped %d degenerate warp%s (held still > %g L): %s%s\n", nd,
-                if (nd == 1) "" else "s", x$max_stall, paste(shown, collapse = ", "),
-                if (nd > 5) ", ..." else ""))
+    cat(sprintf("  dropped %d degenerate warp%s (held still > %g L): %s\n", nd,
+                if (nd == 1) "" else "s", x$max_stall, show_ids(deg$id[how == "dropped"])))
+  }
+  nc <- sum(how != "dropped")
+  if (nc > 0) {
+    nl <- sum(how == "linear")
+    cat(sprintf("  kept %d degenerate warp%s (held still > %g L) by a fallback: slope-constrained DTW%s: %s\n",
+                nc, if (nc == 1) "" else "s", x$max_stall,
+                if (nl > 0) sprintf(" (%d linear: no such path)", nl) else "",
+                show_ids(deg$id[how != "dropped"])))
   }
   invisible(x)
 }
