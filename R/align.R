@@ -104,7 +104,10 @@ dtw_pair_reference <- function(x, template, window) {
 #' slope constraint (local slopes between 1/3 and 3, the dtw package's
 #' `symmetricP05`: a frame is held over at most three template frames, while
 #' the recording may shift by any amount), or linearly if no such path exists,
-#' and kept; `"drop"` (the thesis) leaves them out.
+#' and kept; `"drop"` (the thesis) leaves them out. When more than half of
+#' the recordings stall at once (long rests and holds: the template itself
+#' holds still), `"constrain"` aligns the whole type by slope-constrained DBA
+#' from the linear mean instead of the rounds of restarts (without `window`).
 #'
 #' **Fallback**: if DTW fails (an error, e.g. non-finite values or no path
 #' within `window`, a non-finite template, or fewer than two recordings
@@ -152,7 +155,9 @@ dtw_pair_reference <- function(x, template, window) {
 #'   ones are, with that warp), `dropped_warps` (their degenerate DTW
 #'   warping functions), `iterations`, `converged`,
 #'   `changes` (relative template change at each iteration), `engine`,
-#'   `degenerate_warps`,
+#'   `degenerate_warps`, `step_pattern` (`"symmetric2"`, or `"symmetricP05"`
+#'   when most warps stalled at once and the whole type was aligned by
+#'   slope-constrained DBA),
 #'   `distance` (DTW cost per kept recording), `max_stall`, `features`,
 #'   `feature_template` (the DBA template in the space DTW compared; with
 #'   `features = "raw"` it equals `template`, otherwise `template` is the mean
@@ -207,8 +212,13 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
   }
   norm <- if (features == "shape") shape_features(recs) else NULL
   feats <- if (is.null(norm)) recs else norm$features
-  fit <- tryCatch(dba_with_drops(feats, L, engine, max_iter, tol, max_stall, window),
+  constrain <- degenerate_warps == "constrain"
+  fit <- tryCatch(dba_with_drops(feats, L, engine, max_iter, tol, max_stall, window,
+                                 stop_if_suspect = constrain && is.null(window)),
                   error = function(e) e)
+  if (!inherits(fit, "error") && !is.null(fit$suspect)) {
+    fit <- tryCatch(slope_dba_fit(fit, feats, L, engine, max_iter, tol), error = function(e) e)
+  }
   if (inherits(fit, "error")) {
     return(align_linear_fallback(recs, L, engine, reason = conditionMessage(fit)))
   }
@@ -218,7 +228,7 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
       reason = sprintf("fewer than 2 recordings left after dropping %d degenerate warp(s)",
                        nrow(fit$degenerate))))
   }
-  if (degenerate_warps == "constrain" && nrow(fit$degenerate) > 0L) {
+  if (constrain && is.null(fit$step_pattern) && nrow(fit$degenerate) > 0L) {
     fit <- constrain_degenerate(fit, feats, L, engine, max_stall)
   }
   kept <- fit$kept
@@ -250,7 +260,7 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
     converged = fit$converged, changes = fit$changes, engine = engine,
     distance = stats::setNames(fit$run$distance, ids[kept]), max_stall = max_stall,
     features = features, feature_template = feature_template,
-    degenerate_warps = degenerate_warps)
+    degenerate_warps = degenerate_warps, step_pattern = fit$step_pattern %||% "symmetric2")
 }
 
 # Per recording and DoF: centre on the midpoint of the start and end postures
@@ -308,8 +318,9 @@ new_grasp_alignment <- function(...) {
 # Recordings still flagged after the last round are dropped without a further
 # refinement.
 dba_with_drops <- function(recs, L, engine, max_iter, tol, max_stall, window,
-                           max_rounds = 5L, refine_iter = 2L) {
+                           max_rounds = 5L, refine_iter = 2L, stop_if_suspect = FALSE) {
   kept <- seq_along(recs)
+  suspect <- NULL
   degenerate <- empty_degenerate()
   dropped_warps <- matrix(numeric(0), 0L, L)
   iterations <- 0L
@@ -324,6 +335,17 @@ dba_with_drops <- function(recs, L, engine, max_iter, tol, max_stall, window,
     bad <- stall >= 2L & stall > max_stall * L
     if (!any(bad)) break
     restart <- sum(bad) > length(kept) / 2
+    if (restart && stop_if_suspect) {
+      # (degenerate_warps = "constrain": the caller aligns the whole type
+      # by slope-constrained DBA instead of restarting, see slope_dba_fit())
+      suspect <- data.frame(id = names(recs)[kept[bad]], stall = stall[bad],
+                            n_frames = vapply(recs[kept[bad]], nrow, integer(1)), fallback = "slope",
+                            stringsAsFactors = FALSE)
+      bw <- run$warps[bad, , drop = FALSE]
+      rownames(bw) <- names(recs)[kept[bad]]
+      dropped_warps <- rbind(dropped_warps, bw)
+      break
+    }
     if (restart) bad <- stall == max(stall)
     degenerate <- rbind(degenerate, data.frame(
       id = names(recs)[kept[bad]], stall = stall[bad],
@@ -345,7 +367,7 @@ dba_with_drops <- function(recs, L, engine, max_iter, tol, max_stall, window,
   }
   rownames(degenerate) <- NULL
   list(run = run, kept = kept, degenerate = degenerate, dropped_warps = dropped_warps,
-       iterations = iterations, converged = run$converged, changes = changes)
+       iterations = iterations, converged = run$converged, changes = changes, suspect = suspect)
 }
 
 empty_degenerate <- function() {
@@ -586,6 +608,9 @@ print.grasp_alignment <- function(x, ...) {
     cat(sprintf("  method: DTW barycenter averaging (%s engine, %s features), %d iteration%s, %s\n",
                 x$engine, x$features, x$iterations, if (x$iterations == 1) "" else "s",
                 if (x$converged) "converged" else "not converged"))
+    if (identical(x$step_pattern, "symmetricP05")) {
+      cat("  most warps stalled at once: the whole type aligned by slope-constrained DTW\n")
+    }
   } else {
     cat(sprintf("  method: LINEAR warping (fallback: %s)\n", x$fallback_reason))
   }

@@ -56,6 +56,10 @@ prepare_alignment <- function(x, settings, engines, call) {
       "%d recording%s held still > %g L by DTW kept with a slope-constrained DTW warp%s: %s",
       nrow(kept_degenerate), if (nrow(kept_degenerate) == 1L) "" else "s", aln$max_stall,
       if (nl) sprintf(" (%d linear: no such path)", nl) else "", paste(kept_degenerate$id, collapse = ", ")))
+    if (identical(aln$step_pattern, "symmetricP05")) {
+      fallbacks <- add_fallback(fallbacks, "slope_warping", NA_character_,
+                                "most warps stalled at once: every recording aligned by slope-constrained DTW")
+    }
   }
   deg <- deg[how == "dropped", , drop = FALSE]
   if (nrow(deg) > 0L) {

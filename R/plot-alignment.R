@@ -99,7 +99,7 @@ alignment_length_data <- function(object) {
 alignment_path_data <- function(object) {
   L <- object$target_length
   w <- rbind(object$warps, object$dropped_warps)
-  ids <- c(object$ids, object$degenerate$id)
+  ids <- c(object$ids, rownames(object$dropped_warps) %||% object$degenerate$id)
   # (the degenerate DTW warps are drawn also when a fallback replaced them:
   # the id then has its stalled path in red and its kept path in orange)
   ids <- paste0(ids, c(rep("", nrow(object$warps)), rep(" (DTW)", nrow(object$dropped_warps))))

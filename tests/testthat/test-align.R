@@ -352,11 +352,22 @@ test_that("broken recordings do not drag good ones down; too few left falls back
   expect_identical(al$ids, c("good", "good2"))
   expect_setequal(al$degenerate$id, c("early", "late"))
   # one good recording is not enough to align
-  expect_warning(one <- align_recordings(list(good = x, early = early, late = late), features = "raw"),
+  expect_warning(one <- align_recordings(list(good = x, early = early, late = late), features = "raw",
+                                         degenerate_warps = "drop"),
                  class = "handmotion_warning_linear_fallback")
   expect_identical(one$method, "linear")
   expect_match(one$fallback_reason, "fewer than 2 recordings left after dropping 2 degenerate")
   expect_identical(one$ids, c("good", "early", "late"))
+  # by default a type whose warps mostly stall at once is aligned as a whole
+  # by slope-constrained DBA: every recording kept, none held still
+  kept <- align_recordings(list(good = x, early = early, late = late), features = "raw")
+  expect_identical(kept$method, "dtw")
+  expect_identical(kept$step_pattern, "symmetricP05")
+  expect_identical(kept$ids, c("good", "early", "late"))
+  expect_true(all(c("early", "late") %in% kept$degenerate$id))
+  expect_true(all(handmotion:::stall_lengths(kept$warps) <= 3))
+  expect_true(all(apply(kept$warps, 1, function(w) all(diff(w) >= 0))))
+  expect_output(print(kept), "whole type aligned by slope-constrained DTW")
 })
 
 test_that("target_length, L = 1 and one-frame recordings work", {
