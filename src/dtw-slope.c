@@ -32,17 +32,6 @@ typedef struct {
   double w[MAXSTEP];
 } pattern_t;
 
-/* Euclidean distance between frame i of x (n x p) and frame j of y (m x p),
- * column-major, summed over DoFs in order (as proxy::dist). */
-static double frame_dist(const double *x, int n, int i, const double *y, int m, int j, int p) {
-  double a = 0.0;
-  for (int k = 0; k < p; k++) {
-    double d = x[(size_t) k * n + i] - y[(size_t) k * m + j];
-    a += d * d;
-  }
-  return sqrt(a);
-}
-
 SEXP hm_dtw_pattern(SEXP x, SEXP y, SEXP table) {
   if (!isReal(x) || !isMatrix(x) || !isReal(y) || !isMatrix(y))
     error("'x' and 'template' must be double matrices");
@@ -81,8 +70,22 @@ SEXP hm_dtw_pattern(SEXP x, SEXP y, SEXP table) {
   double *d = (double *) R_alloc(cells, sizeof(double));
   double *g = (double *) R_alloc(cells, sizeof(double));
   int *sm = (int *) R_alloc(cells, sizeof(int));
-  for (int j = 0; j < m; j++)
-    for (int i = 0; i < n; i++) d[(size_t) j * n + i] = frame_dist(xv, n, i, yv, m, j, p);
+  /* column by column, DoF-outer so the inner loop runs over contiguous
+   * recording frames (vectorised by the compiler); each cell still sums its
+   * DoFs in order from 0, as frame_dist() and proxy::dist do */
+  for (int j = 0; j < m; j++) {
+    double *dj = d + (size_t) j * n;
+    for (int i = 0; i < n; i++) dj[i] = 0.0;
+    for (int k = 0; k < p; k++) {
+      const double *xk = xv + (size_t) k * n;
+      const double yk = yv[(size_t) k * m + j];
+      for (int i = 0; i < n; i++) {
+        double e = xk[i] - yk;
+        dj[i] += e * e;
+      }
+    }
+    for (int i = 0; i < n; i++) dj[i] = sqrt(dj[i]);
+  }
   for (int j = 0; j < m; j++) {
     for (int i = 0; i < n; i++) {
       size_t c = (size_t) j * n + i;
