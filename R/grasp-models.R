@@ -368,7 +368,10 @@ print.grasp_models <- function(x, ...) {
 #' @param ... Unused.
 #' @return A data frame with columns `grasp_id`, `grasp`, `n_input`,
 #'   `n_used`, `n_overlong` (removed as over-long), `n_degenerate` (removed
-#'   for a degenerate warp), `target_length`, `warping` (`"dtw"` or
+#'   for a degenerate warp: `degenerate_warps = "drop"`, the thesis' rule),
+#'   `n_warp_fallback` (recordings whose DTW warp was degenerate, kept with a
+#'   slope-constrained or linear warp: `degenerate_warps = "constrain"`),
+#'   `target_length`, `warping` (`"dtw"` or
 #'   `"linear"`), `em_fallback` (the DoFs whose mixture fell back to a single
 #'   Gaussian, e.g. `"MCP3, DIP4"`, empty when none), `n_em_fallback`,
 #'   `constant_dofs`, `dependence` (`"independent"` or `"copula"`),
@@ -385,7 +388,8 @@ summary.grasp_models <- function(object, ...) {
   rows <- lapply(unclass(object), function(m) {
     if (inherits(m, "grasp_model_failed")) {
       return(data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n_input = NA_integer_, n_used = NA_integer_,
-                        n_overlong = NA_integer_, n_degenerate = NA_integer_, target_length = NA_integer_,
+                        n_overlong = NA_integer_, n_degenerate = NA_integer_, n_warp_fallback = NA_integer_,
+                        target_length = NA_integer_,
                         warping = NA_character_, em_fallback = NA_character_, n_em_fallback = NA_integer_,
                         constant_dofs = NA_character_, dependence = NA_character_, n_guarded = NA_integer_,
                         min_var = NA_real_, median_var = NA_real_, mean_var = NA_real_, max_var = NA_real_,
@@ -399,6 +403,7 @@ summary.grasp_models <- function(object, ...) {
     data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n_input = m$n_input, n_used = m$n_used,
                n_overlong = sum(m$removed$reason == "overlong"),
                n_degenerate = sum(m$removed$reason == "degenerate warp"),
+               n_warp_fallback = NROW(m$warping$degenerate),
                target_length = m$target_length, warping = m$warping$method,
                em_fallback = paste(em, collapse = ", "), n_em_fallback = length(em),
                constant_dofs = paste(const, collapse = ", "),
@@ -409,7 +414,8 @@ summary.grasp_models <- function(object, ...) {
   })
   out <- if (length(rows)) do.call(rbind, rows) else
     data.frame(grasp_id = integer(), grasp = character(), n_input = integer(), n_used = integer(),
-               n_overlong = integer(), n_degenerate = integer(), target_length = integer(),
+               n_overlong = integer(), n_degenerate = integer(), n_warp_fallback = integer(),
+               target_length = integer(),
                warping = character(), em_fallback = character(), n_em_fallback = integer(),
                constant_dofs = character(), dependence = character(), n_guarded = integer(),
                min_var = numeric(), median_var = numeric(),
