@@ -8,6 +8,7 @@
 # Character probabilities, three decimals, the ends bounded.
 format_probability <- function(p, digits = 3L) {
   eps <- 10^-digits
+  p <- as.vector(p)  # (the numbers only: formatC() would keep a vector's attributes)
   out <- formatC(p, format = "f", digits = digits)
   out[!is.na(p) & p < eps / 2] <- paste0("<", formatC(eps, format = "f", digits = digits))
   out[!is.na(p) & p >= 1 - eps / 2] <- paste0(">", formatC(1 - eps, format = "f", digits = digits))
@@ -19,6 +20,14 @@ format_probability <- function(p, digits = 3L) {
 # double vector (attributes `frames`, `ms`, `motion`) whose print() reads.
 new_grasp_probabilities <- function(p, ...) {
   structure(p, ..., class = "grasp_probabilities")
+}
+
+# A subset (sort(), head(), p[1:3]) keeps the class, so the most likely
+# types print as the whole vector does.
+#' @export
+`[.grasp_probabilities` <- function(x, i) {
+  new_grasp_probabilities(unclass(x)[i], frames = attr(x, "frames"), ms = attr(x, "ms"),
+                          motion = attr(x, "motion"))
 }
 
 #' @export

@@ -71,6 +71,11 @@ test_that("probabilities print with three decimals and bounded ends, the numbers
   expect_match(out, "after 10 frames (200 ms)", fixed = TRUE, all = FALSE)
   # the stored values are the model's own, not the printed ones
   expect_identical(as.vector(unclass(p)), as.vector(st$state$probs))
+  # the README's most likely types print the same way (a subset keeps the class)
+  top <- head(sort(p, decreasing = TRUE), 3)
+  expect_s3_class(top, "grasp_probabilities")
+  expect_identical(as.vector(unclass(top)), utils::head(sort(as.vector(unclass(p)), decreasing = TRUE), 3))
+  expect_false(any(grepl("e-|e\\+", capture.output(print(top)))))
   expect_equal(sum(p), 1, tolerance = 1e-12)
 })
 
