@@ -98,7 +98,9 @@ report_step_kinds <- function(steps) {
 # `trace`, if a function, is called with the time so far, the estimate of
 # the time left (NA when none is made) and the event (a step, a progress
 # step, a chunk) at every update, printed or not: bench/bench-eta.R
-# compares them with the real time left.
+# compares them with the real time left. `pace` measures the machine's
+# pace at begin() (machine_pace(); tests feed a fixed one), which scales the
+# cost model's first estimate and is said in the first line.
 report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
                             clock = function() proc.time()[["elapsed"]],
                             trace = getOption("handmotion.progress_trace"), pace = machine_pace) {
