@@ -37,6 +37,11 @@ report_chunk_signal <- function(label) {
 # them per step did not finish on the machine at load 20). At another
 # machine's pace (machine_pace()) report_step_costs() scales them. `scale`
 # says how a step grows with the design (recordings N, types T, folds F)
+# beyond its `fixed` CPU seconds, which a design of any size pays (forking
+# the workers, first calls, the figures' set-up): bench-eta.R's quick run
+# (4 subjects x 3 types, 2 folds: 52 s of CPU where the model without them
+# said 34 s of time, the run took 198 s at load 14) at its calibration's
+# pace (0.32 s, 2.16 times the reference CPU),
 # and `parallel` whether its folds or types share the future workers. While
 # the report runs, report_eta() rescales the seconds by the measured rates:
 # the time the finished steps took against what the model predicted for
@@ -56,6 +61,7 @@ report_step_model <- data.frame(
            "the figures and the page"),
   cpu = c(3.0, 14.1, 1.7, 2.4, 0.6, 0.2, 272, 66, 64, 41, 1.9, 15, 10.7, 8.8, 12.8, 12.6, 0.2, 0.6, 3.9,
           8.6, 3.0),
+  fixed = c(0.1, 1.9, 0.05, 0.05, 0, 0, 2.7, 0.9, 3.0, 1.1, 0.6, 3.0, 2.3, 2.3, 0.6, 2.9, 0, 0, 0.05, 0.8, 1.6),
   scale = c("N", "N", "NT", "N", "N", "T", "NF", "NF", "NF", "NF", "const", "T", "N", "N", "NT", "N",
             "NT", "N", "NT", "NF", "T"),
   parallel = c(FALSE, TRUE, FALSE, FALSE, FALSE, FALSE, TRUE, TRUE, TRUE, TRUE, FALSE, FALSE, TRUE, TRUE,
@@ -73,7 +79,8 @@ report_step_costs <- function(settings, workers = 1L, pace = NULL) {
   F <- if (is.null(settings$loso_folds)) S else settings$loso_folds
   units <- c(const = 1, N = N / 8910, T = T / 33, NT = N * T / (8910 * 33),
              NF = N * (F - 1) / (8910 * 29))
-  per <- m$cpu * units[m$scale]
+  # (the fixed part does not shrink with the design: see `fixed`)
+  per <- m$fixed + (m$cpu - m$fixed) * units[m$scale]
   # folds and types share the workers (never more workers than folds)
   share <- ifelse(m$parallel, pmin(max(1L, workers), ifelse(m$scale == "NF", F, T)), 1)
   # CPU seconds of the reference machine -> elapsed seconds here and now

@@ -242,6 +242,15 @@ test_that("the first estimate is the cost model at the machine's measured pace",
   expect_equal(unname(one / report_step_costs(settings, workers = 1L)), rep(3, length(one)))
 })
 
+test_that("a small design pays each step's fixed part, a larger one grows beyond it", {
+  tiny <- report_step_costs(list(subjects = 2, grasps = c(17, 25), loso_folds = 2), workers = 1L)
+  expect_true(all(tiny >= report_step_model$fixed - 1e-12))
+  full <- report_step_costs(list(subjects = 30, grasps = 1:33, loso_folds = NULL), workers = 1L)
+  expect_equal(unname(full), report_step_model$cpu)
+  half <- report_step_costs(list(subjects = 15, grasps = 1:33, loso_folds = NULL), workers = 1L)
+  expect_true(all(half >= tiny - 1e-12 & half <= full + 1e-12))
+})
+
 test_that("the first line says when the machine is busy, and the estimate allows for it", {
   settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
   first_lines <- function(pace) {
