@@ -285,12 +285,21 @@ failed_types <- function(x) {
   } else {
     names(x)[check_positions(i, length(x), "model")]
   }
-  absent <- setdiff(keep, names(x))
-  if (length(absent)) {
-    hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input", argument = "i")
-  }
+  check_types_present(x, keep, "i", rlang::caller_env())
   new_grasp_models(unclass(x)[keep], seed = attr(x, "seed"), levels = attr(x, "levels"),
                    temperature = attr(x, "temperature"))
+}
+
+# Grasp types asked of a model set (`arg`) that it has no model for: an
+# error that lists the types it does have (the first eight, so a 33-type set
+# stays one line), since the user's next call needs one of them.
+check_types_present <- function(x, types, arg, call) {
+  absent <- setdiff(types, names(x))
+  if (!length(absent)) return(invisible(types))
+  have <- cli::cli_vec(names(x), list("vec-trunc" = 8))
+  hm_abort(c("No model for grasp type{?s} {.val {absent}} in this set.",
+             i = "It has models for {length(have)} type{?s}: {.val {have}}."),
+           "unknown_grasp", argument = arg, call = call)
 }
 
 # Fitted models chosen by grasp name or id, for generate(): every fitted one
@@ -307,11 +316,7 @@ select_models <- function(x, grasp, call) {
     return(fitted_models(x))
   }
   keep <- check_grasp_selection(grasp, "grasp", levels = model_set_levels(x), call = call)
-  absent <- setdiff(keep, names(x))
-  if (length(absent)) {
-    hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input",
-             argument = "grasp", call = call)
-  }
+  check_types_present(x, keep, "grasp", call)
   bad <- failed[failed$grasp %in% keep, , drop = FALSE]
   if (nrow(bad)) {
     hm_abort(c("The model of {.val {bad$grasp}} could not be fitted, so it cannot generate.",
