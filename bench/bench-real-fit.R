@@ -52,20 +52,6 @@ threshold_trim <- function(g, frac = 0.1) {
   grasps(recs, meta = g$meta[, c("grasp", "subject", "object")], rate = g$rate, unit = g$unit)
 }
 
-wide_glove <- function(types, trials) {
-  objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)[seq_len(types)]
-  g <- simulate_grasps(subjects = 1, grasps = objects, objects = 1, trials = trials, rate = 100,
-                       glove = "resistive", rest = 1.4, hold = 1.6, overlong = FALSE, seed = 3)
-  set.seed(4)
-  recs <- lapply(g$recordings, function(x) {
-    extra <- (x[, 1:8] + x[, 2:9]) / 2
-    extra <- extra + stats::rnorm(length(extra), sd = 2)
-    colnames(extra) <- paste0("extra", 1:8)
-    cbind(x, extra)
-  })
-  grasps(recs, meta = g$meta[, c("grasp", "subject", "object")], rate = 100, unit = "raw")
-}
-
 kept_table <- function(label, x, ...) {
   rows <- list()
   for (dw in c("drop", "constrain")) {
