@@ -39,6 +39,16 @@ is a DataFrame or numpy array to plot in Python), ``hand_3d_output`` and
 skeleton joints, used inside forward_kinematics()). One Python-only helper:
 ``joint_names`` (the joint order of ``forward_kinematics`` arrays).
 
+Progress
+--------
+Long calls (``fit_grasp_models``, ``evaluate_loso``, ...) show R's progress bar
+when they take more than 2 s: in a terminal, one bar redrawn in place on standard
+output; when standard output is not a terminal (redirected to a log, a notebook,
+pytest), none. R's options decide after that, e.g.
+``handmotion._bridge.r().r("options(progressr.enable = FALSE)")`` for none at all.
+``reproduce_thesis()`` prints one line per step with the time left (``progress=False``
+for none).
+
 Names R removed before its first release (``?handmotion-renamed``) are not kept as
 aliases: asking for one raises an ``AttributeError`` that names the replacement.
 """
