@@ -53,13 +53,20 @@ with_progress_shown <- function(expr) {
 # already counting (progressr draws one bar at a time: the outermost long
 # step counts, the steps inside it do not).
 hm_progressor <- function(steps, envir = parent.frame()) {
-  if (!progress_wanted() || isTRUE(progress_state$active) || steps < 1) return(function(...) invisible(NULL))
+  if (!progress_wanted() || isTRUE(progress_state$active) || steps < 1) return(progress_noop)
   progress_state$active <- TRUE
   # (the release function itself goes into the caller's on.exit, as withr's
   # defer() does it)
   do.call(base::on.exit, list(as.call(list(progress_release)), add = TRUE), envir = envir)
   progressr::progressor(steps = steps, envir = envir)
 }
+
+# The progressor that counts nothing. Top-level (its environment is the
+# namespace) because progressors travel to future workers with every chunk:
+# a closure made inside hm_progressor() would carry its frame along, and with
+# it the caller's (the whole data set and every type's part, serialised into
+# each chunk: issue 43, where two workers took twice the time of one).
+progress_noop <- function(...) invisible(NULL)
 
 progress_state <- new.env(parent = emptyenv())
 progress_state$active <- FALSE

@@ -97,3 +97,16 @@ test_that("a fold on a worker counts nothing of its own: one step per fold reach
     progression = function(p) ids <<- c(ids, p$progressor_uuid))))
   expect_length(unique(ids), 1L)
 })
+
+test_that("a progressor carries nothing of its caller to the workers (issue 43)", {
+  # progressors travel with every chunk of future_mapply(): one that closed
+  # over its caller's frame shipped the whole data set to each worker
+  shipped <- function(progress) {
+    big <- numeric(1e6)   # 8 MB in the caller's frame
+    withr::local_options(handmotion.progress = progress)
+    p <- hm_progressor(3)
+    length(serialize(p, NULL))
+  }
+  expect_lt(shipped(FALSE), 1e5)
+  expect_lt(shipped(TRUE), 1e5)
+})
