@@ -9,8 +9,15 @@
 # machine). With BENCH_PREV_LIB=<library> the same runs of the build
 # installed there (e.g. the previous release) are made beside, in turn.
 #
-# FAILS (non-zero exit) when two workers are clearly slower than one: the
-# best two-worker time above 1.1 times the best sequential time. Quick mode
+# FAILS (non-zero exit) when two workers clearly cannot pay: their CPU (main
+# process and both workers, median of the repetitions) at 1.9 times the
+# sequential fit's or more (two cores at best halve the time, so a path
+# that doubles the work is slower than one core whatever the load: issue
+# 43's regression measured 1.9-2.0), or, on a machine quiet enough for
+# elapsed times to mean something (load average below 1.5 on 2 cores
+# during the runs), the best two-worker time above 1.1 times the best
+# sequential time; on a busy machine the elapsed ratio is printed, not
+# judged. Either way, other models on two workers fail. Quick mode
 # (CI): 1x only, two repetitions each; 1x is the smallest size at which
 # two workers must win (about 8 s of fitting sequentially on a quiet machine).
 # Run from the repository root: Rscript bench/bench-parallel.R
@@ -19,6 +26,7 @@ source("bench/_common.R")
 sizes <- bq(c("1x" = 30, "10x" = 300), c("1x" = 30))
 reps <- bq(3L, 2L)
 allowed <- 1.1
+cpu_allowed <- 1.9
 
 # One build's runs, in a fresh R process (callr) whose library path puts
 # `lib` first: a data frame of size, mode, rep, elapsed, main and worker CPU.
@@ -92,14 +100,16 @@ for (b in names(builds)) for (sz in names(sizes)) {
   cpu_ratio <- median(d$main_cpu[d$mode == "2 workers"] + d$worker_cpu[d$mode == "2 workers"]) /
     median(d$main_cpu[d$mode == "sequential"])
   same <- all(d$same[d$mode == "2 workers"])
-  cat(sprintf("%s build, %s: best of %d: sequential %.1f s, 2 workers %.1f s: ratio %.2f (goal 0.62 or less; fails above %.1f); CPU 2 workers / sequential %.2f; main process %.1f s CPU on 2 workers; same models: %s\n",
-              b, sz, reps, best_seq, best_par, ratio, allowed, cpu_ratio,
+  cat(sprintf("%s build, %s: best of %d: sequential %.1f s, 2 workers %.1f s: ratio %.2f (goal 0.62 or less; fails above %.1f on a quiet machine); CPU 2 workers / sequential %.2f (fails at %.1f); main process %.1f s CPU on 2 workers; same models: %s\n",
+              b, sz, reps, best_seq, best_par, ratio, allowed, cpu_ratio, cpu_allowed,
               median(d$main_cpu[d$mode == "2 workers"]), same))
   if (b == "this") {
     bench_record(paste0("fit ", sz, ": 2 workers / sequential (best of ", reps, ")"), ratio, "x")
     bench_record(paste0("fit ", sz, ": CPU of 2 workers / sequential"), cpu_ratio, "x")
     bench_record(paste0("fit ", sz, ": sequential, best"), best_seq, "s")
-    if (ratio > allowed || !same) verdict <- FALSE
+    quiet <- max(d$load) < 1.5
+    if (!quiet) cat(sprintf("  (elapsed ratio not judged: load average up to %.1f on 2 cores during the runs)\n", max(d$load)))
+    if (cpu_ratio >= cpu_allowed || (quiet && ratio > allowed) || !same) verdict <- FALSE
   }
 }
 if (nzchar(prev)) for (sz in names(sizes)) {
@@ -110,6 +120,6 @@ if (nzchar(prev)) for (sz in names(sizes)) {
 }
 cat(sprintf("load average at the end %s\n", format(load_avg())))
 if (!verdict) {
-  cat("bench-parallel: FAILED: two workers are slower than one (or gave other models)\n")
+  cat("bench-parallel: FAILED: two workers cost as much CPU as two sequential fits, or are slower than one on a quiet machine, or gave other models\n")
   quit(status = 1)
 }
