@@ -10,8 +10,10 @@
 #' whatever [future::plan()] the user has set (sequentially by default).
 #' A progress bar (one step per type, through `progressr`, so it works from
 #' future workers; its look follows [progressr::handlers()]) appears when the
-#' fit takes more than 2 s; `options(handmotion.progress = FALSE)` turns it
-#' off. A type whose fit fails with a handmotion error (for example too few
+#' fit takes more than 2 s, where progressr's conventions say: in interactive
+#' sessions, or in scripts when you set `options(progressr.enable = TRUE)` or
+#' chose handlers (never in a captured log by default);
+#' `options(handmotion.progress = FALSE)` turns it off. A type whose fit fails with a handmotion error (for example too few
 #' usable recordings) stays in the set as a failed model (class
 #' `grasp_model_failed`, with the error's message and class), like a null
 #' model in a fable, instead of stopping the others: `print()` and `summary()`

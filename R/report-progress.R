@@ -11,9 +11,18 @@ report_step_signal <- function(label) {
   rlang::signal("", class = "handmotion_report_step", label = label)
 }
 
+# Signalled by reproduce_thesis() at every update of its printer (a step, a
+# progress step, a chunk; printed or not) with the time so far and the
+# estimate of the time left (NA when none is made): nothing happens unless
+# someone listens (bench/bench-eta.R does, to judge the estimates).
+
 # Signalled by every chunk of the report as it starts (a knitr chunk hook
 # that reproduce_thesis() sets while it renders): after the last step, the
 # remaining chunks (tables, figures, the page) are the work left.
+report_estimate_signal <- function(so_far, left, event) {
+  rlang::signal("", class = "handmotion_report_estimate", so_far = so_far, left = left, event = event)
+}
+
 report_chunk_signal <- function(label) {
   labels <- knitr::all_labels()
   rlang::signal("", class = "handmotion_report_chunk", label = label,
@@ -104,13 +113,14 @@ report_step_kinds <- function(steps) {
 # seconds. The time left comes from report_eta(), fed by `clock` (seconds);
 # `trace`, if a function, is called with the time so far, the estimate of
 # the time left (NA when none is made) and the event (a step, a progress
-# step, a chunk) at every update, printed or not: bench/bench-eta.R
-# compares them with the real time left. `pace` measures the machine's
-# pace at begin() (machine_pace(); tests feed a fixed one), which scales the
-# cost model's first estimate and is said in the first line.
+# step, a chunk) at every update, printed or not: reproduce_thesis() passes
+# report_estimate_signal(), whose conditions bench/bench-eta.R catches to
+# compare the estimates with the real time left. `pace` measures the
+# machine's pace at begin() (machine_pace(); tests feed a fixed one), which
+# scales the cost model's first estimate and is said in the first line.
 report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
                             clock = function() proc.time()[["elapsed"]],
-                            trace = getOption("handmotion.progress_trace"), pace = machine_pace) {
+                            trace = NULL, pace = machine_pace) {
   now <- clock
   start <- now()
   say <- function(...) if (enabled) cat(..., "\n", sep = "", file = out)

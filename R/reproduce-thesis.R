@@ -131,11 +131,13 @@ reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, los
                  loso_folds = if (is.null(settings$loso_folds)) 0L else settings$loso_folds,
                  grasps = settings$grasps, output_dir = output_dir)
   show <- progress && progress_wanted()
-  bar <- report_progress(show)
+  bar <- report_progress(show, trace = report_estimate_signal)
   bar$begin(settings)
   # the long calls inside count their steps (progressr) for this printer
   # instead of drawing bars of their own; every chunk says it starts
-  old_opts <- options(handmotion.progress_listener = TRUE, progressr.enable = show)
+  # (progressr.enable: with the lines off, the progressors count nothing)
+  local_progress_listener()
+  old_opts <- options(progressr.enable = show)
   on.exit(options(old_opts), add = TRUE)
   old_hook <- knitr::knit_hooks$get("handmotion_chunk")
   knitr::knit_hooks$set(handmotion_chunk = function(before, options, envir) {

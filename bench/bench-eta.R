@@ -18,17 +18,20 @@ events <- data.frame(t = numeric(), left = numeric(), event = character(), cpu =
 # CPU seconds of this process and its finished children (the multicore
 # workers, pandoc): the cost model is in CPU seconds (R/report-progress.R)
 cpu_now <- function() sum(proc.time()[c("user.self", "sys.self", "user.child", "sys.child")], na.rm = TRUE)
-# every estimate the printer makes (R/report-progress.R), and every event
-# (saved with BENCH_ETA_EVENTS=file.rds, to replay them through report_eta())
-options(handmotion.progress = TRUE,
-        handmotion.progress_trace = function(so_far, left, event) {
-          events[nrow(events) + 1L, ] <<- list(so_far, left, event, cpu_now())
-          if (!is.na(left)) log[nrow(log) + 1L, ] <<- c(so_far, left)
-        })
+# every estimate the printer makes (R/report-progress.R: signalled as
+# handmotion_report_estimate conditions), and every event (saved with
+# BENCH_ETA_EVENTS=file.rds, to replay them through report_eta())
+options(handmotion.progress = TRUE)
+trace <- function(e) {
+  events[nrow(events) + 1L, ] <<- list(e$so_far, e$left, e$event, cpu_now())
+  if (!is.na(e$left)) log[nrow(log) + 1L, ] <<- c(e$so_far, e$left)
+}
 out <- tempfile("report")
 load0 <- load_avg()
 cpu0 <- proc.time()
-lines <- utils::capture.output(html <- do.call(reproduce_thesis, c(list(out), design)), type = "message")
+lines <- utils::capture.output(html <- withCallingHandlers(do.call(reproduce_thesis, c(list(out), design)),
+                                                           handmotion_report_estimate = trace),
+                               type = "message")
 cpu <- proc.time() - cpu0
 load1 <- load_avg()
 # each step's time against the cost model (on 2 workers) it started from
