@@ -18,10 +18,11 @@ cat(sprintf("%s; load average %s on %d cores\n\n", bench_build, load_avg(), para
 
 rows <- list()
 # One row of the table: the figure, ours, the published one (if any) and the goal.
-report <- function(figure, value, unit, published = NA, goal = NA, better = c("higher", "lower")) {
+report <- function(figure, value, unit, published = NA, goal = NA, better = c("higher", "lower"),
+                   shown = figure) {
   better <- match.arg(better)
   met <- if (is.na(goal)) NA else if (better == "higher") value >= goal else value <= goal
-  rows[[length(rows) + 1L]] <<- data.frame(figure = figure, ours = value, unit = unit,
+  rows[[length(rows) + 1L]] <<- data.frame(figure = shown, ours = value, unit = unit,
                                            published = published, goal = goal,
                                            met = met, stringsAsFactors = FALSE)
   bench_record(figure, value, unit)
@@ -29,6 +30,14 @@ report <- function(figure, value, unit, published = NA, goal = NA, better = c("h
 timed <- function(expr) {
   t <- system.time(value <- force(expr))
   list(value = value, elapsed = t[["elapsed"]], cpu = t[["user.self"]] + t[["sys.self"]])
+}
+# A timing row: the elapsed time is judged against the goal; the CPU time of
+# this process is said beside it (on a busy machine elapsed time is inflated;
+# with workers, their CPU is not in this process's).
+report_time <- function(figure, t, goal = NA) {
+  report(figure, t$elapsed, "s", goal = goal, better = "lower",
+         shown = sprintf("%s (CPU %.2f s)", figure, t$cpu))
+  bench_record(paste(figure, "CPU"), t$cpu, "s")
 }
 
 # --- reading ------------------------------------------------------------------
@@ -40,7 +49,7 @@ cat(sprintf("flexglove: %d recordings, %d channels, %d labels, participants %s; 
             length(g), length(g$dofs), length(unique(g$meta$grasp)),
             paste(sort(unique(g$meta$subject)), collapse = "/"), rd$elapsed))
 report("recordings read (of 626)", length(g), "n", goal = 626)
-report("read 626 files", rd$elapsed, "s")
+report_time("read 626 files", rd)
 
 # --- segmentation ---------------------------------------------------------------
 fm <- timed(find_motion(g))
@@ -77,7 +86,7 @@ report("onset MAE vs marks (resampled to 33.3 Hz)",
        mean(abs(m$start[at] - mapply(grid_frame, marked, marks$onset))), "frames")
 report("end MAE vs marks (resampled to 33.3 Hz)",
        mean(abs(m$end[at] - mapply(grid_frame, marked, marks$end))), "frames")
-report("find_motion(), 626 recordings", fm$elapsed, "s")
+report_time("find_motion(), 626 recordings", fm)
 
 # --- models: alignment keeps the recordings, fitting is fast ---------------------
 ft <- timed(fit_grasp_models(g, seed = 1))
@@ -85,16 +94,15 @@ ms <- ft$value
 s <- summary(ms)
 report("recordings used by the thesis model", sum(s$n_used) / sum(s$n_input), "fraction",
        goal = 0.95)
-report("fit_grasp_models(), flexglove", ft$elapsed, "s", goal = 3, better = "lower")
+report_time("fit_grasp_models(), flexglove", ft, goal = 3)
 
 # a stand-in for the second glove: 168 recordings of 23 raw channels, about
 # 380 frames at 100 Hz (1.4 s of rest), one person, six objects
 wide <- wide_glove(bq(6, 3), bq(28, 8))
 wide_chan <- length(wide$dofs)
 fw <- timed(fit_grasp_models(wide, seed = 1))
-report(sprintf("fit_grasp_models(), %d x %d ch x %.0f frames (simulated)", length(wide), wide_chan,
-               mean(wide$meta$n_frames)), fw$elapsed, "s", goal = if (length(wide) >= 168) 3 else NA,
-       better = "lower")
+report_time(sprintf("fit_grasp_models(), %d x %d ch x %.0f frames (simulated)", length(wide), wide_chan,
+                    mean(wide$meta$n_frames)), fw, goal = if (length(wide) >= 168) 3 else NA)
 
 # --- classifiers: leave one participant out ------------------------------------
 published <- c(fpca = NA, last_frame = NA, discriminant = NA, weighted_fpca = NA)
@@ -110,14 +118,14 @@ for (method in c("fpca", "last_frame", "discriminant", "weighted_fpca")) {
   for (k in seq_len(nrow(ps))) {
     report(sprintf("  %s, held-out %s", method, ps$subject[k]), ps$accuracy[k], "fraction")
   }
-  report(sprintf("evaluate_loso(method = '%s')", method), ev$elapsed, "s", goal = 10, better = "lower")
+  report_time(sprintf("evaluate_loso(method = '%s')", method), ev, goal = 10)
 }
 er <- timed(evaluate_early_recognition(g, ms = c(300, 1000, 3000), fractions = 1))
 acc_at <- function(scale, value) er$value$accuracy[er$value$scale == scale & er$value$value == value]
 report("LOPO accuracy, recogniser (whole recording)", acc_at("fraction", 1), "fraction")
 report("  recogniser after 300 ms of motion", acc_at("ms", 300), "fraction")
 best <- max(best, acc_at("fraction", 1))
-report("evaluate_early_recognition()", er$elapsed, "s", goal = 15, better = "lower")
+report_time("evaluate_early_recognition()", er, goal = 15)
 report("LOPO accuracy, best classifier", best, "fraction", published = 0.80, goal = 0.85)
 report("  published CNN-BiLSTM (window-level, optimistic)", NA, "fraction", published = 0.695)
 
