@@ -92,7 +92,7 @@ test_that("every R block of the README runs on its own, in a fresh session", {
   skip_if_not_installed("pkgload")
   skip_if_not(rmarkdown::pandoc_available("1.12.3"), "pandoc is not available (reproduce_thesis())")
   blocks <- substitute_readme(readme_blocks(readme_path(), "r"), readme_substitutions)
-  expect_gte(length(blocks), 3L)
+  expect_gte(length(blocks), 4L)
   pkg <- normalizePath(testthat::test_path("..", ".."))
   # every block starts by attaching the package: none leans on one before it
   for (b in blocks) expect_match(b, "^library\\(handmotion\\)")
@@ -109,7 +109,9 @@ test_that("every R block of the README runs on its own, in a fresh session", {
   expect_true(all(c("g", "train", "held_out", "p") %in% second$objects))
   # the stream's probabilities after the last frame
   expect_equal(sum(second$p), 1, tolerance = 1e-8)
-  expect_true(all(c("raw", "deg") %in% ran[[3]]$objects))
+  # the real recordings: read, segmented, fitted and evaluated
+  expect_true(all(c("g", "ms") %in% ran[[3]]$objects))
+  expect_true(all(c("raw", "deg") %in% ran[[4]]$objects))
 })
 
 test_that("the README's API table lists every export, and its count is the number of exports", {
