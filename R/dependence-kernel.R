@@ -11,7 +11,8 @@
 # at random, add Gaussian noise of covariance h^2 S, with S the scores'
 # covariance shrunk towards its diagonal (Schafer and Strimmer 2005, the
 # copula's rule) so it is invertible with 25-65 scores and 40-270
-# recordings. The bandwidth h is chosen on the training scores alone, by
+# recordings; the draw is shrunk towards the mean so its covariance stays the
+# scores' own (draw_kernel_vectors()). The bandwidth h is chosen on the training scores alone, by
 # leave-one-out likelihood cross-validation over a grid (Silverman's
 # normal-reference rule assumes one Gaussian and oversmooths clusters: with
 # d = 25 scores and n = 40 it gives h = 0.82, wider than the clusters).
@@ -82,10 +83,16 @@ kernel_bandwidth <- function(X, R, sd, grid = kernel_bandwidth_grid) {
   list(h = grid[best], loglik = ll[best], rule = "loo_likelihood")
 }
 
-# n draws of the joint score matrix (n x D) from a kernel model: a training
-# vector at random plus N(0, h^2 S) noise, from the current RNG stream.
+# n draws of the joint score matrix (n x D) from a kernel model, from the
+# current RNG stream: a training vector at random plus N(0, h^2 S) noise,
+# shrunk towards the training mean by 1 / sqrt(1 + h^2) (Silverman 1986,
+# section 6.4.1), so the draws keep the scores' covariance instead of
+# inflating it by 1 + h^2 (half as much again at h = 0.7: on the simulated
+# data the plain smoothed bootstrap's MMD was 1.6 times real-vs-real).
 draw_kernel_vectors <- function(kern, n) {
   D <- ncol(kern$scores)
   pick <- sample.int(nrow(kern$scores), n, replace = TRUE)
-  kern$scores[pick, , drop = FALSE] + matrix(stats::rnorm(n * D), n, D) %*% kern$root
+  m <- colMeans(kern$scores)
+  X <- kern$scores[pick, , drop = FALSE] - rep(m, each = n)
+  rep(m, each = n) + (X + matrix(stats::rnorm(n * D), n, D) %*% kern$root) / sqrt(1 + kern$bandwidth^2)
 }

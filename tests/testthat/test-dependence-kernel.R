@@ -44,14 +44,17 @@ test_that("the kernel sampler keeps three planted clusters a single Gaussian blu
   }
 })
 
-test_that("the kernel density reproduces the scores' mean and spreads them by h^2 S", {
+test_that("the kernel density reproduces the scores' mean and covariance", {
   pc <- planted_clusters(d = 2)
   kd <- kernel_density(pc$S)
   set.seed(3)
   V <- draw_kernel_vectors(kd, 40000)
   expect_equal(colMeans(V), colMeans(pc$S), tolerance = 0.05, ignore_attr = TRUE)
-  # the draws' covariance is the sample's (divisor n) plus the kernel's
-  want <- stats::cov(pc$S) * (nrow(pc$S) - 1) / nrow(pc$S) + crossprod(kd$root)
+  # the draws' covariance is the sample's (divisor n) plus the kernel's,
+  # shrunk by 1 + h^2: the sample's own, as the kernel's is the shrunk sample
+  # covariance
+  want <- (stats::cov(pc$S) * (nrow(pc$S) - 1) / nrow(pc$S) + crossprod(kd$root)) / (1 + kd$bandwidth^2)
+  expect_equal(diag(stats::cov(V)), diag(stats::cov(pc$S)), tolerance = 0.06, ignore_attr = TRUE)
   expect_equal(stats::cov(V), want, tolerance = 0.05, ignore_attr = TRUE)
   # a score without spread stays put
   S <- cbind(pc$S, s3 = 2)
