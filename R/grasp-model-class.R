@@ -20,8 +20,10 @@ new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, ar
                 timing = timing)
   model$sampler <- build_sampler(model)
   model$dependence <- list(type = settings$dependence,
-                           copula = if (settings$dependence == "copula") fit_score_copula(model),
-                           kernel = if (settings$dependence == "kernel") fit_score_kernel(model))
+                           copula = if (settings$dependence == "copula") fit_score_copula(model))
+  # only a kernel model carries the kernel element (an independent or copula
+  # model is the same list as before the kernel model existed)
+  if (settings$dependence == "kernel") model$dependence$kernel <- fit_score_kernel(model)
   model$limits <- limits
   # the labels the model was fitted among (its own is `grasp`) and the glove
   # of its recordings, so generated grasps carry both
