@@ -136,8 +136,10 @@
 #'   bandwidth `h` maximises the leave-one-out likelihood of the training
 #'   vectors (over 0.05 to 1.5; print() shows it). It takes the copula
 #'   model's defaults (see Defaults). On flexglove by participant folds its
-#'   generated grasps are nearer the held-out participant (MMD 1.17 times
-#'   real-vs-real, seeds 1-3, against 1.31 for the copula model; see NEWS).
+#'   generated grasps are nearer the held-out participant (MMD 1.22 times
+#'   real-vs-real, seeds 1-3, against 1.31 for the copula model;
+#'   `vignette("natural-grasps")`); on the simulated data it scores about as
+#'   the copula model does.
 #' @param mixture_guard `"bic"` keeps a mixture of `mixture_components` only if every
 #'   component holds at least `max(2 (d + 1), 0.05 n)` of the `n` recordings
 #'   and its BIC beats one Gaussian's; otherwise one Gaussian replaces it
@@ -202,6 +204,9 @@
 #' # fingers that move together
 #' mc <- fit_grasp_model(g, seed = 1, dependence = "copula")
 #' mc
+#' # the joint scores from a kernel density on the recordings' own (keeps clusters)
+#' mk <- fit_grasp_model(g, seed = 1, dependence = "kernel")
+#' mk
 fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, mixture_components = NULL,
                             engine = c("fast", "reference"), overlong = c(iqr_mult = 3, median_mult = 1.5),
                             warping = NULL, max_stall = 0.25, seed = 1,
