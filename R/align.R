@@ -99,6 +99,15 @@ dtw_pair_reference <- function(x, template, window) {
 #' two more iterations; at most five rounds of dropping). If more than half of
 #' the recordings are flagged at once, the template itself is suspect, so only
 #' the worst is dropped and DBA restarts from the linear mean of the rest.
+#' With `degenerate_warps = "constrain"` (default) the flagged recordings
+#' are then aligned again, one by one, to that final template by DTW under a
+#' slope constraint (local slopes between 1/3 and 3, the dtw package's
+#' `symmetricP05`: a frame is held over at most three template frames, while
+#' the recording may shift by any amount), or linearly if no such path exists,
+#' and kept; `"drop"` (the thesis) leaves them out. When more than half of
+#' the recordings stall at once (long rests and holds: the template itself
+#' holds still), `"constrain"` aligns the whole type by slope-constrained DBA
+#' from the linear mean instead of the rounds of restarts (without `window`).
 #'
 #' **Fallback**: if DTW fails (an error, e.g. non-finite values or no path
 #' within `window`, a non-finite template, or fewer than two recordings
@@ -133,14 +142,22 @@ dtw_pair_reference <- function(x, template, window) {
 #'   between subjects and objects are not mistaken for timing (DTW on raw
 #'   angles then holds recordings still, a singular warp). `"raw"`: the
 #'   angles as recorded. Either way the warped recordings are in data units.
+#' @param degenerate_warps `"constrain"` keeps degenerate recordings with a
+#'   slope-constrained or linear warp, `"drop"` drops them (the thesis; see Degenerate
+#'   warps).
 #' @return An object of class `grasp_alignment`, a list with `warped` (array
 #'   `[n, L, p]`, dimnames ids, NULL, DoFs), `warps` (`n x L` matrix, original
 #'   frame per template frame), `template` (`L x p`), `target_length`, `ids`,
 #'   `n_frames` (original lengths, named), `method` (`"dtw"` or `"linear"`),
 #'   `fallback_reason` (`NA` unless linear), `degenerate` (data frame `id`,
-#'   `stall`, `n_frames` of the dropped recordings; they are not in `warped`),
-#'   `dropped_warps` (their warping functions), `iterations`, `converged`,
+#'   `stall`, `n_frames`, `fallback` of the recordings with a degenerate DTW
+#'   warp: `"dropped"` ones are not in `warped`, `"slope"` and `"linear"`
+#'   ones are, with that warp), `dropped_warps` (their degenerate DTW
+#'   warping functions), `iterations`, `converged`,
 #'   `changes` (relative template change at each iteration), `engine`,
+#'   `degenerate_warps`, `step_pattern` (`"symmetric2"`, or `"symmetricP05"`
+#'   when most warps stalled at once and the whole type was aligned by
+#'   slope-constrained DBA),
 #'   `distance` (DTW cost per kept recording), `max_stall`, `features`,
 #'   `feature_template` (the DBA template in the space DTW compared; with
 #'   `features = "raw"` it equals `template`, otherwise `template` is the mean
@@ -160,10 +177,11 @@ dtw_pair_reference <- function(x, template, window) {
 #' @noRd
 align_recordings <- function(recordings, target_length = NULL, engine = c("fast", "reference"),
                              max_iter = 10, tol = 1e-3, max_stall = 0.25, window = NULL,
-                             features = c("shape", "raw")) {
+                             features = c("shape", "raw"), degenerate_warps = c("constrain", "drop")) {
   call <- rlang::caller_env()
   engine <- check_choice(engine, arg = "engine", call = call)
   features <- check_choice(features, arg = "features", call = call)
+  degenerate_warps <- check_choice(degenerate_warps, arg = "degenerate_warps", call = call)
   if (inherits(recordings, "grasps")) recordings <- recordings$recordings
   recs <- align_check_recordings(recordings, call)
   n_frames <- vapply(recs, nrow, integer(1))
@@ -174,7 +192,7 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
   overlong_check_mult(max_stall, "max_stall", call)
   window <- check_number(window, "window", min = 0, allow_null = TRUE, call = call)
 
-  al <- align_checked(recs, L, engine, max_iter, tol, max_stall, window, features)
+  al <- align_checked(recs, L, engine, max_iter, tol, max_stall, window, features, degenerate_warps)
   # degenerate data (one-frame or non-finite recordings, a zero window, the
   # linear fallback) is said at the top level, not only deep in the object
   al$degenerate_data <- alignment_degeneracies(al, recs, window)
@@ -184,7 +202,8 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
 
 # The alignment of checked recordings (align_recordings() without its checks
 # and warnings).
-align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, features) {
+align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, features,
+                          degenerate_warps = "constrain") {
   ids <- names(recs)
   n_frames <- vapply(recs, nrow, integer(1))
   if (length(recs) < 2L) {
@@ -193,8 +212,13 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
   }
   norm <- if (features == "shape") shape_features(recs) else NULL
   feats <- if (is.null(norm)) recs else norm$features
-  fit <- tryCatch(dba_with_drops(feats, L, engine, max_iter, tol, max_stall, window),
+  constrain <- degenerate_warps == "constrain"
+  fit <- tryCatch(dba_with_drops(feats, L, engine, max_iter, tol, max_stall, window,
+                                 stop_if_suspect = constrain && is.null(window)),
                   error = function(e) e)
+  if (!inherits(fit, "error") && !is.null(fit$suspect)) {
+    fit <- tryCatch(slope_dba_fit(fit, feats, L, engine, max_iter, tol), error = function(e) e)
+  }
   if (inherits(fit, "error")) {
     return(align_linear_fallback(recs, L, engine, reason = conditionMessage(fit)))
   }
@@ -203,6 +227,9 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
       recs, L, engine,
       reason = sprintf("fewer than 2 recordings left after dropping %d degenerate warp(s)",
                        nrow(fit$degenerate))))
+  }
+  if (constrain && is.null(fit$step_pattern) && nrow(fit$degenerate) > 0L) {
+    fit <- constrain_degenerate(fit, feats, L, engine, max_stall)
   }
   kept <- fit$kept
   dofs <- colnames(recs[[1]])
@@ -232,7 +259,8 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
     dropped_warps = fit$dropped_warps, iterations = fit$iterations,
     converged = fit$converged, changes = fit$changes, engine = engine,
     distance = stats::setNames(fit$run$distance, ids[kept]), max_stall = max_stall,
-    features = features, feature_template = feature_template)
+    features = features, feature_template = feature_template,
+    degenerate_warps = degenerate_warps, step_pattern = fit$step_pattern %||% "symmetric2")
 }
 
 # Per recording and DoF: centre on the midpoint of the start and end postures
@@ -290,8 +318,9 @@ new_grasp_alignment <- function(...) {
 # Recordings still flagged after the last round are dropped without a further
 # refinement.
 dba_with_drops <- function(recs, L, engine, max_iter, tol, max_stall, window,
-                           max_rounds = 5L, refine_iter = 2L) {
+                           max_rounds = 5L, refine_iter = 2L, stop_if_suspect = FALSE) {
   kept <- seq_along(recs)
+  suspect <- NULL
   degenerate <- empty_degenerate()
   dropped_warps <- matrix(numeric(0), 0L, L)
   iterations <- 0L
@@ -306,10 +335,22 @@ dba_with_drops <- function(recs, L, engine, max_iter, tol, max_stall, window,
     bad <- stall >= 2L & stall > max_stall * L
     if (!any(bad)) break
     restart <- sum(bad) > length(kept) / 2
+    if (restart && stop_if_suspect) {
+      # (degenerate_warps = "constrain": the caller aligns the whole type
+      # by slope-constrained DBA instead of restarting, see slope_dba_fit())
+      suspect <- data.frame(id = names(recs)[kept[bad]], stall = stall[bad],
+                            n_frames = vapply(recs[kept[bad]], nrow, integer(1)), fallback = "slope",
+                            stringsAsFactors = FALSE)
+      bw <- run$warps[bad, , drop = FALSE]
+      rownames(bw) <- names(recs)[kept[bad]]
+      dropped_warps <- rbind(dropped_warps, bw)
+      break
+    }
     if (restart) bad <- stall == max(stall)
     degenerate <- rbind(degenerate, data.frame(
       id = names(recs)[kept[bad]], stall = stall[bad],
-      n_frames = vapply(recs[kept[bad]], nrow, integer(1)), stringsAsFactors = FALSE))
+      n_frames = vapply(recs[kept[bad]], nrow, integer(1)), fallback = "dropped",
+      stringsAsFactors = FALSE))
     bw <- run$warps[bad, , drop = FALSE]
     rownames(bw) <- names(recs)[kept[bad]]
     dropped_warps <- rbind(dropped_warps, bw)
@@ -326,12 +367,67 @@ dba_with_drops <- function(recs, L, engine, max_iter, tol, max_stall, window,
   }
   rownames(degenerate) <- NULL
   list(run = run, kept = kept, degenerate = degenerate, dropped_warps = dropped_warps,
-       iterations = iterations, converged = run$converged, changes = changes)
+       iterations = iterations, converged = run$converged, changes = changes, suspect = suspect)
 }
 
 empty_degenerate <- function() {
   data.frame(id = character(0), stall = integer(0), n_frames = integer(0),
-             stringsAsFactors = FALSE)
+             fallback = character(0), stringsAsFactors = FALSE)
+}
+
+# Keep the recordings dba_with_drops() flagged as degenerate: each is
+# aligned again, alone, to the final template (estimated without them) by
+# slope-constrained DTW (dtw_slope_pair(), R/align-slope.R, which cannot
+# hold a frame still), or linearly if no such path exists (a recording less
+# than a third or more than three times the template's length) or it still
+# stalls. Returns `fit` with the recordings merged back in input order and
+# `degenerate$fallback` saying which warp each got ("slope" or "linear").
+constrain_degenerate <- function(fit, recs, L, engine, max_stall) {
+  template <- fit$run$template
+  flagged <- match(fit$degenerate$id, names(recs))
+  p <- ncol(template)
+  extra <- list(warped = array(0, c(length(flagged), L, p)), warps = matrix(0, length(flagged), L),
+                distance = rep(NA_real_, length(flagged)))
+  how <- character(length(flagged))
+  for (a in seq_along(flagged)) {
+    x <- recs[[flagged[a]]]
+    path <- tryCatch(dtw_slope_pair(x, template, engine), error = function(e) NULL)
+    r <- if (!is.null(path)) path_alignment(x, path, L)
+    if (!is.null(r)) {
+      st <- stall_lengths(r$warps)
+      if (st >= 2L && st > max_stall * L) r <- NULL
+    }
+    if (is.null(r)) {
+      wl <- linear_warp_function(nrow(x), L)
+      r <- list(warped = array(apply_warp(x, wl), c(1L, L, p)), warps = matrix(wl, 1L),
+                distance = NA_real_)
+      how[a] <- "linear"
+    } else {
+      how[a] <- "slope"
+    }
+    extra$warped[a, , ] <- r$warped[1L, , ]
+    extra$warps[a, ] <- r$warps[1L, ]
+    extra$distance[a] <- r$distance
+  }
+  all <- c(fit$kept, flagged)
+  ord <- order(all)
+  run <- fit$run
+  run$warped <- abind_first(run$warped, extra$warped)[ord, , , drop = FALSE]
+  run$warps <- rbind(run$warps, extra$warps)[ord, , drop = FALSE]
+  run$distance <- c(run$distance, extra$distance)[ord]
+  fit$run <- run
+  fit$kept <- all[ord]
+  fit$degenerate$fallback <- how
+  fit
+}
+
+# Two arrays [n1, L, p] and [n2, L, p] stacked along the first dimension.
+abind_first <- function(a, b) {
+  d <- dim(a)
+  out <- array(0, c(d[1] + dim(b)[1], d[2], d[3]))
+  out[seq_len(d[1]), , ] <- a
+  out[d[1] + seq_len(dim(b)[1]), , ] <- b
+  out
 }
 
 subset_run <- function(run, keep) {
@@ -512,6 +608,9 @@ print.grasp_alignment <- function(x, ...) {
     cat(sprintf("  method: DTW barycenter averaging (%s engine, %s features), %d iteration%s, %s\n",
                 x$engine, x$features, x$iterations, if (x$iterations == 1) "" else "s",
                 if (x$converged) "converged" else "not converged"))
+    if (identical(x$step_pattern, "symmetricP05")) {
+      cat("  most warps stalled at once: the whole type aligned by slope-constrained DTW\n")
+    }
   } else {
     cat(sprintf("  method: LINEAR warping (fallback: %s)\n", x$fallback_reason))
   }
@@ -520,12 +619,24 @@ print.grasp_alignment <- function(x, ...) {
   if (!is.null(notes)) notes <- notes[notes$class != "linear_fallback", , drop = FALSE]
   dg <- format_degenerate(notes)
   if (length(dg)) cat(dg, sep = "\n")
-  nd <- nrow(x$degenerate)
+  deg <- x$degenerate
+  # (alignments made before the fallback existed dropped them all)
+  how <- deg$fallback %||% rep("dropped", nrow(deg))
+  show_ids <- function(ids) {
+    paste0(paste(utils::head(ids, 5), collapse = ", "), if (length(ids) > 5) ", ..." else "")
+  }
+  nd <- sum(how == "dropped")
   if (nd > 0) {
-    shown <- utils::head(x$degenerate$id, 5)
-    cat(sprintf("  dropped %d degenerate warp%s (held still > %g L): %s%s\n", nd,
-                if (nd == 1) "" else "s", x$max_stall, paste(shown, collapse = ", "),
-                if (nd > 5) ", ..." else ""))
+    cat(sprintf("  dropped %d degenerate warp%s (held still > %g L): %s\n", nd,
+                if (nd == 1) "" else "s", x$max_stall, show_ids(deg$id[how == "dropped"])))
+  }
+  nc <- sum(how != "dropped")
+  if (nc > 0) {
+    nl <- sum(how == "linear")
+    cat(sprintf("  kept %d degenerate warp%s (held still > %g L) by a fallback: slope-constrained DTW%s: %s\n",
+                nc, if (nc == 1) "" else "s", x$max_stall,
+                if (nl > 0) sprintf(" (%d linear: no such path)", nl) else "",
+                show_ids(deg$id[how != "dropped"])))
   }
   invisible(x)
 }

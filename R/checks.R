@@ -73,7 +73,11 @@ check_choice <- function(x, choices = NULL, arg, call = rlang::caller_env()) {
   hint <- NULL
   if (is.character(x) && length(x) == 1L && !is.na(x)) {
     d <- utils::adist(x, choices, ignore.case = TRUE)[1, ]
-    if (min(d) <= max(2, nchar(x) %/% 3)) hint <- c(i = "Did you mean {.val {choices[which.min(d)]}}?")
+    # a guess only when one choice is nearest ("5.9" is as near to "5.1" as
+    # to "5.8": guessing one of them would mislead)
+    if (min(d) <= max(2, nchar(x) %/% 3) && sum(d == min(d)) == 1L) {
+      hint <- c(i = "Did you mean {.val {choices[which.min(d)]}}?")
+    }
   }
   hm_abort(c("{.arg {arg}} must be one of {.or {.val {choices}}}, not {describe_value(x)}.", hint),
            "bad_input", argument = arg, call = call)

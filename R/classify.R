@@ -47,7 +47,8 @@
 #' estimate.
 #'
 #' With many recordings (ten times the default data takes seconds) a progress
-#' bar, one step per model, appears after 2 s (through `progressr`;
+#' bar, one step per model, appears after 2 s (through `progressr`, in
+#' interactive sessions or when you set its handlers or `progressr.enable`;
 #' `options(handmotion.progress = FALSE)` turns it off).
 #'
 #' One-type data are not an error: with a single model every recording is

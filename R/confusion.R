@@ -372,7 +372,9 @@ autoplot.grasp_confusion <- function(object, type = "heatmap", normalise = FALSE
 # caption, so a 33-class heatmap stays readable; NULL when names are shown.
 confusion_key <- function(levels, lab) {
   if (identical(as.character(levels), as.character(lab))) return(NULL)
-  key <- paste(lab, levels)
+  # a label short enough to be its own abbreviation is written once ("ball",
+  # not "ball ball")
+  key <- ifelse(lab == levels, levels, paste(lab, levels))
   # pack whole entries into lines of at most ~80 characters: at the caption's
   # 9 points that is about 6 inches, narrower than the figures it goes in
   line <- cumsum(nchar(key) + 3L) %/% 80L

@@ -71,7 +71,9 @@
 #' generated grasps within), `stuck_channels` (glove channels that never
 #' change), `mixed_labels` (labels of which only some are Feix types),
 #' `guessed_glove` (raw counts with recognised channel names but no
-#' profile, drawn through a guessed map), `note` and `deprecated`.
+#' profile, drawn through a guessed map), `switch_unchanged` (a recording
+#' [segment_by_switch()] could not cut: its switch never changes), `note`
+#' and `deprecated`.
 #'
 #' From Python the error families are `BadInputError`, `BadFileError` and
 #' `FitFailedError`, all subclasses of `HandmotionError`; warnings arrive as
@@ -146,6 +148,7 @@ warning_families <- c(
   read_failures = NA, truncated_line = NA, unknown_header = NA, few_recordings = NA,
   model_failed = NA, projection_failed = NA, fold_failed = NA, skeleton_default_unit = NA,
   constant_channels = NA, no_limits = NA, stuck_channels = NA, mixed_labels = NA, guessed_glove = NA,
+  switch_unchanged = NA,
   note = NA, deprecated = NA
 )
 

@@ -16,7 +16,8 @@
 #' fitted from the whole set's moments minus the fold's, the fit
 #' [fit_grasp_recognizer()] would make on the fold's training recordings. A
 #' progress bar (one step per horizon, through `progressr`) appears after
-#' 2 s; `options(handmotion.progress = FALSE)` turns it off.
+#' 2 s (in interactive sessions, or when you set progressr's handlers or
+#' `progressr.enable`); `options(handmotion.progress = FALSE)` turns it off.
 #' The folds are those of [evaluate_loso()]: by subject with two or
 #' more subjects, else stratified folds of recordings (`split`); by default
 #' one fold per subject up to 30 subjects, and 30 seeded groups of subjects

@@ -66,7 +66,8 @@
 #' its held-out ones, and averages every measure over the folds.
 #'
 #' A progress bar (one step per grasp type, through `progressr`) appears
-#' after 2 s; `options(handmotion.progress = FALSE)` turns it off.
+#' after 2 s (in interactive sessions, or when you set progressr's handlers
+#' or `progressr.enable`); `options(handmotion.progress = FALSE)` turns it off.
 #'
 #' @param models A `grasp_models` set ([fit_grasp_models()]) or a named list
 #'   of them to compare (e.g. `list(thesis = m1, copula = m2)`); or a

@@ -33,7 +33,8 @@
 #'
 #' Folds run with `future.apply::future_lapply()` (set your own
 #' `future::plan()`; none is set here) with `future.seed = TRUE`, and show a
-#' progress bar, one step per fold, through `progressr` (after 2 s; its look
+#' progress bar, one step per fold, through `progressr` (after 2 s, in
+#' interactive sessions or when you set its handlers or `progressr.enable`; its look
 #' follows [progressr::handlers()]; `options(handmotion.progress = FALSE)`
 #' turns it off).
 #'
@@ -109,10 +110,9 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
   fold_results <- with_progress_shown({
     p <- hm_progressor(length(groups))
     future.apply::future_lapply(seq_along(groups), function(f) {
-      # inside a fold the package's long calls only count (a worker showing
-      # its own bar would swallow the fold's updates)
-      old <- options(handmotion.progress_listener = TRUE)
-      on.exit(options(old), add = TRUE)
+      # inside a fold the package's long calls count nothing: the fold is
+      # the step (on a worker, each inner fit would send its own steps back)
+      local_counted_outside()
       res <- run_fold(x, groups[[f]], method, fit_args)
       p(sprintf("fold %d of %d", f, length(groups)))
       res

@@ -251,6 +251,29 @@ stack_mixtures <- function(gmms, d) {
   list(cumw = cumw, mu = mu, root = root, p = p, k = k, d = d)
 }
 
+# Whether a stacked sampler (stack_mixtures()) still holds the mixtures
+# `gmms`: weights and means compared as stored, covariances through their
+# symmetric roots (root %*% root), so no eigen decomposition is redone (a few
+# microseconds per mixture, not the millisecond of a rebuild).
+sampler_matches <- function(gmms, st, tol = 1e-6) {
+  if (length(gmms) != st$p) return(FALSE)
+  close <- function(a, b) length(a) == length(b) && all(abs(a - b) <= tol * (1 + abs(b)))
+  cumw <- matrix(st$cumw, st$p, st$k)
+  mu <- array(st$mu, c(st$p, st$k, st$d))
+  root <- array(st$root, c(st$p, st$k, st$d, st$d))
+  for (j in seq_along(gmms)) {
+    g <- gmms[[j]]
+    kj <- length(g$weights)
+    if (!is.list(g) || kj > st$k || !close(cumw[j, seq_len(kj)], cumsum(g$weights) / sum(g$weights))) return(FALSE)
+    for (c in seq_len(kj)) {
+      r <- matrix(root[j, c, , ], st$d, st$d)
+      if (!close(mu[j, c, ], as.numeric(g$means[c, ])) ||
+          !close(as.numeric(r %*% r), as.numeric(g$covs[, , c]))) return(FALSE)
+    }
+  }
+  TRUE
+}
+
 # The raw draws of one batch from one model, by the native kernel: list(
 # recordings (unnamed n_new x p matrices with colnames = DoFs), n_frames,
 # beta (n x warp_ncomp), alpha (n x p x ncomp)).
@@ -349,6 +372,20 @@ validate_sampler <- function(model, call = rlang::caller_env()) {
   check_stack(smp$warp, 1L, "warp")
   fault <- fpca_shape_fault(model, smp$dofs$d)
   if (!is.null(fault)) bad(paste0(fault, ", as its sampler has"))
+  # the number of FPCs its settings state, as project() (and so predict())
+  # checks: an edited ncomp is refused here too, not drawn past
+  fault <- fpca_shape_fault(model)
+  if (!is.null(fault)) bad(paste0(fault, ", as its settings say"))
+  # the stored sampler was built from the mixtures at fitting: a mixture
+  # edited since would be ignored without a word, so it must still match
+  if (!is.null(model$sampler)) {
+    if (!sampler_matches(model$gmm, smp$dofs)) {
+      bad("its {.field gmm} mixtures were changed after fitting and no longer match its sampler")
+    }
+    if (!sampler_matches(list(model$warp$gmm), smp$warp)) {
+      bad("its {.field warp} mixture was changed after fitting and no longer matches its sampler")
+    }
+  }
   wf <- model$warp$fpca
   if (length(wf$mean) != L || length(wf$components) != L * smp$warp$d) {
     bad("its warp basis does not match its warp sampler")

@@ -29,7 +29,8 @@ prepare_alignment <- function(x, settings, engines, call) {
     # (the model records degenerate data itself, see model_degeneracies())
     aln <- tryCatch(
       withCallingHandlers(
-        align_recordings(recs, target_length = L, engine = engines$align, max_stall = settings$max_stall),
+        align_recordings(recs, target_length = L, engine = engines$align, max_stall = settings$max_stall,
+                         degenerate_warps = settings$degenerate_warps %||% "constrain"),
         handmotion_warning_degenerate = function(w) invokeRestart("muffleWarning")),
       error = function(e) e
     )
@@ -42,8 +43,26 @@ prepare_alignment <- function(x, settings, engines, call) {
     fallbacks <- add_fallback(fallbacks, "warping", NA_character_,
                               paste("linear warping:", (aln$fallback_reason %||% "unspecified")))
   }
-  deg <- aln$degenerate
-  if (!is.null(deg) && nrow(deg) > 0L) {
+  deg <- aln$degenerate %||% empty_degenerate()
+  # Only the recordings dropped by the thesis' rule are removed; those kept
+  # with a slope-constrained or linear warp (degenerate_warps = "constrain") are listed
+  # per recording (`kept_degenerate`) and as one fallback of the warping step.
+  how <- deg$fallback %||% rep("dropped", nrow(deg))
+  kept_degenerate <- deg[how != "dropped", c("id", "stall", "fallback"), drop = FALSE]
+  rownames(kept_degenerate) <- NULL
+  if (nrow(kept_degenerate)) {
+    nl <- sum(kept_degenerate$fallback == "linear")
+    fallbacks <- add_fallback(fallbacks, "degenerate_warp", NA_character_, sprintf(
+      "%d recording%s held still > %g L by DTW kept with a slope-constrained DTW warp%s: %s",
+      nrow(kept_degenerate), if (nrow(kept_degenerate) == 1L) "" else "s", aln$max_stall,
+      if (nl) sprintf(" (%d linear: no such path)", nl) else "", paste(kept_degenerate$id, collapse = ", ")))
+    if (identical(aln$step_pattern, "symmetricP05")) {
+      fallbacks <- add_fallback(fallbacks, "slope_warping", NA_character_,
+                                "most warps stalled at once: every recording aligned by slope-constrained DTW")
+    }
+  }
+  deg <- deg[how == "dropped", , drop = FALSE]
+  if (nrow(deg) > 0L) {
     removed <- rbind(removed, data.frame(id = as.character(deg$id),
                                          n_frames = meta$n_frames[match(deg$id, meta$id)],
                                          reason = "degenerate warp", detail = as.numeric(deg$stall),
@@ -52,7 +71,7 @@ prepare_alignment <- function(x, settings, engines, call) {
   ids <- dimnames(aln$warped)[[1]]
   if (is.null(ids)) ids <- setdiff(names(recs), removed$id)
   list(alignment = aln, ids = ids, removed = removed, fallbacks = fallbacks,
-       n_input = length(x$recordings))
+       n_input = length(x$recordings), kept_degenerate = kept_degenerate)
 }
 
 empty_removed <- function() {

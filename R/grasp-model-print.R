@@ -7,8 +7,10 @@ print.grasp_model <- function(x, ...) {
               length(x$dofs), x$settings$ncomp, x$settings$warp_ncomp,
               if (x$settings$warp_ncomp == 1) "" else "s", x$settings$mixture_components))
   rm <- table(factor(x$removed$reason, levels = c("overlong", "degenerate warp")))
-  cat(sprintf("  recordings: %d in, %d used (%d over-long, %d degenerate warps removed)\n",
-              x$n_input, x$n_used, rm[["overlong"]], rm[["degenerate warp"]]))
+  nk <- NROW(x$warping$degenerate)
+  cat(sprintf("  recordings: %d in, %d used (%d over-long, %d degenerate warps removed%s)\n",
+              x$n_input, x$n_used, rm[["overlong"]], rm[["degenerate warp"]],
+              if (nk) sprintf("; %d degenerate warp%s kept by a fallback", nk, if (nk == 1) "" else "s") else ""))
   cat(sprintf("  target length: %d frames at %g Hz; warping: %s%s\n", x$target_length, x$rate,
               x$warping$method, if (identical(x$settings$motion, "trim")) "; recordings trimmed to the motion" else ""))
   if (!is.null(x$glove) && any(x$glove$channels$stuck)) {

@@ -10,8 +10,10 @@
 #' whatever [future::plan()] the user has set (sequentially by default).
 #' A progress bar (one step per type, through `progressr`, so it works from
 #' future workers; its look follows [progressr::handlers()]) appears when the
-#' fit takes more than 2 s; `options(handmotion.progress = FALSE)` turns it
-#' off. A type whose fit fails with a handmotion error (for example too few
+#' fit takes more than 2 s, where progressr's conventions say: in interactive
+#' sessions, or in scripts when you set `options(progressr.enable = TRUE)` or
+#' chose handlers (never in a captured log by default);
+#' `options(handmotion.progress = FALSE)` turns it off. A type whose fit fails with a handmotion error (for example too few
 #' usable recordings) stays in the set as a failed model (class
 #' `grasp_model_failed`, with the error's message and class), like a null
 #' model in a fable, instead of stopping the others: `print()` and `summary()`
@@ -285,12 +287,21 @@ failed_types <- function(x) {
   } else {
     names(x)[check_positions(i, length(x), "model")]
   }
-  absent <- setdiff(keep, names(x))
-  if (length(absent)) {
-    hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input", argument = "i")
-  }
+  check_types_present(x, keep, "i", rlang::caller_env())
   new_grasp_models(unclass(x)[keep], seed = attr(x, "seed"), levels = attr(x, "levels"),
                    temperature = attr(x, "temperature"))
+}
+
+# Grasp types asked of a model set (`arg`) that it has no model for: an
+# error that lists the types it does have (the first eight, so a 33-type set
+# stays one line), since the user's next call needs one of them.
+check_types_present <- function(x, types, arg, call) {
+  absent <- setdiff(types, names(x))
+  if (!length(absent)) return(invisible(types))
+  have <- cli::cli_vec(names(x), list("vec-trunc" = 8))
+  hm_abort(c("No model for grasp type{?s} {.val {absent}} in this set.",
+             i = "It has models for {length(have)} type{?s}: {.val {have}}."),
+           "unknown_grasp", argument = arg, call = call)
 }
 
 # Fitted models chosen by grasp name or id, for generate(): every fitted one
@@ -307,11 +318,7 @@ select_models <- function(x, grasp, call) {
     return(fitted_models(x))
   }
   keep <- check_grasp_selection(grasp, "grasp", levels = model_set_levels(x), call = call)
-  absent <- setdiff(keep, names(x))
-  if (length(absent)) {
-    hm_abort("No model for grasp type{?s} {.val {absent}} in this set.", "bad_input",
-             argument = "grasp", call = call)
-  }
+  check_types_present(x, keep, "grasp", call)
   bad <- failed[failed$grasp %in% keep, , drop = FALSE]
   if (nrow(bad)) {
     hm_abort(c("The model of {.val {bad$grasp}} could not be fitted, so it cannot generate.",
@@ -368,7 +375,10 @@ print.grasp_models <- function(x, ...) {
 #' @param ... Unused.
 #' @return A data frame with columns `grasp_id`, `grasp`, `n_input`,
 #'   `n_used`, `n_overlong` (removed as over-long), `n_degenerate` (removed
-#'   for a degenerate warp), `target_length`, `warping` (`"dtw"` or
+#'   for a degenerate warp: `degenerate_warps = "drop"`, the thesis' rule),
+#'   `n_warp_fallback` (recordings whose DTW warp was degenerate, kept with a
+#'   slope-constrained or linear warp: `degenerate_warps = "constrain"`),
+#'   `target_length`, `warping` (`"dtw"` or
 #'   `"linear"`), `em_fallback` (the DoFs whose mixture fell back to a single
 #'   Gaussian, e.g. `"MCP3, DIP4"`, empty when none), `n_em_fallback`,
 #'   `constant_dofs`, `dependence` (`"independent"` or `"copula"`),
@@ -385,7 +395,8 @@ summary.grasp_models <- function(object, ...) {
   rows <- lapply(unclass(object), function(m) {
     if (inherits(m, "grasp_model_failed")) {
       return(data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n_input = NA_integer_, n_used = NA_integer_,
-                        n_overlong = NA_integer_, n_degenerate = NA_integer_, target_length = NA_integer_,
+                        n_overlong = NA_integer_, n_degenerate = NA_integer_, n_warp_fallback = NA_integer_,
+                        target_length = NA_integer_,
                         warping = NA_character_, em_fallback = NA_character_, n_em_fallback = NA_integer_,
                         constant_dofs = NA_character_, dependence = NA_character_, n_guarded = NA_integer_,
                         min_var = NA_real_, median_var = NA_real_, mean_var = NA_real_, max_var = NA_real_,
@@ -399,6 +410,7 @@ summary.grasp_models <- function(object, ...) {
     data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n_input = m$n_input, n_used = m$n_used,
                n_overlong = sum(m$removed$reason == "overlong"),
                n_degenerate = sum(m$removed$reason == "degenerate warp"),
+               n_warp_fallback = NROW(m$warping$degenerate),
                target_length = m$target_length, warping = m$warping$method,
                em_fallback = paste(em, collapse = ", "), n_em_fallback = length(em),
                constant_dofs = paste(const, collapse = ", "),
@@ -409,7 +421,8 @@ summary.grasp_models <- function(object, ...) {
   })
   out <- if (length(rows)) do.call(rbind, rows) else
     data.frame(grasp_id = integer(), grasp = character(), n_input = integer(), n_used = integer(),
-               n_overlong = integer(), n_degenerate = integer(), target_length = integer(),
+               n_overlong = integer(), n_degenerate = integer(), n_warp_fallback = integer(),
+               target_length = integer(),
                warping = character(), em_fallback = character(), n_em_fallback = integer(),
                constant_dofs = character(), dependence = character(), n_guarded = integer(),
                min_var = numeric(), median_var = numeric(),

@@ -18,7 +18,9 @@
 #' @param ... Not used.
 #' @return `start_recognition()`: an object of class `grasp_stream`.
 #'   `update()`: a named vector of class probabilities (summing to 1), with
-#'   attributes `frames` (seen so far) and `ms`.
+#'   attributes `frames` (seen so far) and `ms`, of class
+#'   `grasp_probabilities`: it prints with three decimals, `<0.001` and
+#'   `>0.999` beyond them; the stored numbers are the model's own.
 #' @seealso [fit_grasp_recognizer()], [evaluate_early_recognition()]
 #' @export
 #' @examples
@@ -27,7 +29,7 @@
 #' stream <- start_recognition(rec)
 #' r <- g$recordings[[1]]
 #' for (t in 1:10) p <- update(stream, r[t, ])
-#' round(p, 3)
+#' p  # three decimals; the stored values are the model's own
 #' stream
 start_recognition <- function(recognizer) {
   if (!inherits(recognizer, "grasp_recognizer")) {
@@ -68,7 +70,7 @@ update.grasp_stream <- function(object, frame, ...) {
     on <- if (nrow(st$pending) >= 3L) detect_onset(st$pending, rec$onset) else NA_integer_
     if (is.na(on)) {
       prior <- rep(1 / length(rec$classes), length(rec$classes))
-      return(structure(stats::setNames(prior, rec$classes), frames = 0L, ms = 0, motion = FALSE))
+      return(new_grasp_probabilities(stats::setNames(prior, rec$classes), frames = 0L, ms = 0, motion = FALSE))
     }
     st$waiting <- FALSE
     replay <- st$pending[on:nrow(st$pending), , drop = FALSE]
@@ -86,7 +88,7 @@ update.grasp_stream <- function(object, frame, ...) {
     st$probs <- softmax_rows(shrunk_lda_scores(rec$fits[[h]], matrix(f, 1L)))[1L, ]
   }
   probs <- st$probs
-  structure(probs, frames = h, ms = 1000 * h / rec$rate, motion = TRUE)
+  new_grasp_probabilities(probs, frames = h, ms = 1000 * h / rec$rate, motion = TRUE)
 }
 
 #' @export

@@ -37,7 +37,13 @@
 #'   model uses), or
 #'   `NULL` for none.
 #' @param speed Initial playback speed (0.1, 0.25, 0.5, 1 or 2).
-#' @param autoplay,loop Start playing at once; start again at the end.
+#' @param autoplay,loop Start playing at once; start again at the end. The
+#'   viewer draws only while something changes (playing, turning, resizing):
+#'   at rest, paused or finished, it costs the browser nothing, and playback
+#'   pauses while the widget is scrolled out of view or its tab is hidden (a
+#'   widget that autoplays further down a page starts when first seen). So
+#'   by default a recording plays once and rests on its last frame; with
+#'   `loop = TRUE` it plays on while in view.
 #' @param rate Frames per second for matrix input (a `grasps` carries its
 #'   own).
 #' @param skeleton The [hand_skeleton()] that poses the hands.
@@ -66,7 +72,7 @@
 #' f <- tempfile(fileext = ".html")
 #' htmlwidgets::saveWidget(w, f, selfcontained = FALSE)
 hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits = FALSE, markers = NULL,
-                    speed = 1, autoplay = TRUE, loop = TRUE, rate = NULL, skeleton = hand_skeleton(),
+                    speed = 1, autoplay = TRUE, loop = FALSE, rate = NULL, skeleton = hand_skeleton(),
                     hand_colour = c("skin", "fingers"), view = "oblique", background = "#f7f7f5",
                     width = NULL, height = NULL, elementId = NULL, ...) {
   call <- rlang::caller_env()

@@ -290,7 +290,8 @@ print.grasp_predictions <- function(x, ..., n = 10L) {
                          stringsAsFactors = FALSE)
   cols <- names(shown)
   if (length(cols) > 8L) shown <- shown[, 1:8, drop = FALSE]
-  if (type == "prob") shown[] <- lapply(shown, round, 3)
+  # (three decimals, "<0.001" and ">0.999" beyond: see format_probability())
+  if (type == "prob") shown[] <- lapply(shown, function(v) if (is.numeric(v)) format_probability(v) else v)
   print(utils::head(shown, n), digits = 3)
   more <- c(if (nrow(x) > n) sprintf("%d more row%s", nrow(x) - n, if (nrow(x) - n == 1L) "" else "s"),
             if (length(cols) > 8L) sprintf("%d more column%s: %s", length(cols) - 8L,

@@ -1,27 +1,46 @@
 # Progress of the package's long calls (issue 36: no wait without a
-# reason). Every loop that can take more than a couple of seconds (the fits
-# per type, the folds, the horizons, the models a set of recordings is
-# projected on) counts its steps with a progressr progressor, which also
-# works from future workers. The outermost long call shows them, so a user
-# sees progress without setting anything up:
+# reason; issue 42: drawn where progressr's conventions say). Every loop that
+# can take more than a couple of seconds (the fits per type, the folds, the
+# horizons, the models a set of recordings is projected on) counts its steps
+# with a progressr progressor, which also works from future workers. Whether
+# a bar is drawn follows progressr's conventions:
 #
+# * in an interactive session, the outermost long call draws a bar without
+#   any set-up (after 2 s: progressr's `progressr.enable_after`, unless the
+#   user set it), so quick calls stay quiet;
+# * in a script (`Rscript script.R > log`, knitr, Python) nothing is drawn
+#   unless the user asked: `options(progressr.enable = TRUE)`, or handlers
+#   chosen with `progressr::handlers(...)`;
+# * the user's own `progressr::with_progress()` or global handlers
+#   (`progressr::handlers(global = TRUE)`) receive the steps and draw them as
+#   they were set up to (the package adds no bar of its own);
 # * `options(handmotion.progress = FALSE)` turns it off (nothing is
 #   signalled or shown);
-# * the bar is progressr's: `progressr::handlers("cli")` (or any other
-#   handler) chooses how it looks, `progressr::handlers(list())` shows none;
-# * it appears only after 2 s (progressr's `progressr.enable_after`, unless
-#   the user set it), so quick calls stay quiet;
-# * inside a call that already shows progress (reproduce_thesis(), or an
-#   outer long call of the package) inner calls only count their steps.
+# * inside a call that already counts (reproduce_thesis(), an outer long call
+#   of the package, a fold on a worker) inner calls count nothing.
+#
+# Steps are signalled once per type, fold, horizon or model (tens per call),
+# never per recording: from workers each is one small message.
 
 progress_wanted <- function() isTRUE(getOption("handmotion.progress", TRUE))
 
-# Evaluate `expr` showing the progress of the package's progressors in it.
+# Does the session ask for bars (progressr's conventions, see above)?
+# (progressr sets progressr.enable to interactive() as it loads, so the option
+# says both: interactive, or turned on by the user)
+progress_drawn_here <- function() {
+  isTRUE(getOption("progressr.enable", interactive())) || !is.null(getOption("progressr.handlers"))
+}
+
+# Evaluate `expr` showing the progress of the package's progressors in it
+# when the session asks for bars and nobody else receives the steps.
 with_progress_shown <- function(expr) {
-  if (!progress_wanted() || isTRUE(getOption("handmotion.progress_listener")) || inside_with_progress()) {
+  if (!progress_wanted() || isTRUE(progress_state$active) || isTRUE(progress_state$listener) ||
+      !progress_drawn_here() || isTRUE(progressr::handlers(global = NA)) || inside_with_progress()) {
     return(expr)
   }
-  opts <- list(handmotion.progress_listener = TRUE)
+  # (progressr's handlers check progressr.enable themselves, with
+  # interactive() as its default: set here, where the session asked for bars)
+  opts <- list(progressr.enable = TRUE)
   if (is.null(getOption("progressr.enable_after"))) opts$progressr.enable_after <- 2
   old <- options(opts)
   on.exit(options(old), add = TRUE)
@@ -34,7 +53,7 @@ with_progress_shown <- function(expr) {
 # already counting (progressr draws one bar at a time: the outermost long
 # step counts, the steps inside it do not).
 hm_progressor <- function(steps, envir = parent.frame()) {
-  if (!progress_wanted() || isTRUE(progress_state$active) || steps < 1) return(function(...) invisible(NULL))
+  if (!progress_wanted() || isTRUE(progress_state$active) || steps < 1) return(progress_noop)
   progress_state$active <- TRUE
   # (the release function itself goes into the caller's on.exit, as withr's
   # defer() does it)
@@ -42,10 +61,44 @@ hm_progressor <- function(steps, envir = parent.frame()) {
   progressr::progressor(steps = steps, envir = envir)
 }
 
+# The progressor that counts nothing. Top-level (its environment is the
+# namespace) because progressors travel to future workers with every chunk:
+# a closure made inside hm_progressor() would carry its frame along, and with
+# it the caller's (the whole data set and every type's part, serialised into
+# each chunk: issue 43, where two workers took twice the time of one).
+progress_noop <- function(...) invisible(NULL)
+
 progress_state <- new.env(parent = emptyenv())
 progress_state$active <- FALSE
+progress_state$listener <- FALSE
 
 progress_release <- function() progress_state$active <- FALSE
+
+# Until the calling function returns, the package's long calls in this
+# process count nothing: an outer progressor counts for them. A fold or
+# chunk run on a future worker calls it (the worker's own process does not
+# know the main process already counts: without it every inner fit would
+# send its own steps back, and the bar would jump between progressors).
+local_counted_outside <- function(envir = parent.frame()) {
+  old <- progress_state$active
+  progress_state$active <- TRUE
+  do.call(base::on.exit, list(as.call(list(progress_restore, old)), add = TRUE), envir = envir)
+  invisible()
+}
+
+progress_restore <- function(old) progress_state$active <- old
+
+# Until the calling function returns, a listener of its own (reproduce_thesis()'s
+# report printer) receives the steps: the long calls count but draw no bar
+# (a bar's with_progress() would catch the steps before the listener).
+local_progress_listener <- function(envir = parent.frame()) {
+  old <- progress_state$listener
+  progress_state$listener <- TRUE
+  do.call(base::on.exit, list(as.call(list(progress_listener_restore, old)), add = TRUE), envir = envir)
+  invisible()
+}
+
+progress_listener_restore <- function(old) progress_state$listener <- old
 
 # Is the call inside the user's own progressr::with_progress()? Then the
 # progress goes to the user's handlers: a second with_progress() here would

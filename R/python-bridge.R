@@ -73,3 +73,19 @@ py_widget_html <- function(widget) {
   htmlwidgets::saveWidget(widget, file, selfcontained = TRUE)
   paste(readLines(file, warn = FALSE, encoding = "UTF-8"), collapse = "\n")
 }
+
+# Progress bars through Python (issue 42). rpy2's embedded R is interactive,
+# so by progressr's conventions the long calls would draw their bar on
+# standard error, which rpy2 logs one line per update ("R[write to console]:
+# |====   |   6%"). In a terminal (`terminal`: Python's standard output is a
+# tty) the bar goes to standard output instead, which rpy2 prints as it comes,
+# so its carriage returns redraw one bar in place; elsewhere (a log, a
+# notebook, pytest) no bar: `progressr.enable = FALSE`. Called once as R starts.
+py_progress_setup <- function(terminal) {
+  if (isTRUE(terminal)) {
+    progressr::handlers(progressr::handler_txtprogressbar(file = stdout()))
+  } else {
+    options(progressr.enable = FALSE)
+  }
+  invisible(isTRUE(terminal))
+}

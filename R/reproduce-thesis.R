@@ -43,7 +43,12 @@
 #' within a long step (the held-out folds, the horizons of early
 #' recognition, the chunks of the page after the last step) a line at most
 #' every 15 s. The estimate starts from a cost model of the design
-#' (recordings, types, folds, workers) and follows the measured pace: the
+#' (recordings, types, folds, workers) in CPU seconds of a reference
+#' machine, scaled by this machine's pace, measured before the first step by
+#' a short test fit (about a second): how fast a core is, how much of a core
+#' one process gets and, for the steps on the workers, the load average
+#' (the other jobs that want the cores). When the machine is busy the first
+#' line says so. It then follows the measured pace: the
 #' time the finished steps of each kind (held-out folds on the workers,
 #' fits, tables) took against the model, and within a step the rate of its
 #' own folds or horizons, which also informs the steps after it.
@@ -64,6 +69,10 @@
 #'   of groups of subjects for a quicker held-out evaluation.
 #' @param grasps Grasp types to include (Feix ids or names), all 33 by default.
 #'   At least two are needed for classification.
+#' @param overwrite Replace an existing report? As every writer of the
+#'   package, by default an existing `reproduce-thesis.html` (or tables and
+#'   figures of an earlier report) in `output_dir` is an error of class
+#'   `handmotion_error_file_exists`, raised before anything is computed.
 #' @param quiet Render without knitr's progress output.
 #' @param progress Print a line per step with the time left (see
 #'   **Progress**).
@@ -81,7 +90,7 @@
 #' }
 #' }
 reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, loso_folds = NULL,
-                             grasps = 1:33, quiet = TRUE, progress = TRUE) {
+                             grasps = 1:33, quiet = TRUE, progress = TRUE, overwrite = FALSE) {
   call <- rlang::caller_env()
   settings <- check_report_settings(list(subjects = subjects, seed = seed, loso_folds = loso_folds,
                                          grasps = grasps), call)
@@ -90,6 +99,11 @@ reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, los
     hm_abort("{.arg output_dir} must be one directory path.", "bad_input", argument = "output_dir",
              call = call)
   }
+  # the writers' rule (check_overwrite()): an earlier report is replaced
+  # only when asked, and that is known before minutes of work
+  check_overwrite(c(file.path(output_dir, "reproduce-thesis.html"),
+                    list.files(file.path(output_dir, c("tables", "figures")), full.names = TRUE)),
+                  overwrite, call = call)
   if (!requireNamespace("rmarkdown", quietly = TRUE) || !requireNamespace("knitr", quietly = TRUE)) {
     hm_abort("{.fn reproduce_thesis} needs the {.pkg rmarkdown} and {.pkg knitr} packages.",
              "missing_dependency", call = call)
@@ -117,11 +131,13 @@ reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, los
                  loso_folds = if (is.null(settings$loso_folds)) 0L else settings$loso_folds,
                  grasps = settings$grasps, output_dir = output_dir)
   show <- progress && progress_wanted()
-  bar <- report_progress(show)
+  bar <- report_progress(show, trace = report_estimate_signal)
   bar$begin(settings)
   # the long calls inside count their steps (progressr) for this printer
   # instead of drawing bars of their own; every chunk says it starts
-  old_opts <- options(handmotion.progress_listener = TRUE, progressr.enable = show)
+  # (progressr.enable: with the lines off, the progressors count nothing)
+  local_progress_listener()
+  old_opts <- options(progressr.enable = show)
   on.exit(options(old_opts), add = TRUE)
   old_hook <- knitr::knit_hooks$get("handmotion_chunk")
   knitr::knit_hooks$set(handmotion_chunk = function(before, options, envir) {

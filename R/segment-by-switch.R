@@ -59,7 +59,9 @@ check_switch <- function(switch, n = NULL, call = rlang::caller_env()) {
 #'   `segment` (run number within the parent), `switch` (0/1), `start_frame`,
 #'   `end_frame` and, when the parent has time stamps, `start_time_s`
 #'   (seconds since the parent's first frame). Each segment keeps the matching
-#'   slices of the `"switch"` and `"time"` attributes.
+#'   slices of the `"switch"` and `"time"` attributes. A recording whose
+#'   switch never changes is not cut, with a warning of class
+#'   `handmotion_warning_switch_unchanged` naming it (field `recording`).
 #' @seealso `switch_segments()`, [read_graspdb14()]
 #' @export
 #' @examples
@@ -84,6 +86,7 @@ segment_by_switch <- function(x, keep = c("all", "on", "off"), min_frames = 1L, 
   pieces <- vector("list", n)
   metas <- vector("list", n)
   dropped <- vector("list", n)
+  unchanged <- character()
   for (i in seq_len(n)) {
     rec <- recs[[i]]
     id <- x$meta$id[i]
@@ -95,6 +98,7 @@ segment_by_switch <- function(x, keep = c("all", "on", "off"), min_frames = 1L, 
     }
     check_switch(sw, n = nrow(rec), call = call)
     seg <- switch_segments(sw)
+    if (nrow(seg) == 1L) unchanged <- c(unchanged, id)
     # (the argument `switch` shadows base::switch here, so plain ifs)
     wanted <- if (keep == "all") rep(TRUE, nrow(seg)) else seg$state == as.integer(keep == "on")
     short <- wanted & seg$n_frames < min_frames
@@ -118,6 +122,13 @@ segment_by_switch <- function(x, keep = c("all", "on", "off"), min_frames = 1L, 
     m$end_frame <- seg$end
     if (!is.null(time)) m$start_time_s <- time[seg$start]
     metas[[i]] <- m
+  }
+  # a switch that never changes cuts nothing: the recording comes back whole
+  # (or not at all, for the other state), which is rarely what was meant
+  if (length(unchanged)) {
+    hm_warn(c("The switch never changes in {length(unchanged)} recording{?s}, so {?it was/they were} not cut: {.val {cli::cli_vec(unchanged, list('vec-trunc' = 5))}}.",
+              i = "Was the switch pressed while recording? Pass {.arg switch} with its states; otherwise such a recording is one segment."),
+            "switch_unchanged", recording = unchanged)
   }
   drop_tab <- do.call(rbind, dropped)
   if (all(vapply(pieces, is.null, logical(1)))) {

@@ -104,3 +104,22 @@ with_r_em <- function(expr) {
   })
   expr
 }
+
+# A wide simulated glove like a lab's second glove (issue 40): one person, six
+# objects, 100 Hz, 1.4 s rest and 1.6 s hold; the resistive glove's 15 channels
+# plus 8 derived ones (neighbour means with sensor noise) for 23 channels of
+# about 380 frames. `types` objects, `trials` each.
+wide_glove <- function(types, trials) {
+  objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)[seq_len(types)]
+  g <- simulate_grasps(subjects = 1, grasps = objects, objects = 1, trials = trials, rate = 100,
+                       glove = "resistive", rest = 1.4, hold = 1.6, overlong = FALSE, seed = 3)
+  set.seed(4)
+  recs <- lapply(g$recordings, function(x) {
+    extra <- (x[, 1:8] + x[, 2:9]) / 2
+    extra <- extra + stats::rnorm(length(extra), sd = 2)
+    colnames(extra) <- paste0("extra", 1:8)
+    cbind(x, extra)
+  })
+  grasps(recs, meta = g$meta[, c("grasp", "subject", "object")], rate = 100, unit = "raw")
+}
+

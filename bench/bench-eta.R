@@ -14,18 +14,24 @@ source("bench/_common.R")
 design <- if (bench_quick) list(subjects = 4, grasps = c(9, 17, 22), loso_folds = 2) else list()
 if (future::supportsMulticore()) future::plan(future::multicore, workers = 2)
 log <- data.frame(t = numeric(), left = numeric())
-events <- data.frame(t = numeric(), left = numeric(), event = character())
-# every estimate the printer makes (R/report-progress.R), and every event
-# (saved with BENCH_ETA_EVENTS=file.rds, to replay them through report_eta())
-options(handmotion.progress = TRUE,
-        handmotion.progress_trace = function(so_far, left, event) {
-          events[nrow(events) + 1L, ] <<- list(so_far, left, event)
-          if (!is.na(left)) log[nrow(log) + 1L, ] <<- c(so_far, left)
-        })
+events <- data.frame(t = numeric(), left = numeric(), event = character(), cpu = numeric())
+# CPU seconds of this process and its finished children (the multicore
+# workers, pandoc): the cost model is in CPU seconds (R/report-progress.R)
+cpu_now <- function() sum(proc.time()[c("user.self", "sys.self", "user.child", "sys.child")], na.rm = TRUE)
+# every estimate the printer makes (R/report-progress.R: signalled as
+# handmotion_report_estimate conditions), and every event (saved with
+# BENCH_ETA_EVENTS=file.rds, to replay them through report_eta())
+options(handmotion.progress = TRUE)
+trace <- function(e) {
+  events[nrow(events) + 1L, ] <<- list(e$so_far, e$left, e$event, cpu_now())
+  if (!is.na(e$left)) log[nrow(log) + 1L, ] <<- c(e$so_far, e$left)
+}
 out <- tempfile("report")
 load0 <- load_avg()
 cpu0 <- proc.time()
-lines <- utils::capture.output(html <- do.call(reproduce_thesis, c(list(out), design)), type = "message")
+lines <- utils::capture.output(html <- withCallingHandlers(do.call(reproduce_thesis, c(list(out), design)),
+                                                           handmotion_report_estimate = trace),
+                               type = "message")
 cpu <- proc.time() - cpu0
 load1 <- load_avg()
 # each step's time against the cost model (on 2 workers) it started from
@@ -63,6 +69,23 @@ for (i in seq_len(nrow(tim))) {
   cat(sprintf("%-52s %9.1f %9.1f\n", tim$step[i], if (tim$step[i] %in% names(model)) model[[tim$step[i]]] else NA,
               tim$seconds[i]))
 }
+# each step's CPU seconds (this process and the workers), from the events
+# that start the steps to the end: the cost model's `cpu` column is these,
+# on the default design, with the calibration's CPU as pace_reference_cpu
+starts <- events[grepl("^(step |chunks )", events$event) | events$event == "done", ]
+pace_line <- events$event[grepl("^pace ", events$event)]
+cat("\ncalibration:", if (length(pace_line)) pace_line[1] else "none", "\n")
+step_names <- c(sub("^step ", "", starts$event[grepl("^step ", starts$event)]), "the figures and the page")
+step_cpu <- diff(starts$cpu)
+step_wall <- diff(starts$t)
+cat(sprintf("%-52s %9s %9s %9s\n", "step", "model", "CPU (s)", "took (s)"))
+for (i in seq_along(step_cpu)) {
+  cat(sprintf("%-52s %9.1f %9.1f %9.1f\n", step_names[i],
+              if (step_names[i] %in% names(model)) model[[step_names[i]]] else NA, step_cpu[i], step_wall[i]))
+}
+cat("cpu = c(", paste(sprintf("%.1f", step_cpu), collapse = ", "), ")\n")
+cat(sprintf("first estimate %.1f s; the run took %.1f s (%+.0f%%)\n", events$left[!is.na(events$left)][1] + 0,
+            total, 100 * ((events$left[!is.na(events$left)][1]) / total - 1)))
 worst <- if (nrow(judged)) max(abs(judged$error)) else NA_real_
 cat(sprintf("\nin the last 15 s the estimate was off by at most %.1f s", max(abs(tail_err$left - tail_err$real))))
 cat(sprintf("\nlargest error of the time left from 10%% of the work on (while 15 s or more remain): %.0f%% over %d estimates (allowed 25%%: %s)\n",

@@ -7,6 +7,7 @@
 
 SEXP hm_dtw_pair(SEXP x, SEXP y, SEXP window); /* dtw.c */
 SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window, SEXP full); /* dtw.c */
+SEXP hm_dtw_pattern(SEXP x, SEXP y, SEXP table); /* dtw-slope.c */
 SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k, SEXP ridge, SEXP eps); /* handover-lwr.c */
 SEXP hm_generate_batch(SEXP n, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP comps,
                        SEXP warp_mean, SEXP warp_comps, SEXP do_warp, SEXP dofs, SEXP alpha_in,
@@ -26,6 +27,7 @@ SEXP hm_lda_w2(SEXP F, SEXP rows, SEXP cls, SEXP means, SEXP inv_s); /* lda-mome
 
 static const R_CallMethodDef call_methods[] = {
   {"hm_dtw_pair", (DL_FUNC) &hm_dtw_pair, 3}, {"hm_dtw_batch", (DL_FUNC) &hm_dtw_batch, 4},
+  {"hm_dtw_pattern", (DL_FUNC) &hm_dtw_pattern, 3},
   {"hm_lwr_predict", (DL_FUNC) &hm_lwr_predict, 6},
   {"hm_generate_batch", (DL_FUNC) &hm_generate_batch, 14},
   {"hm_gmm_em", (DL_FUNC) &hm_gmm_em, 6}, {"hm_gmm_kmeans", (DL_FUNC) &hm_gmm_kmeans, 3},

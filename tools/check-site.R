@@ -6,7 +6,7 @@
 # 3. the main pages run without a script error, both served over HTTP and
 #    opened from file://, with every outside host unreachable (as offline);
 # 4. the articles' "On this page" contents are filled, code stays inside
-#    its boxes, and the search box finds pages and its first result opens
+#    its boxes (long lines scroll, none wraps), and the search box finds pages and its first result opens
 #    its page, over HTTP (driven from a harness page holding the site in a
 #    frame) and from file:// (a copy of the page that searches by itself);
 # 5. the pages with the 3D viewer draw every widget, each with a hand's
@@ -159,9 +159,16 @@ f.onload = function() {
     input.trigger("focus");
     setTimeout(function() {
       out.toc = d.querySelectorAll("#toc a.nav-link").length;
-      /* code boxes whose text runs past them, a page wider than the window */
-      out.overflow = Array.prototype.filter.call(d.querySelectorAll("pre"),
-        function(p) { return p.scrollWidth > p.clientWidth + 1; }).length;
+      /* code boxes whose text runs past them (a long line scrolls inside
+         its box: white-space pre, overflow-x auto), code that wraps (in
+         the middle of a comment), a page wider than the window */
+      out.overflow = Array.prototype.filter.call(d.querySelectorAll("pre"), function(p) {
+        var scrolls = ["auto", "scroll"].indexOf(w.getComputedStyle(p).overflowX) >= 0;
+        return p.scrollWidth > p.clientWidth + 1 && !scrolls;
+      }).length;
+      out.wrapping = Array.prototype.filter.call(d.querySelectorAll("pre code"), function(c) {
+        return w.getComputedStyle(c).whiteSpace !== "pre";
+      }).length;
       out.page_wider = d.documentElement.scrollWidth > w.innerWidth;
       out.headings = d.querySelectorAll("main h2:not([data-toc-skip])").length;
       input.val(%s).trigger("input");
@@ -169,6 +176,12 @@ f.onload = function() {
         var s = d.querySelectorAll(".aa-suggestion");
         out.suggestions = s.length;
         out.first = s.length ? s[0].textContent.replace(/\\s+/g, " ").trim() : "";
+        /* the list of suggestions lies within the window */
+        var menu = d.querySelector(".aa-dropdown-menu");
+        if (menu) {
+          var r = menu.getBoundingClientRect();
+          out.menu_fits = r.left >= 0 && r.right <= w.innerWidth && r.bottom <= w.innerHeight;
+        }
         if (!s.length) return done();
         $(s[0]).trigger("click");
         setTimeout(done, 3000);  /* the frame did not move on */
@@ -187,6 +200,11 @@ for (pg in search_pages) {
   runs[[paste("harness", pg)]] <- c(browser_args(12000), offline, "--dump-dom",
                                      sprintf("http://127.0.0.1:%d/%s", port, basename(h)))
 }
+# a function's name finds its help page first (not a changelog entry)
+ranked <- c(query = "calibrate", page = "reference/calibrate.html")
+writeLines(harness(paste0(http_base, "index.html"), ranked[["query"]]), file.path(root, "harness-rank.html"))
+runs[["harness rank"]] <- c(browser_args(12000), offline, "--dump-dom",
+                            sprintf("http://127.0.0.1:%d/harness-rank.html", port))
 harness_result <- function(out, pg) {
   dom <- paste(out$stdout, collapse = "\n")
   json <- sub('(?s).*<pre id="result">(.*?)</pre>.*', "\\1", dom, perl = TRUE)
@@ -333,6 +351,7 @@ message("site: no script errors on the main pages, over HTTP or from file://")
 for (pg in search_pages) {
   r <- harness_result(res[[paste("harness", pg)]], pg)
   if (!is.null(r$error)) fail("harness error on ", pg, ": ", r$error)
+  if (isTRUE(r$wrapping > 0)) fail(sprintf("%s: %d code boxes wrap their lines", pg, r$wrapping))
   if (r$overflow > 0 || isTRUE(r$page_wider)) {
     fail(sprintf("%s: %d code boxes run past their edge%s", pg, r$overflow,
                  if (isTRUE(r$page_wider)) ", and the page is wider than the window" else ""))
@@ -348,6 +367,13 @@ for (pg in search_pages) {
   message(sprintf("site: over HTTP, %s: %d contents links for %d sections, code inside its boxes; search '%s': %d results, the first opened %s",
                   pg, r$toc, r$headings, query, r$suggestions, sub("^.*/site/", "", r$opened)))
 }
+r <- harness_result(res[["harness rank"]], "index.html")
+if (is.null(r$opened) || !grepl(ranked[["page"]], r$opened, fixed = TRUE)) {
+  fail(sprintf("search '%s' opened %s first, not %s", ranked[["query"]], if (is.null(r$opened)) r$first else r$opened, ranked[["page"]]))
+}
+if (!isTRUE(r$menu_fits)) fail(sprintf("search '%s': the list of results runs off the window", ranked[["query"]]))
+message(sprintf("site: search '%s': %d results within the window, the first opened %s", ranked[["query"]],
+                r$suggestions, ranked[["page"]]))
 for (pg in search_pages) file_search_result(res[[paste("file search", pg)]], pg)
 check_animation(res[["animation"]], "articles/graspdb14.html")
 for (pg in widget_pages) check_widgets(res[[paste("widgets", pg)]], pg, 2L)

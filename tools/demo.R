@@ -9,4 +9,7 @@ if (requireNamespace("future", quietly = TRUE) && future::supportsMulticore()) {
   future::plan(future::multicore, workers = min(2L, future::availableCores()))
 }
 # (reproduce_thesis() says step by step what it does and, at the end, where the report is)
-invisible(handmotion::reproduce_thesis(out))
+# `make demo` renders its report afresh each time it is run, so it replaces
+# the previous one on purpose (reproduce_thesis() itself refuses without
+# overwrite = TRUE).
+invisible(handmotion::reproduce_thesis(out, overwrite = TRUE))

@@ -20,8 +20,9 @@
  *
  * For tests in a headless browser the container carries data-ready="1"
  * once drawn, data-frame (the first recording's frame on screen) and
- * data-meshes (the number of segment meshes drawn), and any script error is
- * written to document.body's data-js-error. */
+ * data-meshes (the number of segment meshes drawn) and data-renders (the
+ * number of frames rendered so far: it stops growing when the widget rests),
+ * and any script error is written to document.body's data-js-error. */
 (function () {
   "use strict";
 
@@ -239,9 +240,16 @@
       // each hand is named underneath (handLabels); this says what the view is
       div.innerHTML = "<div>" + x.recordings.length + " hands, one camera: drag to turn them together</div>";
     } else {
+      // every entry has its swatch: a hand in its own colour shows that
+      // colour, a hand in the description's colours (skin, or one colour per
+      // finger) those colours
+      var own = [];
+      x.geometry.fill.forEach(function (f, s) { if (x.geometry.draw[s] && own.indexOf(f) < 0) own.push(f); });
+      var ownSwatch = own.length === 1 ? own[0] : "linear-gradient(90deg," + own.join(",") + ")";
       div.innerHTML = x.recordings.map(function (r) {
-        var sw = r.colour ? '<span style="display:inline-block;width:10px;height:10px;margin-right:4px;background:' +
-          r.colour + '"></span>' : "";
+        var sw = '<span style="display:inline-block;width:10px;height:10px;margin-right:4px;border:1px solid #888;' +
+          'vertical-align:-1px;background:' + (r.colour || ownSwatch) + (r.opacity < 1 ? ";opacity:" + r.opacity : "") +
+          '"></span>';
         return "<div>" + sw + esc(r.label) + "</div>";
       }).join("");
     }
@@ -256,7 +264,8 @@
       var div = document.createElement("div");
       div.className = "hand3d-label";
       div.style.cssText = "position:absolute;transform:translateX(-50%);font:13px sans-serif;color:#222;" +
-        "text-align:center;white-space:pre;background:rgba(255,255,255,0.6);padding:0 4px;border-radius:3px";
+        "text-align:center;white-space:pre-line;overflow-wrap:anywhere;box-sizing:border-box;" +
+        "background:rgba(255,255,255,0.6);padding:0 4px;border-radius:3px";
       // on two lines ("recorded: id" / "(type)"), as in the videos: side by side, one line each runs into the next
       div.textContent = rec.label.replace(" (", "\n(");
       el.appendChild(div);
@@ -264,6 +273,10 @@
     });
   }
 
+  // Each label is centred under its hand and at most as wide as the room
+  // between its hand and the next (it wraps, down to a word per line), so
+  // labels of hands side by side never run into each other; none runs off
+  // the widget's edges or under the control bar.
   function placeLabels(labels, camera, w, h) {
     if (!labels) return;
     var v = new THREE.Vector3();
@@ -276,8 +289,19 @@
         if (sy > lo) lo = sy;
         xs += (v.x + 1) / 2 * w / 8;
       }
-      l.div.style.left = Math.round(xs) + "px";
-      l.div.style.top = Math.round(Math.min(lo + 4, h - 70)) + "px";
+      l.x = xs; l.y = lo;
+    });
+    var order = labels.slice().sort(function (a, b) { return a.x - b.x; });
+    order.forEach(function (l, i) {
+      var room = 2 * Math.min(l.x, w - l.x);
+      if (i > 0) room = Math.min(room, l.x - order[i - 1].x);
+      if (i < order.length - 1) room = Math.min(room, order[i + 1].x - l.x);
+      l.div.style.maxWidth = Math.max(40, Math.floor(room - 8)) + "px";
+      l.div.style.left = Math.round(l.x) + "px";
+    });
+    var bar = 34;  // the control bar's height and a little
+    labels.forEach(function (l) {
+      l.div.style.top = Math.round(Math.max(0, Math.min(l.y + 4, h - bar - l.div.offsetHeight))) + "px";
     });
   }
 
@@ -286,11 +310,33 @@
     type: "output",
     factory: function (el, width, height) {
       var renderer = null, scene, camera, controls, ui, poses = [], x = null, labels = null, halfHeight = 1;
-      var playing = false, t = 0, duration = 0, last = null;
+      var playing = false, t = 0, duration = 0, last = 0;
+      // drawn on demand: a frame is rendered when the pose shown changes
+      // (playing, the slider), the camera moves (OrbitControls' "change")
+      // or the size changes; at rest nothing runs at all. `renders` counts
+      // the frames rendered (data-renders, for the tests).
+      var timer = null, drawPending = false, renders = 0;
+      var visible = true, seen = false, observer = null;
 
       function size() {
         var w = el.clientWidth || width || 600, h = el.clientHeight || height || 400;
         return [w, h];
+      }
+
+      function draw() {
+        if (!renderer) return;
+        var wh = size();
+        placeLabels(labels, camera, wh[0], wh[1]);
+        renderer.render(scene, camera);
+        renders++;
+        el.setAttribute("data-renders", renders);
+      }
+
+      // one render for a burst of camera events (a drag sends one per pointer move)
+      function requestDraw() {
+        if (drawPending) return;
+        drawPending = true;
+        window.requestAnimationFrame(function () { drawPending = false; draw(); });
       }
 
       function show(time) {
@@ -300,35 +346,73 @@
         el.setAttribute("data-frame", f0);
         ui.slider.value = duration > 0 ? Math.round(1000 * t / duration) : 0;
         ui.label.textContent = t.toFixed(2) + " / " + duration.toFixed(2) + " s";
-        renderer.render(scene, camera);
+        draw();
+      }
+
+      function speed() { return Number(ui.speed.value) || 1; }
+
+      // Playback runs only while it is wanted (playing), the widget is on
+      // screen (IntersectionObserver) and the page is not hidden; paused,
+      // finished, scrolled away or in a background tab, no timer is left.
+      function running() { return playing && visible && !document.hidden && !!renderer && el.isConnected; }
+
+      // Playback steps on a timer, at the time the next recorded frame is
+      // due (at most 60 a second), rather than on requestAnimationFrame:
+      // headless chromium under virtual time (the tests, the site's browser
+      // checks, screenshots) runs only a few animation frames a second, so
+      // playback there would not reach its end; a timer follows the page's
+      // clock. (It used to redraw every 1/60 s at rest as well, which kept
+      // a browser busy and made a 5 s virtual-time screenshot take 80 s.)
+      function schedule() {
+        if (timer !== null || !running()) return;
+        var next = (Math.floor(t * x.rate + 1e-9) + 1) / x.rate;
+        timer = setTimeout(tick, Math.max(1000 / 60, (next - t) / speed() * 1000));
+      }
+
+      function stop() {
+        if (timer !== null) clearTimeout(timer);
+        timer = null;
+      }
+
+      function tick() {
+        timer = null;
+        if (!running()) return;
+        var now = performance.now();
+        var next = t + (now - last) / 1000 * speed();
+        last = now;
+        if (next >= duration) {
+          if (x.loop) next = 0;
+          else { next = duration; setPlaying(false); }
+        }
+        show(next);
+        schedule();
+      }
+
+      // start or stop the timer after a change of `playing`, `visible` or the page's visibility
+      function reconcile() {
+        if (!running()) return stop();
+        if (timer === null) { last = performance.now(); schedule(); }
       }
 
       function setPlaying(p) {
         playing = p;
         ui.play.textContent = playing ? "pause" : "play";
-        last = null;
+        stop();
+        reconcile();
       }
 
-      // Driven by a timer rather than requestAnimationFrame: it keeps
-      // playing where no frames are requested (headless browsers, the tests)
-      // and costs the same at 60 updates a second.
-      function tick() {
-        var now = performance.now();
-        if (!renderer || !el.isConnected) return;
-        setTimeout(tick, 1000 / 60);
-        if (playing) {
-          if (last !== null) {
-            var next = t + (now - last) / 1000 * Number(ui.speed.value);
-            if (next > duration) next = x.loop ? 0 : duration;
-            if (next >= duration && !x.loop) setPlaying(false);
-            show(next);
-          }
-          last = now;
-        }
-        controls.update();
-        var wh = size();
-        placeLabels(labels, camera, wh[0], wh[1]);
-        renderer.render(scene, camera);
+      function watchVisibility() {
+        if (observer || !window.IntersectionObserver) return;
+        observer = new IntersectionObserver(function (entries) {
+          var v = entries[entries.length - 1].isIntersecting;
+          // a widget that autoplays below the fold starts from the beginning when it is first seen
+          if (!v && !seen && renderer) show(0);
+          seen = seen || v;
+          visible = v;
+          reconcile();
+        });
+        observer.observe(el);
+        document.addEventListener("visibilitychange", reconcile);
       }
 
       // an orthographic camera: hands side by side are seen from exactly the
@@ -343,6 +427,7 @@
       return {
         renderValue: function (data) {
           x = data;
+          stop();
           el.innerHTML = "";
           el.style.position = "relative";
           var wh = size();
@@ -375,12 +460,12 @@
           controls = new THREE.OrbitControls(camera, renderer.domElement);
           controls.target.copy(centre);
           controls.update();
+          controls.addEventListener("change", requestDraw);
 
           duration = Math.max.apply(null, x.recordings.map(function (r) { return (r.n - 1) / x.rate; }));
           ui = controlBar(el);
           legend(el, x);
           labels = handLabels(el, x);
-          placeLabels(labels, camera, wh[0], wh[1]);
           ui.speed.value = String(x.speed);
           if (ui.speed.value === "") ui.speed.value = "1";
           ui.play.onclick = function () {
@@ -388,17 +473,17 @@
             setPlaying(!playing);
           };
           ui.slider.oninput = function () { setPlaying(false); show(duration * ui.slider.value / 1000); };
-          setPlaying(!!x.autoplay);
+          ui.speed.onchange = function () { stop(); reconcile(); };
           show(0);
+          setPlaying(!!x.autoplay);
           el.setAttribute("data-ready", "1");
-          setTimeout(tick, 0);
+          watchVisibility();
         },
         resize: function (w, h) {
           if (!renderer) return;
           renderer.setSize(w, h);
           frustum(w, h);
-          placeLabels(labels, camera, w, h);
-          renderer.render(scene, camera);
+          draw();
         }
       };
     }

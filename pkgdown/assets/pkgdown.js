@@ -141,7 +141,9 @@
         var done = function() {
           var data = window.pkgdownSearchIndex || [];
           fuse = new Fuse(data, {
-            keys: ["what", "text", "code"],
+            // a page's or section's title counts more than its text
+            keys: [{name: "title", weight: 3}, {name: "what", weight: 2}, {name: "text", weight: 1},
+                   {name: "code", weight: 1}],
             ignoreLocation: true,
             threshold: 0.1,
             includeMatches: true,
@@ -179,8 +181,17 @@
   function searchFuse(query, callback) {
     loadIndex().then(function(f) {
       q = query;
-      var items = f.search(query, { limit: 20 })
+      // reference pages first (a reader searching a function's name wants
+      // its help page), then the articles and the home page, the changelog
+      // last; by Fuse's score within each
+      var tier = function(path) {
+        var p = String(path || "").replace(/^[a-z]+:\/\/[^/]*/i, "").replace(/^\//, "");
+        return /^reference\//.test(p) ? 0 : (/^news\//.test(p) ? 2 : 1);
+      };
+      var items = f.search(query, { limit: 40 })
         .filter(function(x) { return x.score <= 0.75; })
+        .sort(function(a, b) { return (tier(a.item.path) - tier(b.item.path)) || (a.score - b.score); })
+        .slice(0, 20)
         .map(function(x) { return x.item; });
       if (items.length === 0) {
         items = [{dir: "", previous_headings: "", title: "No results found.", what: "No results found.", path: ""}];

@@ -178,7 +178,7 @@ test_that("fast and reference engines give the same alignment", {
 # missing part of the motion is held on one frame while the template moves on.
 # (With the default shape features such a recording is stretched instead, so
 # these tests use features = "raw".)
-test_that("a recording held still over a long stretch is dropped as degenerate", {
+test_that("the thesis' rule drops a recording held still over a long stretch", {
   pl <- planted_alignment(N = 12, seed = 7)
   recs <- pl$recs
   # the glove stopped early: the last half of the motion is missing, so the
@@ -187,10 +187,11 @@ test_that("a recording held still over a long stretch is dropped as degenerate",
   recs$stuck_end <- grasp_curve(u)
   # and one that started late: it holds its first frame
   recs$stuck_start <- grasp_curve(seq(0.55, 1, length.out = 30))
-  al <- align_recordings(recs, features = "raw")
+  al <- align_recordings(recs, features = "raw", degenerate_warps = "drop")
   L <- al$target_length
   expect_identical(al$method, "dtw")
   expect_setequal(al$degenerate$id, c("stuck_end", "stuck_start"))
+  expect_true(all(al$degenerate$fallback == "dropped"))
   expect_true(all(al$degenerate$stall > 0.25 * L))
   expect_identical(al$degenerate$n_frames[match("stuck_end", al$degenerate$id)], 30L)
   expect_false(any(c("stuck_end", "stuck_start") %in% al$ids))
@@ -203,9 +204,89 @@ test_that("a recording held still over a long stretch is dropped as degenerate",
   expect_equal(unname(utils::tail(al$dropped_warps["stuck_end", ], 3)), rep(30, 3))
   expect_equal(unname(al$dropped_warps["stuck_start", 1:3]), rep(1, 3))
   # a looser max_stall keeps them
-  loose <- align_recordings(recs, max_stall = 0.9, features = "raw")
+  loose <- align_recordings(recs, max_stall = 0.9, features = "raw", degenerate_warps = "drop")
   expect_equal(nrow(loose$degenerate), 0)
   expect_true(all(c("stuck_end", "stuck_start") %in% loose$ids))
+  # by default they are kept with a slope-constrained warp, the others unchanged
+  kept <- align_recordings(recs, features = "raw")
+  expect_identical(kept$ids, names(recs))
+  expect_setequal(kept$degenerate$id, c("stuck_end", "stuck_start"))
+  expect_true(all(kept$degenerate$fallback %in% c("slope", "linear")))
+  expect_true(all(handmotion:::stall_lengths(kept$warps) <= 0.25 * L))
+  expect_equal(kept$warped[al$ids, , ], al$warped)
+  expect_equal(kept$warps[al$ids, ], al$warps)
+})
+
+# Real glove recordings rest before and hold after the grasp. Where the
+# template holds still every path costs about the same, and DTW's cheapest
+# holds one recording frame over the plateau: a degenerate warp. Planted: a
+# 40-frame motion after a rest and before a hold of known lengths; four
+# recordings of another object (a 20 smaller closing on DoF a) have rests
+# of 5 to 40 frames where the others have 20.
+plateau_set <- function(rest, hold, offset, noise = 1, seed = 1) {
+  withr::with_seed(seed, {
+    recs <- lapply(seq_along(rest), function(k) {
+      u <- seq(0, 1, length.out = 40)
+      m <- grasp_curve(u)
+      m[, "a"] <- m[, "a"] + offset[k] * stats::plogis((u - 0.45) / 0.07)
+      x <- rbind(m[rep(1, rest[k]), ], m, m[rep(40, hold[k]), ])
+      x + stats::rnorm(length(x), sd = noise)
+    })
+  })
+  names(recs) <- sprintf("r%02d", seq_along(rest))
+  recs
+}
+
+test_that("recordings stalled on a rest or hold plateau are kept with a sensible warp", {
+  rest <- c(rep(20, 10), 5, 8, 35, 40)
+  hold <- c(rep(20, 10), 40, 35, 5, 8)
+  recs <- plateau_set(rest, hold, offset = c(rep(0, 10), rep(-20, 4)))
+  thesis <- align_recordings(recs, features = "raw", degenerate_warps = "drop")
+  odd <- sprintf("r%02d", 11:14)
+  # the thesis' rule drops the four (they stall on one frame over > 25% of L)
+  expect_setequal(thesis$degenerate$id, odd)
+  expect_false(any(odd %in% thesis$ids))
+  al <- align_recordings(recs, features = "raw")
+  L <- al$target_length
+  expect_identical(al$ids, names(recs))
+  expect_setequal(al$degenerate$id, odd)
+  expect_true(all(al$degenerate$fallback == "slope"))
+  expect_true(all(al$degenerate$stall > 0.25 * L))   # what DTW did
+  for (id in odd) {
+    k <- match(id, names(recs))
+    w <- al$warps[id, ]
+    expect_true(all(diff(w) >= 0))                     # monotone
+    expect_equal(w[c(1, L)], c(1, nrow(recs[[id]])))   # end-pinned
+    expect_lte(handmotion:::stall_lengths(al$warps[id, , drop = FALSE]), 3)
+    # the planted shift is recovered: the motion's midpoint (frame rest + 20)
+    # sits where the other recordings' midpoints sit, within 4 frames (the
+    # recordings' noise and the plateaus leave the warp a few frames of play)
+    ref <- stats::median(vapply(sprintf("r%02d", 1:10), function(r) which.min(abs(al$warps[r, ] - 40)), numeric(1)))
+    expect_lte(abs(which.min(abs(w - (rest[k] + 20))) - ref), 4)
+  }
+  # and the others are aligned exactly as under the thesis' rule
+  expect_equal(al$warps[thesis$ids, ], thesis$warps)
+  # both engines give the same fallback path
+  ref_al <- align_recordings(recs, features = "raw", engine = "reference")
+  expect_equal(ref_al$warps, al$warps, tolerance = 1e-10)
+})
+
+test_that("the slope-constrained kernel reproduces dtw's symmetricP05", {
+  withr::local_seed(21)
+  for (k in 1:4) {
+    x <- matrix(stats::rnorm(37 * 3), 37)
+    y <- matrix(stats::rnorm((30 + 8 * k) * 3), 30 + 8 * k)
+    fast <- handmotion:::dtw_slope_pair(x, y, "fast")
+    ref <- handmotion:::dtw_slope_pair(x, y, "reference")
+    expect_identical(fast$index1, ref$index1)
+    expect_identical(fast$index2, ref$index2)
+    expect_equal(fast$distance, ref$distance, tolerance = 1e-12)
+    # no frame of either series is matched more than three times in a row
+    expect_lte(max(rle(fast$index1)$lengths), 3)
+    expect_lte(max(rle(fast$index2)$lengths), 3)
+  }
+  # no path when one series is more than three times the other
+  expect_error(handmotion:::dtw_slope_pair(x[1:5, ], y), "slope constraint")
 })
 
 test_that("two recordings are enough", {
@@ -265,16 +346,28 @@ test_that("broken recordings do not drag good ones down; too few left falls back
   late <- grasp_curve(seq(0.7, 1, length.out = 40))    # starts at 70%
   # half the set is broken: the first template is a compromise under which
   # even the good ones stall; they must survive the rounds of dropping
-  al <- align_recordings(list(good = x, good2 = x2, early = early, late = late), features = "raw")
+  al <- align_recordings(list(good = x, good2 = x2, early = early, late = late), features = "raw",
+                         degenerate_warps = "drop")
   expect_identical(al$method, "dtw")
   expect_identical(al$ids, c("good", "good2"))
   expect_setequal(al$degenerate$id, c("early", "late"))
   # one good recording is not enough to align
-  expect_warning(one <- align_recordings(list(good = x, early = early, late = late), features = "raw"),
+  expect_warning(one <- align_recordings(list(good = x, early = early, late = late), features = "raw",
+                                         degenerate_warps = "drop"),
                  class = "handmotion_warning_linear_fallback")
   expect_identical(one$method, "linear")
   expect_match(one$fallback_reason, "fewer than 2 recordings left after dropping 2 degenerate")
   expect_identical(one$ids, c("good", "early", "late"))
+  # by default a type whose warps mostly stall at once is aligned as a whole
+  # by slope-constrained DBA: every recording kept, none held still
+  kept <- align_recordings(list(good = x, early = early, late = late), features = "raw")
+  expect_identical(kept$method, "dtw")
+  expect_identical(kept$step_pattern, "symmetricP05")
+  expect_identical(kept$ids, c("good", "early", "late"))
+  expect_true(all(c("early", "late") %in% kept$degenerate$id))
+  expect_true(all(handmotion:::stall_lengths(kept$warps) <= 3))
+  expect_true(all(apply(kept$warps, 1, function(w) all(diff(w) >= 0))))
+  expect_output(print(kept), "whole type aligned by slope-constrained DTW")
 })
 
 test_that("target_length, L = 1 and one-frame recordings work", {
@@ -310,9 +403,12 @@ test_that("print shows method, iterations and drops", {
   pl <- planted_alignment(N = 6, seed = 14)
   recs <- pl$recs
   recs$stuck <- grasp_curve(seq(0, 0.45, length.out = 30))
-  al <- align_recordings(recs, max_iter = 3, features = "raw")
+  al <- align_recordings(recs, max_iter = 3, features = "raw", degenerate_warps = "drop")
   expect_output(print(al), "6 recordings x 3 DoFs")
   expect_output(print(al), "dropped 1 degenerate warp")
+  kept <- align_recordings(recs, max_iter = 3, features = "raw")
+  expect_output(print(kept), "7 recordings x 3 DoFs")
+  expect_output(print(kept), "kept 1 degenerate warp .* by a fallback: slope-constrained DTW: stuck")
   local_failing_alignment()
   expect_warning(forced <- align_recordings(recs), class = "handmotion_warning_linear_fallback")
   expect_output(print(forced), "LINEAR warping \\(fallback: alignment failure forced")
@@ -339,7 +435,7 @@ test_that("autoplot draws the frame-count histogram and one path per recording",
   pl <- planted_alignment(N = 6, seed = 14)
   recs <- pl$recs
   recs$stuck <- grasp_curve(seq(0, 0.45, length.out = 30))
-  al <- align_recordings(recs, max_iter = 3, features = "raw")
+  al <- align_recordings(recs, max_iter = 3, features = "raw", degenerate_warps = "drop")
   b <- ggplot2::ggplot_build(autoplot(al))
   expect_length(b$data, 2)
   expect_equal(sum(b$data[[1]]$count), 7)               # all original frame counts
@@ -353,6 +449,12 @@ test_that("autoplot draws the frame-count histogram and one path per recording",
   expect_equal(range(p$data[[1]]$x), c(1, al$target_length))
   h <- ggplot2::ggplot_build(autoplot(al, type = "histogram"))
   expect_equal(sum(h$data[[1]]$count), 7)
+  # kept by the fallback: its kept path in orange, its degenerate DTW path in red
+  kept <- align_recordings(recs, max_iter = 3, features = "raw")
+  kl <- ggplot2::ggplot_build(autoplot(kept, type = "paths"))$data[[1]]
+  expect_equal(length(unique(kl$group)), 8)
+  expect_equal(sum(kl$colour == "darkorange"), kept$target_length)
+  expect_equal(sum(kl$colour == "red"), kept$target_length)
   local_failing_alignment()
   expect_warning(forced <- align_recordings(pl$recs), class = "handmotion_warning_linear_fallback")
   lin <- ggplot2::ggplot_build(autoplot(forced, type = "paths"))

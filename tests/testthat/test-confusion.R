@@ -127,3 +127,15 @@ test_that("autoplot's counts and key are large enough to read with 33 types", {
   expect_length(key, 33L)
   expect_true(all(nchar(strsplit(p$labels$caption, "\n")[[1]]) <= 90))
 })
+
+test_that("the key writes a label that is its own abbreviation once", {
+  lv <- c("ball", "bottle", "card", "pen", "screwdriver")
+  cm <- grasp_confusion(lv, lv, levels = lv)
+  key <- strsplit(ggplot2::autoplot(cm)$labels$caption, "\n| \u00b7 ")[[1]]
+  lab <- abbreviate(lv, minlength = 4)
+  # "ball", not "ball ball"; "bttl bottle" as before
+  expect_identical(key, unname(ifelse(lab == lv, lv, paste(lab, lv))))
+  expect_true("ball" %in% key)
+  expect_false(any(grepl("^(\\S+) \\1$", key)))
+  expect_true(any(grepl("^bttl bottle$", key)))
+})

@@ -91,10 +91,10 @@ test_that("progress is reported through progressr, one step per fold", {
   g <- planted_types(types = c(1, 17), subjects = 3, trials = 2)
   # (as an outer listener such as reproduce_thesis() hears them; the call
   # itself would otherwise draw the bar: R/progress.R)
-  withr::local_options(progressr.enable = TRUE, handmotion.progress = TRUE, handmotion.progress_listener = TRUE)
+  withr::local_options(progressr.enable = TRUE, handmotion.progress = TRUE)
   steps <- 0
   withCallingHandlers(
-    evaluate_loso(g, "last_frame", fit_args = list(ncomp = 2), in_sample = FALSE),
+    as_listener(evaluate_loso(g, "last_frame", fit_args = list(ncomp = 2), in_sample = FALSE)),
     progression = function(c) if (identical(c$type, "update")) steps <<- steps + 1
   )
   expect_equal(steps, 3)

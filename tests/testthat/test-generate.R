@@ -111,6 +111,12 @@ test_that("a model set generates each requested type with n grasps", {
   expect_true(all(one$meta$grasp == "Ring"))
   expect_identical(simulate(ms, nsim = 3, grasp = "Ring", seed = 1), one)
   expect_error(generate(ms, grasp = "Lateral"), class = "handmotion_error_bad_input")
+  # a type without a model: the answer lists the types there are
+  cnd <- expect_error(generate(ms, grasp = 17), class = "handmotion_error_unknown_grasp")
+  expect_match(conditionMessage(cnd), "Index Finger Extension", fixed = TRUE)
+  expect_match(conditionMessage(cnd), 'models for 2 types: "Tripod" and "Ring"', fixed = TRUE)
+  expect_identical(cnd$argument, "grasp")
+  expect_error(ms["Lateral"], '2 types: "Tripod" and "Ring"', class = "handmotion_error_unknown_grasp")
   # the Tripod type was planted about 60 frames long, the Ring type about 40
   expect_gt(mean(new$meta$n_frames[1:4]), mean(new$meta$n_frames[5:8]))
 })
@@ -227,6 +233,30 @@ test_that("a model whose sampler was altered gets a classed error, not a crash",
   huge <- m
   huge$warp$fpca$mean <- huge$warp$fpca$mean * 1e6
   expect_error(generate(huge, n = 1, seed = 1), "at most 100000")
+})
+
+test_that("generate() refuses a model whose mixtures or FPC count were edited after fitting, as predict() does", {
+  m <- planted_model()
+  # a mixture edited after fitting: the stored sampler would draw the old one
+  moved <- m
+  moved$gmm[[1]]$means[1, 1] <- moved$gmm[[1]]$means[1, 1] + 5
+  expect_error(generate(moved, n = 2, seed = 1), "gmm.*no longer match", class = "handmotion_error_bad_model")
+  wide <- m
+  wide$gmm[[2]]$covs[, , 1] <- 4 * wide$gmm[[2]]$covs[, , 1]
+  expect_error(generate(wide, n = 2, seed = 1), "gmm", class = "handmotion_error_bad_model")
+  warp <- m
+  warp$warp$gmm$means[1, 1] <- warp$warp$gmm$means[1, 1] + 5
+  expect_error(generate(warp, n = 2, seed = 1), "warp mixture", class = "handmotion_error_bad_model")
+  # the FPC count its settings state, which project() and predict() check
+  fewer <- m
+  fewer$settings$ncomp <- 1L
+  expect_error(generate(fewer, n = 2, seed = 1), "settings", class = "handmotion_error_bad_model")
+  expect_error(project(fewer, planted_grasps(n = 3, p = 3, seed = 2)), class = "handmotion_error_bad_model")
+  # the fitted model itself, and its sampler rebuilt from the same parts, generate
+  expect_length(generate(m, n = 2, seed = 1), 2L)
+  rebuilt <- m
+  rebuilt$sampler <- build_sampler(m)
+  expect_identical(generate(rebuilt, n = 2, seed = 1), generate(m, n = 2, seed = 1))
 })
 
 test_that("generate() refuses bad counts, flags and seeds with classed errors", {

@@ -88,6 +88,17 @@ test_that("the classifier refuses what it cannot learn from or apply to", {
   expect_error(predict(cl, g, type = "raw"), class = "handmotion_error_bad_input")
 })
 
+test_that("class probabilities print as <0.001 and >0.999 at the ends, the data keep the numbers", {
+  g <- final_dof_types(n_per = 6)
+  pr <- predict(fit_grasp_classifier(g), g[1:3], type = "prob")
+  shown <- capture.output(print(pr))
+  expect_false(any(grepl("e-[0-9]", shown)))
+  near <- unlist(pr) < 5e-4 | unlist(pr) >= 1 - 5e-4
+  if (any(near)) expect_true(any(grepl("<0.001|>0.999", shown)))
+  expect_true(is.double(pr[[1]]))   # not rounded or formatted in the data
+  expect_equal(rowSums(as.data.frame(pr)), rep(1, 3), tolerance = 1e-12, ignore_attr = TRUE)
+})
+
 test_that("fit_grasp_classifier(method = ) gives each method's documented class, which classify() follows", {
   g <- final_dof_types(n_per = 6)
   lf <- fit_grasp_classifier(g, method = "last_frame", ncomp = 2)

@@ -284,3 +284,32 @@ test_that("the constructor derives the views from the FPCA and the validator ref
   expect_error(new_grasp_models(stats::setNames(list(m, m), c(m$grasp, m$grasp))))
   expect_s3_class(new_grasp_models(stats::setNames(list(m), m$grasp)), "grasp_models")
 })
+
+test_that("recordings with a degenerate DTW warp stay in the model with a fallback warp; the thesis' rule drops them", {
+  # (on this design DTW stalls on 3 of the 32 Light Tool recordings)
+  g <- simulate_grasps(subjects = 8, grasps = "Light Tool", objects = 2, trials = 2, seed = 1)
+  thesis <- suppressWarnings(fit_grasp_model(g, seed = 1, degenerate_warps = "drop"))
+  gone <- thesis$removed$id[thesis$removed$reason == "degenerate warp"]
+  expect_gte(length(gone), 1)
+  expect_false(any(gone %in% thesis$ids))
+  m <- suppressWarnings(fit_grasp_model(g, seed = 1))
+  expect_identical(m$n_used, thesis$n_used + length(gone))
+  expect_true(all(gone %in% m$ids))
+  expect_false(any(m$removed$reason == "degenerate warp"))
+  expect_setequal(m$warping$degenerate$id, gone)
+  expect_true(all(m$warping$degenerate$fallback %in% c("slope", "linear")))
+  expect_true(all(m$warping$degenerate$stall > 0.25 * m$target_length))
+  # their warps no longer stall, are monotone and end-pinned
+  w <- m$alignment$warps[gone, , drop = FALSE]
+  expect_true(all(handmotion:::stall_lengths(w) <= 0.25 * m$target_length))
+  expect_true(all(apply(w, 1, function(r) all(diff(r) >= 0))))
+  expect_equal(unname(w[, m$target_length]), unname(m$alignment$n_frames[gone]))
+  expect_true("degenerate_warp" %in% m$fallbacks$step)
+  expect_output(print(m), sprintf("%d degenerate warps? kept by a fallback", length(gone)))
+  # the others are aligned as under the thesis' rule
+  expect_equal(m$alignment$warps[thesis$ids, ], thesis$alignment$warps)
+  s <- summary(fit_grasp_models(g, seed = 1))
+  expect_identical(s$n_warp_fallback, length(gone))
+  expect_identical(s$n_degenerate, 0L)
+  expect_error(fit_grasp_model(g, degenerate_warps = "keep"), class = "handmotion_error_bad_input")
+})

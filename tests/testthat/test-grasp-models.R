@@ -127,10 +127,10 @@ test_that("the SLURM template is shipped and fills in with batchtools' fields", 
 test_that("progress is reported through progressr, once per type", {
   # (as an outer listener such as reproduce_thesis() hears them; the call
   # itself would otherwise draw the bar: R/progress.R)
-  withr::local_options(progressr.enable = TRUE, handmotion.progress = TRUE, handmotion.progress_listener = TRUE)
+  withr::local_options(progressr.enable = TRUE, handmotion.progress = TRUE)
   n <- 0L
   withCallingHandlers(
-    quiet_few(fit_grasp_models(three_types(), warping = "linear", seed = 1)),
+    as_listener(quiet_few(fit_grasp_models(three_types(), warping = "linear", seed = 1))),
     progression = function(c) n <<- n + 1L
   )
   expect_gte(n, 3L)

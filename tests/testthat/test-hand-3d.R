@@ -106,7 +106,13 @@ test_that("the widget page draws a hand that moves, without script errors, in a 
   # recording's duration has passed, it rests on its last frame
   frame <- as.integer(sub('.*data-frame="([0-9]+)".*', "\\1", dom))
   expect_equal(frame, n - 1L)
-  early <- png_pixels(browser_screenshot(page, 100))
+  # (the first frame from the same widget at rest: a screenshot of a playing
+  # page 100 ms in may be taken later, as the page's clock runs on while
+  # chromium captures it)
+  first <- file.path(dirname(page), "first.html")
+  htmlwidgets::saveWidget(hand_3d(g, limits = TRUE, markers = select_markers(method = "handpicked"),
+                                  autoplay = FALSE), first, selfcontained = FALSE)
+  early <- png_pixels(browser_screenshot(first, 100))
   late <- png_pixels(browser_screenshot(page, 1000 * n / g$rate))
   # the canvas is drawn: many pixels differ from the background (#f7f7f5)
   bg <- c(0xf7, 0xf7, 0xf5)
@@ -138,4 +144,45 @@ test_that("hands side by side are named underneath, through one camera, in a rea
   bg <- c(0xf7, 0xf7, 0xf5)
   drawn <- rowSums(abs(sweep(matrix(png, ncol = 3), 2, bg))) > 30
   expect_gt(mean(drawn), 0.04)
+})
+
+test_that("a widget at rest renders nothing; playing, it renders until the end, in a real browser", {
+  skip_without_browser()
+  g <- simulate_grasps(subjects = 2, grasps = 17, objects = 1, trials = 1, seed = 1)
+  dir <- withr::local_tempdir()
+  duration_ms <- 1000 * (max(g$meta$n_frames) - 1) / g$rate
+  # the widget's frame count (data-renders) read by the page itself at two
+  # moments after it was drawn, so that both come from one run of the
+  # browser; then the widget leaves the page (its playing stops). (The
+  # browser's budget of virtual time is generous: on a loaded machine,
+  # opening the page took seconds of it.)
+  counts <- function(name, at_ms, ...) {
+    w <- hand_3d(list(a = g[1], b = g[2]), ...)
+    probe <- sprintf('(function wait() {
+      var el = document.querySelector(".hand3d.html-widget");
+      if (!el || !el.getAttribute("data-ready")) return setTimeout(wait, 20);
+      [%d, %d].forEach(function (ms, i) { setTimeout(function () {
+        document.body.setAttribute("data-probe" + i, el.getAttribute("data-renders"));
+        if (i === 1) el.remove();
+      }, ms); });
+    })();', at_ms[1], at_ms[2])
+    f <- file.path(dir, paste0(name, ".html"))
+    htmlwidgets::saveWidget(htmlwidgets::appendContent(w, htmltools::tags$script(htmltools::HTML(probe))),
+                            f, selfcontained = FALSE)
+    dom <- browser_dom(f, at_ms[2] + 10000)
+    expect_no_match(dom, "data-js-error", fixed = TRUE)
+    expect_match(dom, 'data-probe1="', fixed = TRUE)
+    vapply(0:1, function(i) as.integer(sub(sprintf('.*data-probe%d="([0-9]+)".*', i), "\\1", dom)), integer(1))
+  }
+  # at rest: the first picture (and one per camera or size event), then nothing
+  resting <- counts("resting", c(300, 3000), autoplay = FALSE)
+  expect_lte(resting[1], 3L)
+  expect_identical(resting[2], resting[1])
+  # playing once: it renders while it plays, and nothing after the end
+  once <- counts("once", round(duration_ms + c(500, 3000)), autoplay = TRUE, loop = FALSE)
+  expect_gt(once[1], resting[1] + 5L)
+  expect_identical(once[2], once[1])
+  # looping: it goes on rendering
+  looping <- counts("looping", round(duration_ms * c(1, 3)), autoplay = TRUE, loop = TRUE)
+  expect_gt(looping[2], looping[1] + 10L)
 })

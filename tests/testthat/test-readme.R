@@ -1,24 +1,29 @@
-# The README runs as written: every R block, in order, in a fresh R session
-# (a callr subprocess), with the working directory a temporary directory so the
-# files it writes (grasp.gif, grasp.bvh, output/) land there. The Python block
-# is run by inst/python/tests/test_readme.py.
+# The README runs as written: every R block on its own, in a fresh R session
+# (a callr subprocess each, as a reader who pastes one block into a new
+# session), with the working directory a temporary directory so the files it
+# writes (grasp.gif, grasp.bvh, output/) land there. The Python block is run by
+# inst/python/tests/test_readme.py.
 #
-# The first block works on the full default data (8910 recordings) and renders
-# the whole thesis report: minutes, too slow for `make test`. The test runs it on
-# a smaller design by these textual substitutions, and nothing else is changed.
-# Each `from` must occur in its block exactly `times` times, so a README edit
-# that drops or moves one fails here instead of silently running the full size.
+# The first two blocks work on the full default data (8910 recordings) and the
+# first renders the whole thesis report: minutes, too slow for `make test`. The
+# test runs them on a smaller design by these textual substitutions, and
+# nothing else is changed. Each `from` must occur in its block exactly `times`
+# times, so a README edit that drops or moves one fails here instead of
+# silently running the full size.
 readme_substitutions <- data.frame(
-  block = c(1L, 1L, 2L),
+  block = c(1L, 1L, 2L, 2L),
   from = c("simulate_grasps(seed = 1)",
            'reproduce_thesis("output")',
+           "simulate_grasps(seed = 1)",
            '"S20"'),
   to = c("simulate_grasps(subjects = 3, grasps = c(11, 14, 17, 25), seed = 1)",
          'reproduce_thesis("output", subjects = 2, grasps = c(17, 25), loso_folds = 2)',
+         "simulate_grasps(subjects = 3, grasps = c(11, 14, 17, 25), seed = 1)",
          '"S02"'),
-  times = c(1L, 1L, 2L),
+  times = c(1L, 1L, 1L, 2L),
   why = c("3 subjects and 4 types (Power Sphere 11 and Tripod 14, which the block names) instead of 30 x 33",
           "the report's smallest design (as in test-reproduce-thesis.R)",
+          "the same small design as the first block",
           "train on subjects 1-2 and hold out 3, as the README trains on 1-20 and holds out 21-30"),
   stringsAsFactors = FALSE
 )
@@ -65,36 +70,48 @@ test_that("the substitution table is checked against the README", {
   expect_identical(out[-unique(readme_substitutions$block)], blocks[-unique(readme_substitutions$block)])
 })
 
-test_that("every R block of the README runs as written, in order, in a fresh session", {
+# Run one block in a fresh R session whose working directory is `dir`: the
+# files it wrote and the objects it left.
+run_readme_block <- function(block, pkg, dir) {
+  callr::r(function(block, pkg, dir) {
+    # the package as the tests see it (its sources; the block's own
+    # library() call, checked below, then finds it attached)
+    suppressMessages(pkgload::load_all(pkg, quiet = TRUE, export_all = FALSE))
+    setwd(dir)
+    grDevices::pdf(NULL)
+    exprs <- parse(text = block, keep.source = FALSE)
+    for (e in exprs) withVisible(eval(e, globalenv()))
+    list(files = sort(list.files(dir)), objects = ls(globalenv()),
+         p = if (exists("p", globalenv())) unclass(get("p", globalenv())))
+  }, args = list(block = block, pkg = pkg, dir = dir), show = FALSE)
+}
+
+test_that("every R block of the README runs on its own, in a fresh session", {
   skip_on_cran()
   skip_if_not_installed("callr")
   skip_if_not_installed("pkgload")
   skip_if_not(rmarkdown::pandoc_available("1.12.3"), "pandoc is not available (reproduce_thesis())")
   blocks <- substitute_readme(readme_blocks(readme_path(), "r"), readme_substitutions)
-  expect_gte(length(blocks), 3L)
+  expect_gte(length(blocks), 4L)
   pkg <- normalizePath(testthat::test_path("..", ".."))
-  dir <- withr::local_tempdir("readme-")
-  ran <- callr::r(function(blocks, pkg, dir) {
-    # the package as the tests see it (its sources), then the blocks as a user types them
-    suppressMessages(pkgload::load_all(pkg, quiet = TRUE, export_all = FALSE))
-    setwd(dir)
-    grDevices::pdf(NULL)
-    for (i in seq_along(blocks)) {
-      exprs <- parse(text = blocks[[i]], keep.source = FALSE)
-      for (e in exprs) withVisible(eval(e, globalenv()))
-    }
-    list(files = sort(list.files(dir)),
-         p = get("p", globalenv()),
-         has = vapply(c("g", "ms", "train", "held_out", "raw", "deg"), exists, logical(1),
-                      envir = globalenv()))
-  }, args = list(blocks = blocks, pkg = pkg, dir = dir), show = FALSE)
-  expect_true(all(ran$has))
-  # the files the blocks write went to the temporary working directory
-  expect_true(all(c("grasp.bvh", "output") %in% ran$files))
-  expect_true(any(grepl("^grasp\\.(gif|mp4)$", ran$files)))
-  expect_true(file.exists(file.path(dir, "output", "reproduce-thesis.html")))
+  # every block starts by attaching the package: none leans on one before it
+  for (b in blocks) expect_match(b, "^library\\(handmotion\\)")
+  dirs <- character()
+  for (i in seq_along(blocks)) dirs[i] <- withr::local_tempdir(sprintf("readme-%d-", i))
+  ran <- Map(run_readme_block, blocks, pkg, dirs)
+  first <- ran[[1]]
+  expect_true(all(c("g", "ms", "new") %in% first$objects))
+  # the files the first block writes went to its temporary working directory
+  expect_true(all(c("grasp.bvh", "output") %in% first$files))
+  expect_true(any(grepl("^grasp\\.(gif|mp4)$", first$files)))
+  expect_true(file.exists(file.path(dirs[1], "output", "reproduce-thesis.html")))
+  second <- ran[[2]]
+  expect_true(all(c("g", "train", "held_out", "p") %in% second$objects))
   # the stream's probabilities after the last frame
-  expect_equal(sum(ran$p), 1, tolerance = 1e-8)
+  expect_equal(sum(second$p), 1, tolerance = 1e-8)
+  # the real recordings: read, segmented, fitted and evaluated
+  expect_true(all(c("g", "ms") %in% ran[[3]]$objects))
+  expect_true(all(c("raw", "deg") %in% ran[[4]]$objects))
 })
 
 test_that("the README's API table lists every export, and its count is the number of exports", {

@@ -2,6 +2,12 @@
 # planted times (no clock): each test plants how long the steps really
 # take against the model and checks the estimate it must then give.
 
+# A machine measured as the reference one, quiet; and the same machine busy:
+# the calibration's process got a third of a core, with six other jobs on
+# two cores (fed, never timed).
+quiet_pace <- pace_summary(cpu = pace_reference_cpu, elapsed = pace_reference_cpu, load = 0, cores = 2L)
+busy_pace <- pace_summary(cpu = pace_reference_cpu, elapsed = 3 * pace_reference_cpu, load = 6, cores = 2L)
+
 # Run planted steps through the estimator: `true` seconds per step, `ticks`
 # progress steps per step (0: none) taking equal shares of the step after
 # a start-up of `startup` seconds. Returns the estimate and the true time
@@ -184,9 +190,9 @@ test_that("the printer feeds the estimator its clock and reports every estimate"
   bar <- report_progress(TRUE, out = con, every = 0, clock = function() t,
                          trace = function(so_far, left, event) {
                            if (!is.na(left)) seen[[length(seen) + 1L]] <<- c(so_far, left)
-                         })
+                         }, pace = function() quiet_pace)
   settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
-  cost <- report_step_costs(settings, workers = future::nbrOfWorkers())
+  cost <- report_step_costs(settings, workers = future::nbrOfWorkers(), pace = quiet_pace)
   bar$begin(settings)
   bar$step(names(cost)[1])
   t <- 2 * cost[[1]]
@@ -214,4 +220,81 @@ test_that("the printer feeds the estimator its clock and reports every estimate"
   expect_equal(seen[[length(seen)]], c(2 * cost[[1]] + 6, 0))
   quiet <- report_progress(FALSE, out = con)
   expect_silent({quiet$begin(settings); quiet$step("x"); quiet$done("y")})
+})
+
+
+test_that("the first estimate is the cost model at the machine's measured pace", {
+  settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
+  ref <- report_step_costs(settings, workers = 2L)
+  # the reference machine, quiet: the model's own seconds
+  expect_equal(report_step_costs(settings, workers = 2L, pace = quiet_pace), ref)
+  # a core half as fast: everything twice as long
+  slow_core <- pace_summary(cpu = 2 * pace_reference_cpu, elapsed = 2 * pace_reference_cpu, load = 0, cores = 2L)
+  expect_equal(report_step_costs(settings, workers = 2L, pace = slow_core), 2 * ref)
+  # busy: a process in the main thread gets a third of a core (3x); two
+  # workers among six other jobs on two cores get 2 / 8 of the cores each (4x)
+  busy <- report_step_costs(settings, workers = 2L, pace = busy_pace)
+  par <- report_step_model$parallel
+  expect_equal(unname(busy[!par] / ref[!par]), rep(3, sum(!par)))
+  expect_equal(unname(busy[par] / ref[par]), rep(4, sum(par)))
+  # on one worker the parallel steps run in the main process
+  one <- report_step_costs(settings, workers = 1L, pace = busy_pace)
+  expect_equal(unname(one / report_step_costs(settings, workers = 1L)), rep(3, length(one)))
+})
+
+test_that("a small design pays each step's fixed part, a larger one grows beyond it", {
+  tiny <- report_step_costs(list(subjects = 2, grasps = c(17, 25), loso_folds = 2), workers = 1L)
+  expect_true(all(tiny >= report_step_model$fixed - 1e-12))
+  full <- report_step_costs(list(subjects = 30, grasps = 1:33, loso_folds = NULL), workers = 1L)
+  expect_equal(unname(full), report_step_model$cpu)
+  half <- report_step_costs(list(subjects = 15, grasps = 1:33, loso_folds = NULL), workers = 1L)
+  expect_true(all(half >= tiny - 1e-12 & half <= full + 1e-12))
+})
+
+test_that("the first line says when the machine is busy, and the estimate allows for it", {
+  settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
+  first_lines <- function(pace) {
+    lines <- character()
+    con <- textConnection("lines", "w", local = TRUE)
+    bar <- report_progress(TRUE, out = con, clock = function() 0, pace = function() pace)
+    bar$begin(settings)
+    close(con)
+    lines
+  }
+  workers <- future::nbrOfWorkers()
+  clock_min <- function(s) sprintf("about %.1f min", s / 60)
+  quiet <- first_lines(quiet_pace)
+  expect_match(quiet[2], clock_min(sum(report_step_costs(settings, workers, quiet_pace))), fixed = TRUE)
+  expect_false(grepl("busy", quiet[2]))
+  busy <- first_lines(busy_pace)
+  expect_match(busy[2], clock_min(sum(report_step_costs(settings, workers, busy_pace))), fixed = TRUE)
+  expect_match(busy[2], "the machine is busy (load 6.0 on 2 cores, a test fit got 33% of a core)", fixed = TRUE)
+  expect_true(pace_busy(busy_pace))
+  expect_false(pace_busy(quiet_pace))
+  # no load average known: the measured share alone says it
+  expect_true(pace_busy(pace_summary(1, 2, load = NA, cores = 2L)))
+})
+
+test_that("the step counter counts each step once, the page included", {
+  settings <- list(subjects = 2, grasps = c(17, 25), loso_folds = 2)
+  lines <- character()
+  con <- textConnection("lines", "w", local = TRUE)
+  t <- 0
+  bar <- report_progress(TRUE, out = con, every = 0, clock = function() t, pace = function() quiet_pace)
+  bar$begin(settings)
+  steps <- report_step_model$step
+  # the report signals every step but the last; the page's chunks start it
+  for (label in steps[-length(steps)]) {
+    bar$chunk(1, 10)
+    bar$step(label)
+    t <- t + 1
+  }
+  bar$chunk(8, 10)
+  bar$chunk(9, 10)
+  bar$done("/somewhere/reproduce-thesis.html")
+  close(con)
+  counters <- regmatches(lines, regexpr("\\[ *[0-9]+/[0-9]+\\]", lines))
+  n <- length(steps)
+  expect_identical(gsub(" ", "", counters), sprintf("[%d/%d]", seq_len(n), n))
+  expect_match(lines[grep(sprintf("\\[%d/%d\\]", n, n), lines)], "the figures and the page", fixed = TRUE)
 })

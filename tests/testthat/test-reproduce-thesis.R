@@ -37,6 +37,22 @@ test_that("reproduce_thesis() rejects impossible designs before rendering anythi
   expect_length(list.files(out), 0L)
 })
 
+test_that("reproduce_thesis() replaces an earlier report only with overwrite = TRUE, as every writer", {
+  out <- withr::local_tempdir()
+  writeLines("an earlier report", file.path(out, "reproduce-thesis.html"))
+  cnd <- expect_error(reproduce_thesis(out, subjects = 2, grasps = c(17, 25), loso_folds = 2),
+                      "overwrite = TRUE", class = "handmotion_error_file_exists")
+  expect_identical(cnd$argument, "overwrite")
+  expect_identical(readLines(file.path(out, "reproduce-thesis.html")), "an earlier report")
+  # the tables of an earlier report count as well
+  unlink(file.path(out, "reproduce-thesis.html"))
+  dir.create(file.path(out, "tables"))
+  writeLines("x", file.path(out, "tables", "timings.csv"))
+  expect_error(reproduce_thesis(out, subjects = 2, grasps = c(17, 25), loso_folds = 2),
+               "timings.csv", class = "handmotion_error_file_exists")
+  expect_error(reproduce_thesis(out, overwrite = NA), class = "handmotion_error_bad_input")
+})
+
 test_that("the report renders on a tiny design with its tables and figures", {
   skip_on_cran()
   skip_if_not(rmarkdown::pandoc_available("1.12.3"), "pandoc is not available")

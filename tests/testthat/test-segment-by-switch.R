@@ -59,6 +59,17 @@ test_that("switch states can be supplied, and are required", {
   expect_error(segment_by_switch(list()), class = "handmotion_error_bad_input")
 })
 
+test_that("a switch that never changes cuts nothing, with a classed warning naming the recording", {
+  g <- grasps(list(matrix(1:10, 10, 1), matrix(1:8, 8, 1)), rate = 50)
+  w <- expect_warning(s <- segment_by_switch(g, switch = list(rep(1, 10), rep(c(0, 1), 4))),
+                      "never changes in 1 recording", class = "handmotion_warning_switch_unchanged")
+  expect_identical(w$recording, g$meta$id[1])
+  expect_length(s, 1L + 8L)   # the first whole, the second cut at each change
+  expect_equal(s$recordings[[1]][, 1], 1:10)
+  # a switch that changes: no warning
+  expect_no_warning(segment_by_switch(g[2], switch = rep(c(0, 1), 4)))
+})
+
 test_that("the real calibration stream has 20 or 21 ON/OFF segments", {
   g <- read_graspdb14(shared_file("data", "graspdb14", "00_calib-rad-su01.txt"))
   s <- segment_by_switch(g)

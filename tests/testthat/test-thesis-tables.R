@@ -182,7 +182,14 @@ test_that("printed tables show shares as percentages, the data keep the fraction
 
 test_that("thesis_table() refuses unknown tables and arguments", {
   d <- small_design()
-  expect_error(thesis_table("5.9", models = d$ms), class = "handmotion_error_bad_input")
+  # not a guess at the nearest id ("5.9" is as near "5.1" as "5.8"): the tables there are
+  cnd <- expect_error(thesis_table("5.9", models = d$ms), class = "handmotion_error_bad_input")
+  expect_false(grepl("Did you mean", conditionMessage(cnd)))
+  for (id in c("5.1", "5.2", "5.3", "5.3 claims", "5.6", "5.7", "5.8")) {
+    expect_match(conditionMessage(cnd), sprintf('"%s": ', id), fixed = TRUE)
+  }
+  expect_snapshot(thesis_table("5.9"), error = TRUE)
+  expect_identical(thesis_table(5.1, models = d$ms), thesis_table("5.1", models = d$ms))
   expect_error(thesis_table("5.1", d$ms), class = "handmotion_error_bad_input")
   expect_error(thesis_table("5.1", model = d$ms), class = "handmotion_error_bad_input")
   expect_identical(attr(thesis_table("5.3 claims", classification = d$cl), "most_attracting"),

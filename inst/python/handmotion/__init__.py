@@ -41,6 +41,16 @@ skeleton joints, used inside forward_kinematics()). Python-only helpers:
 of a file or folder the R package ships, R's ``system.file("extdata", ...)``, e.g. the real
 flexglove recordings for ``read_glove``).
 
+Progress
+--------
+Long calls (``fit_grasp_models``, ``evaluate_loso``, ...) show R's progress bar
+when they take more than 2 s: in a terminal, one bar redrawn in place on standard
+output; when standard output is not a terminal (redirected to a log, a notebook,
+pytest), none. R's options decide after that, e.g.
+``handmotion._bridge.r().r("options(progressr.enable = FALSE)")`` for none at all.
+``reproduce_thesis()`` prints one line per step with the time left (``progress=False``
+for none).
+
 Names R removed before its first release (``?handmotion-renamed``) are not kept as
 aliases: asking for one raises an ``AttributeError`` that names the replacement.
 """

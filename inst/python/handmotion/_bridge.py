@@ -13,6 +13,7 @@ Python twins of R classes register their converters with :func:`register_r_class
 so the dependencies run one way (``_bridge`` <- ``grasps`` <- ``handles`` <- ``api``).
 """
 
+import sys
 import warnings
 
 import numpy as np
@@ -37,8 +38,19 @@ def r():
         import rpy2.robjects as ro  # imported here so `import handmotion` stays cheap
 
         ro.r("suppressPackageStartupMessages(library(handmotion))")
+        # one progress bar redrawn in place in a terminal, none in a log or a
+        # notebook (R/python-bridge.R, py_progress_setup())
+        ro.r("handmotion:::py_progress_setup")(ro.BoolVector([_terminal()]))
         _state["ro"] = ro
     return _state["ro"]
+
+
+def _terminal():
+    """Is Python's standard output a terminal (where a bar can be redrawn in place)?"""
+    try:
+        return sys.stdout.isatty()
+    except (AttributeError, ValueError):
+        return False
 
 
 def internal(name):

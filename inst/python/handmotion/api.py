@@ -494,11 +494,12 @@ def handover_error(truth, recon=None, by="overall", **kwargs):
 
 
 def reproduce_thesis(output_dir="output", subjects=30, seed=1, loso_folds=None, grasps=None, quiet=True,
-                     progress=True):
+                     progress=True, overwrite=False):
     """The whole of the thesis' chapter 5 as an HTML report in ``output_dir`` (R's
-    ``reproduce_thesis()``; minutes on the default design). Returns the report's path."""
+    ``reproduce_thesis()``; minutes on the default design). Returns the report's path. An existing
+    report is replaced only with ``overwrite=True`` (else ``BadFileError``, as every writer)."""
     kw = dict(subjects=_check_count(subjects, "subjects", 2), seed=_check_seed(seed), quiet=bool(quiet),
-              progress=bool(progress))
+              progress=bool(progress), overwrite=bool(overwrite))
     if loso_folds is not None:
         kw["loso_folds"] = _check_count(loso_folds, "loso_folds", 2)
     if grasps is not None:

@@ -1,0 +1,87 @@
+# How fast the machine runs the report's kind of work right now, measured
+# before the report starts (issue 42: `make demo` said "about 2.3 min" and
+# took 4.9 min on a quiet machine, 11.5 min on a busy one). The cost model
+# (report_step_model) is in CPU seconds of a reference machine, which the
+# load of other jobs does not change; what the load changes is how much of
+# a core the report gets. A short calibration (the package's own fit on a
+# tiny data set: DTW, FPCA and the mixture EM, the kernels the report
+# spends its time in) measures both: its CPU time against the reference
+# machine's (how fast a core is) and its elapsed time against its CPU time
+# (how much of a core one process gets). The load average says how many
+# other jobs want the cores, which matters for the steps on two workers.
+
+# The calibration's CPU seconds (the two timed rounds below, installed -O2
+# build) on the reference machine of report_step_model, quiet. Measured on
+# that machine at load 17-19 (2 cores) with fit_grasp_models() on the same
+# data: 0.33-0.61 s, median 0.37 s, while fit_grasp_models() on the default
+# data took 17.4 s of CPU in the same process where issue 42 measured 8 s
+# quiet: CPU time itself grows 2.2 times under such a load (the cores'
+# caches and time shared), so the quiet figure is 0.37 / 2.2 = 0.17 s; the
+# two types fitted one by one take 0.86 of that (median of 4 rounds side by
+# side at load 14): 0.15 s.
+pace_reference_cpu <- 0.15
+
+# The pace now: `cpu` and `elapsed` seconds of the calibration, `speed`
+# (reference CPU / CPU: above 1 a faster core), `share` (CPU / elapsed:
+# the part of a core one process got), `load` (the 1-minute load average,
+# NA where the system does not say) and `cores`.
+machine_pace <- function() {
+  g <- simulate_grasps(subjects = 2, grasps = c(17, 25), objects = 2, trials = 2, seed = 1)
+  # (silent; one model at a time, in this process: fit_grasp_model() does
+  # not go through the future plan, which the calibration must not change,
+  # as a multisession plan would restart its workers)
+  old <- options(handmotion.progress = FALSE)
+  on.exit(options(old), add = TRUE)
+  fit <- function() for (k in c(17, 25)) invisible(fit_grasp_model(g, grasp = k, seed = 1))
+  fit()  # (the first call loads and compiles what the later ones reuse)
+  t0 <- proc.time()
+  fit()
+  fit()
+  t <- proc.time() - t0
+  cpu <- max(1e-3, t[["user.self"]] + t[["sys.self"]])
+  elapsed <- max(cpu, t[["elapsed"]])
+  pace_summary(cpu, elapsed, load_average(), parallel::detectCores())
+}
+
+# The pace from its measurements (separate, so tests can feed them).
+pace_summary <- function(cpu, elapsed, load = NA_real_, cores = 2L) {
+  list(cpu = cpu, elapsed = elapsed, speed = pace_reference_cpu / cpu, share = min(1, cpu / elapsed),
+       load = load, cores = max(1L, as.integer(cores %||% 1L)))
+}
+
+# The 1-minute load average (Linux, macOS via /proc where mounted), or NA.
+load_average <- function() {
+  tryCatch(scan("/proc/loadavg", n = 1L, quiet = TRUE), error = function(e) NA_real_,
+           warning = function(w) NA_real_)
+}
+
+# Seconds of elapsed time per CPU second of the cost model, for the steps in
+# the main process and for those on `workers` workers: the core's speed, and
+# the share of a core a process gets. One process measured its share; w
+# workers and the other jobs (the load average, counted before the report
+# itself adds to it) divide the cores between them, so each worker gets at
+# most cores / (load + w).
+pace_factors <- function(pace, workers = 1L) {
+  slow <- 1 / pace$speed
+  main <- slow / pace$share
+  w <- max(1L, workers)
+  contended <- if (is.na(pace$load)) 1 else max(1, (pace$load + w) / pace$cores)
+  c(main = main, workers = slow * max(1 / pace$share, contended))
+}
+
+# Is the machine busy? Then the first estimate says so: a process gets
+# less than 80% of a core, or the other jobs alone fill the cores.
+pace_busy <- function(pace) {
+  pace$share < 0.8 || isTRUE(pace$load >= pace$cores)
+}
+
+# The words of the first estimate's note on the machine.
+pace_text <- function(pace) {
+  load <- if (is.na(pace$load)) "" else sprintf("load %.1f on %d cores, ", pace$load, pace$cores)
+  if (pace_busy(pace)) {
+    sprintf("the machine is busy (%sa test fit got %.0f%% of a core): the estimate allows for it, and the run takes longer than on a quiet machine",
+            load, 100 * pace$share)
+  } else {
+    sprintf("%sa test fit ran at %.0f%% of the reference machine's speed", load, 100 * pace$speed)
+  }
+}
