@@ -138,39 +138,55 @@ mixture_marginal_quantile <- function(g, a, u) {
   (lo + hi) / 2
 }
 
-# n draws of all scores from a copula model: list(alpha n x p x ncomp,
-# beta n x warp_ncomp), from the current RNG stream (one rnorm(n * D)).
-draw_copula_scores <- function(model, n) {
-  cop <- model$dependence$copula
+# n draws of all scores from a model that joins its DoFs (the copula or the
+# kernel density, R/dependence-kernel.R): list(alpha n x p x ncomp, beta n x
+# warp_ncomp), from the current RNG stream.
+draw_joint_scores <- function(model, n) {
+  type <- model$dependence$type
+  dep <- model$dependence[[type]]
+  if (nrow(dep$columns) == 0L || n == 0L) return(scatter_scores(model, dep$columns, matrix(0, n, 0)))
+  V <- if (type == "kernel") draw_kernel_vectors(dep, n)
+       # normals, times the root, through the tabulated quantiles: one native
+       # pass (src/copula-draw.c; tests/testthat/helper-copula.R is its R
+       # transcription), one rnorm(n * D)
+       else .Call(hm_copula_draw, as.integer(n), dep$root, dep$z, dep$quantiles)
+  scatter_scores(model, dep$columns, V)
+}
+
+# The joint draws V (n x D, in the order of `cols`) as the generation
+# kernel takes them: alpha n x p x ncomp (zero for constant DoFs), beta n x
+# warp_ncomp.
+scatter_scores <- function(model, cols, V) {
+  n <- nrow(V)
   k <- model$settings$ncomp
-  kw <- model$settings$warp_ncomp
   alpha <- array(0, c(n, length(model$dofs), k))
-  beta <- matrix(0, n, kw)
-  D <- nrow(cop$columns)
-  if (D == 0L || n == 0L) return(list(alpha = alpha, beta = beta))
-  # normals, times the root, through the tabulated quantiles: one native pass
-  # (src/copula-draw.c; tests/testthat/helper-copula.R is its R transcription)
-  V <- .Call(hm_copula_draw, as.integer(n), cop$root, cop$z, cop$quantiles)
-  dof_cols <- which(!cop$columns$warp)
-  jdof <- match(cop$columns$dof[dof_cols], model$dofs)
+  beta <- matrix(0, n, model$settings$warp_ncomp)
+  if (ncol(V) == 0L) return(list(alpha = alpha, beta = beta))
+  dof_cols <- which(!cols$warp)
+  jdof <- match(cols$dof[dof_cols], model$dofs)
   # alpha[, j, c] is column j + p (c - 1) of alpha viewed as n x (p k)
   dim(alpha) <- c(n, length(model$dofs) * k)
-  alpha[, jdof + length(model$dofs) * (cop$columns$comp[dof_cols] - 1L)] <- V[, dof_cols]
+  alpha[, jdof + length(model$dofs) * (cols$comp[dof_cols] - 1L)] <- V[, dof_cols]
   dim(alpha) <- c(n, length(model$dofs), k)
-  warp_cols <- which(cop$columns$warp)
-  beta[, cop$columns$comp[warp_cols]] <- V[, warp_cols]
+  warp_cols <- which(cols$warp)
+  beta[, cols$comp[warp_cols]] <- V[, warp_cols]
   list(alpha = alpha, beta = beta)
 }
 
+# Does the model draw its DoFs jointly (copula or kernel density)?
+joint_dependence <- function(model) {
+  (model$dependence$type %||% "independent") %in% c("copula", "kernel")
+}
 
 # The correlation between DoFs' first FPC scores (p x p) a model carries:
-# the copula's for a copula model, zero off the diagonal for the thesis'
-# independent model. For print(), summary() and autoplot().
+# the copula's for a copula model, the kernel's shrunk score correlation for
+# a kernel model, zero off the diagonal for the thesis' independent model.
+# For print(), summary() and autoplot().
 dependence_matrix <- function(model) {
   p <- length(model$dofs)
   R <- diag(p)
   dimnames(R) <- list(model$dofs, model$dofs)
-  cop <- model$dependence$copula
+  cop <- model$dependence$copula %||% model$dependence$kernel
   if (is.null(cop)) return(R)
   first <- which(!cop$columns$warp & cop$columns$comp == 1L)
   idx <- match(cop$columns$dof[first], model$dofs)

@@ -79,7 +79,7 @@
 #'   data).
 #' @param fit With folds: a named list of argument lists for
 #'   [fit_grasp_models()], one per model compared (default: the thesis'
-#'   independent model and the copula model).
+#'   independent model, the copula model and the kernel model).
 #' @param split,folds With folds: as in [evaluate_loso()]; `folds` defaults to
 #'   5 (groups of subjects, or folds of recordings).
 #' @param n Generated grasps (and training recordings) per type and
@@ -111,7 +111,8 @@
 #' evaluate_generation(g, folds = 2, reps = 1, fit = list(copula = list(dependence = "copula")))
 evaluate_generation <- function(models, held_out = NULL, training = NULL, n = NULL, reps = 5,
                                 overlong = c(iqr_mult = 3, median_mult = 1.5), seed = 1,
-                                fit = list(thesis = list(), copula = list(dependence = "copula")),
+                                fit = list(thesis = list(), copula = list(dependence = "copula"),
+                                           kernel = list(dependence = "kernel")),
                                 split = c("auto", "subject", "recording"), folds = 5) {
   call <- rlang::caller_env()
   if (inherits(models, "grasps")) {

@@ -49,9 +49,11 @@ generics::generate
 #' without a callback.
 #'
 #' **Dependence.** A model fitted with `dependence = "copula"` draws all FPC
-#' scores of all DoFs and the warp scores jointly from its Gaussian copula
-#' (see [fit_grasp_model()]), so the fingers move together as in the
-#' recordings; the thesis' model draws each DoF on its own.
+#' scores of all DoFs and the warp scores jointly from its Gaussian copula,
+#' one fitted with `dependence = "kernel"` from a kernel density on the
+#' training recordings' joint score vectors (see [fit_grasp_model()]), so the
+#' fingers move together as in the recordings; the thesis' model draws each
+#' DoF on its own.
 #'
 #' **Joint limits.** With `limits = TRUE` every DoF whose recordings respect
 #' the default hand's joint limits ([hand_skeleton()], mapped by
@@ -98,7 +100,7 @@ generics::generate
 #'   `handmotion_warning_no_limits` says when a model has none. `FALSE`:
 #'   none. `NULL` (default): the sensor ranges always (a glove cannot read
 #'   outside them), and the joint limits for a model fitted with
-#'   `dependence = "copula"` (the thesis' independent model generates its
+#'   `dependence = "copula"` or `"kernel"` (the thesis' independent model generates its
 #'   angles exactly as the thesis did). See Joint limits.
 #' @param phases For a model of recordings trimmed to their motion: add the
 #'   rest before and the hold after each generated motion (`TRUE`, default;
@@ -279,8 +281,9 @@ sampler_matches <- function(gmms, st, tol = 1e-6) {
 # errors naming the model.
 draw_batch <- function(model, n, warp = TRUE, limits = NULL, call = rlang::caller_env()) {
   smp <- model$sampler %||% build_sampler(model)
-  # the copula model draws its scores here, the independent one in the kernel
-  scores <- if (identical(model$dependence$type, "copula")) draw_copula_scores(model, n)
+  # the copula and kernel models draw their scores here, the independent one
+  # in the native kernel
+  scores <- if (joint_dependence(model)) draw_joint_scores(model, n)
   lim <- generation_limits(model, limits)
   # a zero-width range (a stuck channel) is held exactly afterwards, not mapped
   flat <- !is.na(lim$lo) & lim$hi <= lim$lo
@@ -309,7 +312,7 @@ generation_limits <- function(model, on) {
   lim <- model$limits
   if (!isFALSE(on) && !is.null(lim) && nrow(lim)) {
     src <- lim$source %||% rep("skeleton", nrow(lim))
-    keep <- lim$enforced & (isTRUE(on) | src != "skeleton" | identical(model$dependence$type, "copula"))
+    keep <- lim$enforced & (isTRUE(on) | src != "skeleton" | joint_dependence(model))
     lim <- lim[keep, , drop = FALSE]
     j <- match(lim$dof, model$dofs)
     lo[j] <- lim$lo
@@ -394,6 +397,15 @@ validate_sampler <- function(model, call = rlang::caller_env()) {
         !identical(dim(cop$root), c(D, D)) || !is.double(cop$quantiles) ||
         NCOL(cop$quantiles) != D || NROW(cop$quantiles) != length(cop$z)) {
       bad("its copula (columns, root, quantiles) is incomplete")
+    }
+  }
+  if (identical(model$dependence$type, "kernel")) {
+    kern <- model$dependence$kernel
+    D <- NROW(kern$columns)
+    if (!is.list(kern) || !is.data.frame(kern$columns) || !is.double(kern$root) ||
+        !identical(dim(kern$root), c(D, D)) || !is.double(kern$scores) || NCOL(kern$scores) != D ||
+        NROW(kern$scores) < 1L || anyNA(kern$scores) || anyNA(kern$root)) {
+      bad("its kernel density (columns, scores, root) is incomplete")
     }
   }
   invisible(model)

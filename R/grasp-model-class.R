@@ -21,6 +21,9 @@ new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, ar
   model$sampler <- build_sampler(model)
   model$dependence <- list(type = settings$dependence,
                            copula = if (settings$dependence == "copula") fit_score_copula(model))
+  # only a kernel model carries the kernel element (an independent or copula
+  # model is the same list as before the kernel model existed)
+  if (settings$dependence == "kernel") model$dependence$kernel <- fit_score_kernel(model)
   model$limits <- limits
   # the labels the model was fitted among (its own is `grasp`) and the glove
   # of its recordings, so generated grasps carry both
@@ -51,7 +54,7 @@ validate_grasp_model <- function(x) {
     inherits(x$warp$fpca, "fpca_fit"), length(x$warp$fpca$mean) == L,
     nrow(warp_basis(x)$components) == L, nrow(warp_basis(x)$scores) == n,
     is.data.frame(x$removed), is.data.frame(x$fallbacks), is.data.frame(x$degenerate_data),
-    x$dependence$type %in% c("independent", "copula"),
+    x$dependence$type %in% c("independent", "copula", "kernel"),
     is.null(x$alignment) || (inherits(x$alignment, "grasp_alignment") && dim(x$alignment$warped)[1] == n)
   )
   x

@@ -16,6 +16,10 @@ model_defaults <- list(
                      mixture_guard = "none", fpc_scores = "trapezoid"),
   copula = list(ncomp = 4L, warp_ncomp = 1L, mixture_components = 1L, warping = "linear",
                 mixture_guard = "bic", fpc_scores = "least_squares"))
+# the kernel model draws the FPC and warp scores as the copula model does
+# (all at once), so it takes the copula's basis; its mixtures are fitted for
+# print() and the independent marginals only
+model_defaults$kernel <- model_defaults$copula
 
 # The settings a model was fitted with, as print() shows them: those left
 # to the defaults (which depend on `dependence` and, for the warping, on

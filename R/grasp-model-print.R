@@ -77,8 +77,13 @@ format_dependence <- function(model) {
   n_guard <- sum(model$fallbacks$step %in% c("mixture_guard", "warp_mixture_guard"))
   g <- if (guard == "none") "no mixture guard" else
     sprintf("mixture guard %s (%d of %d mixtures one Gaussian)", guard, n_guard, length(model$dofs) + 1L)
-  if (!identical(model$dependence$type, "copula")) {
+  if (!joint_dependence(model)) {
     return(paste0("dependence: independent DoFs (the thesis' model); ", g))
+  }
+  if (identical(model$dependence$type, "kernel")) {
+    kern <- model$dependence$kernel
+    return(sprintf("dependence: kernel density over %d scores of %d recordings (bandwidth %.2f of the scores' shrunk covariance, shrinkage %.2f); %s",
+                   nrow(kern$columns), kern$n, kern$bandwidth, kern$shrinkage, g))
   }
   R <- dependence_matrix(model)
   r <- abs(R[upper.tri(R)])

@@ -21,7 +21,8 @@
 #'   [autoplot.grasp_alignment()] of `object$alignment` draws one panel.
 #' * `type = "dependence"`: the correlation between the DoFs' first FPC
 #'   scores the model generates with, as a heat map: the Gaussian copula's
-#'   for `dependence = "copula"`, the identity for the thesis' independent
+#'   for `dependence = "copula"`, the kernel density's shrunk score
+#'   correlation for `dependence = "kernel"`, the identity for the thesis' independent
 #'   model (see [fit_grasp_model()]).
 #'
 #' @param object A `grasp_model` from [fit_grasp_model()].
@@ -66,7 +67,8 @@ plot_model_dependence <- function(object, dofs) {
   R <- dependence_matrix(object)[dofs, dofs, drop = FALSE]
   d <- data.frame(a = factor(rep(dofs, length(dofs)), levels = dofs),
                   b = factor(rep(dofs, each = length(dofs)), levels = rev(dofs)), r = as.vector(R))
-  copula <- identical(object$dependence$type, "copula")
+  how <- switch(object$dependence$type %||% "independent", copula = "Gaussian copula",
+                kernel = "kernel density (shrunk score correlation)", "independent (the thesis' model)")
   ggplot2::ggplot(d, ggplot2::aes(.data$a, .data$b, fill = .data$r)) +
     ggplot2::geom_tile(colour = "white") +
     ggplot2::scale_fill_gradient2(low = "#2166ac", mid = "white", high = "#b2182b", limits = c(-1, 1),
@@ -75,7 +77,7 @@ plot_model_dependence <- function(object, dofs) {
     ggplot2::labs(x = NULL, y = NULL,
                   title = object$grasp,
                   subtitle = paste("correlation of the DoFs' first FPC scores:",
-                                   if (copula) "Gaussian copula" else "independent (the thesis' model)")) +
+                                   how)) +
     ggplot2::theme_minimal(base_size = 11) +
     ggplot2::theme(axis.text.x = ggplot2::element_text(angle = 90, vjust = 0.5, hjust = 1))
 }

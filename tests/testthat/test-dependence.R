@@ -54,7 +54,7 @@ test_that("the copula keeps each score's marginal and carries the training corre
   expect_true(cop$shrinkage >= 0 && cop$shrinkage <= 1)
   expect_equal(unname(diag(cop$cor)), rep(1, D_all))
   set.seed(1)
-  s <- draw_copula_scores(m, 20000)
+  s <- draw_joint_scores(m, 20000)
   S <- score_matrix(m, cop$columns)
   # the drawn scores' correlation is the copula's (normal scores, rank-based)
   D <- cbind(matrix(s$alpha, 20000), s$beta)

@@ -235,12 +235,14 @@ def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", **kwargs)
     ``dependence="independent"`` is the thesis' model (DTW, two FPCs per DoF, a mixture per
     DoF, each DoF on its own); ``"copula"`` joins all DoFs' scores and the duration by a
     Gaussian copula so that generated fingers move together (linear time normalisation, four
-    least-squares FPCs per DoF). Other keyword arguments (``ncomp``, ``mixture_components``, ``warping``,
+    least-squares FPCs per DoF); ``"kernel"`` draws that joint score vector from a kernel
+    density on the training recordings' own vectors (same basis; keeps the clusters of a type
+    grasped round a few objects). Other keyword arguments (``ncomp``, ``mixture_components``, ``warping``,
     ``fpc_scores``, ``mixture_guard``, ...) go to R's ``fit_grasp_model()``, which documents
     both models and their defaults.
     """
-    if dependence not in ("independent", "copula"):
-        raise BadInputError(f"dependence must be 'independent' or 'copula', not {dependence!r}")
+    if dependence not in ("independent", "copula", "kernel"):
+        raise BadInputError(f"dependence must be 'independent', 'copula' or 'kernel', not {dependence!r}")
     g = _as_grasps(x)
     return GraspModels(call("fit_grasp_models", g, grasps=_grasps_arg(grasps), seed=_check_seed(seed),
                             dependence=dependence, **kwargs))
