@@ -370,7 +370,8 @@ print.grasp_models <- function(x, ...) {
                 if (length(types) == 1L) "" else "s", name_list(types, 5L)))
   }
   if (!is.null(attr(x, "temperature")) && nrow(s) > 1L) {
-    cat(sprintf("  class probabilities: softmax(-distance / %.3g) (see ?predict.grasp_models)\n", attr(x, "temperature")))
+    cat(sprintf("  class probabilities: softmax(-distance / %.3g), distance: %s (see ?fit_grasp_models)\n",
+                attr(x, "temperature"), models_distance(x)))
   }
   if (nrow(f)) cat(sprintf("  failed: %s\n", paste0(f$grasp, " (", f$message, ")", collapse = "; ")))
   invisible(x)
