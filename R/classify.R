@@ -15,8 +15,12 @@
 #' best, following the two schemes of the thesis (section 4.2):
 #'
 #' * `"fpca"` (Table 5.6): each recording is warped into each model's time by
-#'   the model's mean warping function, projected on the model's FPCs, and
-#'   scored by the L2 distance between the warped recording and its projection
+#'   the model's mean warping function and projected on the model's FPCs. A
+#'   set fitted with `fit_grasp_models(distance = "likelihood")` (the
+#'   default) scores it by minus twice its log-likelihood under the model
+#'   (its FPC scores and its residual; see [fit_grasp_models()]); one fitted
+#'   with `distance = "residual"` (the thesis', used by [reproduce_thesis()])
+#'   by the L2 distance between the warped recording and its projection
 #'   (eq. 4.4, over all DoFs; see [project()]), measured as the
 #'   thesis measured it: on a grid of frame numbers `1..T_i` (fda.usc's default
 #'   for a matrix of curves), so model *i*'s distance is `project()`'s, which
