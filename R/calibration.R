@@ -89,7 +89,7 @@ calibration_report <- function(x = NULL, models = NULL, last_frame = NULL, seed 
   }
   if (is.null(x)) x <- simulate_grasps()
   check_grasps(x, call = call)
-  if (is.null(models)) models <- fit_grasp_models(x, seed = seed)
+  if (is.null(models)) models <- fit_grasp_models(x, seed = seed, distance = "residual")
   if (!inherits(models, "grasp_models")) {
     hm_abort("{.arg models} must be a {.cls grasp_models} object from {.fn fit_grasp_models}, not {.obj_type_friendly {models}}.",
              "bad_input", argument = "models", call = call)
@@ -103,7 +103,7 @@ calibration_report <- function(x = NULL, models = NULL, last_frame = NULL, seed 
   loso <- NULL
   if (isTRUE(held_out)) {
     ev_lf <- evaluate_loso(x, "last_frame", fit_args = list(ncomp = 5), folds = folds, seed = seed)
-    ev_fp <- evaluate_loso(x, "fpca", fit_args = list(seed = seed), folds = folds, seed = seed)
+    ev_fp <- evaluate_loso(x, "fpca", fit_args = list(seed = seed, distance = "residual"), folds = folds, seed = seed)
     loso <- data.frame(classifier = c("last_frame", "fpca"),
                        in_sample = c(ours$accuracy[["last_frame"]], ours$accuracy[["fpca"]]),
                        held_out = unname(c(ev_lf$accuracy[["held_out"]], ev_fp$accuracy[["held_out"]])),
@@ -249,7 +249,7 @@ calibration_report_seeds <- function(seeds, x, models, last_frame, seed, held_ou
   }
   reps <- lapply(seeds, function(s) {
     g <- simulate_grasps(seed = s)
-    calibration_report(g, models = fit_grasp_models(g, seed = seed), last_frame = fit_last_frame_pca(g, ncomp = 5))
+    calibration_report(g, models = fit_grasp_models(g, seed = seed, distance = "residual"), last_frame = fit_last_frame_pca(g, ncomp = 5))
   })
   calibration_combine(reps, seeds)
 }

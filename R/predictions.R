@@ -32,8 +32,10 @@
 #' `softmax(-distance / temperature)`, so the most probable class is always
 #' the predicted one:
 #'
-#' * FPCA model set: the thesis' distance (eq. 4.4 on frames `1..T_i`, see
-#'   [classify()]). The temperature is fitted by [fit_grasp_models()] by
+#' * FPCA model set: by default minus twice the recording's log-likelihood
+#'   under each type's model (scores and residual, see the `distance`
+#'   argument of [fit_grasp_models()]); with `distance = "residual"` the
+#'   thesis' distance (eq. 4.4 on frames `1..T_i`, see [classify()]). The temperature is fitted by [fit_grasp_models()] by
 #'   maximum likelihood: the value that maximises the sum over the training
 #'   recordings of the log probability of their own type. The distances are
 #'   in-sample (each model saw the recordings of its type); with dozens of

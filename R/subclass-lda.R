@@ -89,12 +89,18 @@ subclass_labels <- function(F, y, k, seed) {
 }
 
 # The number of subclasses with the best inner cross-validated accuracy on
-# the training recordings (the smaller on a tie): up to five folds of
-# subjects, or five stratified folds of recordings with one subject. On a
-# large training set the choice is made on a seeded sample of
-# `subclass_choice_max` recordings, the same share of every type (the
-# default data's 8,600 training recordings would cost ten times the fit).
-subclass_choice_max <- 1500L
+# the training recordings (the smaller on a tie): up to
+# `subclass_choice_folds` folds of subjects, or five stratified folds of
+# recordings with one subject. On a large training set the choice is made on
+# a seeded sample of `subclass_choice_max` recordings, the same share of
+# every type (the default data's 8,600 training recordings would cost ten
+# times the fit). Both bounds are for cost: with 1500 recordings and five
+# folds the default data's 30-fold evaluate_loso() took 74 s of CPU against
+# 29 s without subclasses; the choice there is one subclass either way, and
+# flexglove's training sets (one participant, about 300 recordings) never
+# reach either bound, so its figure is unchanged.
+subclass_choice_max <- 600L
+subclass_choice_folds <- 3L
 
 choose_subclasses <- function(F, y, prior, subjects, seed) {
   if (nrow(F) > subclass_choice_max) {
@@ -109,7 +115,7 @@ choose_subclasses <- function(F, y, prior, subjects, seed) {
   }
   subj <- if (is.null(subjects)) character(0) else unique(stats::na.omit(subjects))
   if (length(subj) >= 2L) {
-    groups <- with_seed(seed, split(sample(subj), rep_len(seq_len(min(5L, length(subj))), length(subj))))
+    groups <- with_seed(seed, split(sample(subj), rep_len(seq_len(min(subclass_choice_folds, length(subj))), length(subj))))
     folds <- lapply(groups, function(s) !is.na(subjects) & subjects %in% s)
   } else {
     id <- stratified_fold_ids(y, min(5L, max(2L, min(table(y)))), seed)

@@ -142,7 +142,7 @@ measure_seeds <- function(p, full) {
     if (!full) {
       return(list(pc5 = cumulative_variance(lf)$pc5, recall_last_frame = per_type_recall(classify(lf, g), types)))
     }
-    ty <- calibration_measure(g, fit_grasp_models(g, seed = 1), lf)$types
+    ty <- calibration_measure(g, fit_grasp_models(g, seed = 1, distance = "residual"), lf)$types
     stopifnot(identical(ty$grasp, types))
     as.list(ty[c("pc5", "recall_last_frame", "mean_var", "recall_fpca")])
   })
