@@ -100,7 +100,8 @@ test_that("the kernel's projection equals the former R path (stacked, warp index
 
 test_that("classify()'s FPCA distances equal the former R path on a model set", {
   g <- simulate_grasps(subjects = 4, grasps = c(1, 9, 17), objects = 2, trials = 2, seed = 2)
-  ms <- fit_grasp_models(g, seed = 1)
+  # the thesis' eq. 4.4 residual distance, which the former R path computed
+  ms <- fit_grasp_models(g, seed = 1, distance = "residual")
   cl <- classify(ms, g)
   ref <- vapply(fitted_models(ms), function(m) project_reference(m, g)$distance * sqrt(m$target_length - 1),
                 numeric(length(g)))
