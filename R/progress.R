@@ -79,26 +79,23 @@ progress_release <- function() progress_state$active <- FALSE
 # chunk run on a future worker calls it (the worker's own process does not
 # know the main process already counts: without it every inner fit would
 # send its own steps back, and the bar would jump between progressors).
-local_counted_outside <- function(envir = parent.frame()) {
-  old <- progress_state$active
-  progress_state$active <- TRUE
-  do.call(base::on.exit, list(as.call(list(progress_restore, old)), add = TRUE), envir = envir)
-  invisible()
-}
-
-progress_restore <- function(old) progress_state$active <- old
+local_counted_outside <- function(envir = parent.frame()) local_progress_flag("active", envir)
 
 # Until the calling function returns, a listener of its own (reproduce_thesis()'s
 # report printer) receives the steps: the long calls count but draw no bar
 # (a bar's with_progress() would catch the steps before the listener).
-local_progress_listener <- function(envir = parent.frame()) {
-  old <- progress_state$listener
-  progress_state$listener <- TRUE
-  do.call(base::on.exit, list(as.call(list(progress_listener_restore, old)), add = TRUE), envir = envir)
+local_progress_listener <- function(envir = parent.frame()) local_progress_flag("listener", envir)
+
+# Sets one flag of progress_state to TRUE until `envir`'s function returns,
+# then puts back what it was (the two local_*() above).
+local_progress_flag <- function(flag, envir) {
+  old <- progress_state[[flag]]
+  progress_state[[flag]] <- TRUE
+  do.call(base::on.exit, list(as.call(list(progress_flag_restore, flag, old)), add = TRUE), envir = envir)
   invisible()
 }
 
-progress_listener_restore <- function(old) progress_state$listener <- old
+progress_flag_restore <- function(flag, old) assign(flag, old, envir = progress_state)
 
 # Is the call inside the user's own progressr::with_progress()? Then the
 # progress goes to the user's handlers: a second with_progress() here would
