@@ -238,8 +238,8 @@ print_confusion_compact <- function(m, levels) {
 #' @param object A [grasp_confusion()] object.
 #' @param ... Unused.
 #' @return A data frame of class `summary_grasp_confusion` with columns
-#'   `metric`, `class` (`NA` for overall metrics), `estimate` and `n` (the
-#'   denominator).
+#'   `.metric`, `class` (`NA` for overall metrics), `.estimate` and `n` (the
+#'   denominator): yardstick's names for the metric and its value.
 #' @export
 #' @examples
 #' cm <- grasp_confusion(c("Tripod", "Tripod", "Ring"), c("Tripod", "Ring", "Ring"))
@@ -253,16 +253,16 @@ summary.grasp_confusion <- function(object, ...) {
   precision <- ifelse(n_pred > 0, correct / n_pred, NA_real_)
   n <- sum(m)
   overall <- data.frame(
-    metric = c("accuracy", "balanced_accuracy", "macro_precision"),
+    .metric = c("accuracy", "balanced_accuracy", "macro_precision"),
     class = NA_character_,
-    estimate = c(if (n > 0) sum(correct) / n else NA_real_, mean_or_na(recall), mean_or_na(precision)),
+    .estimate = c(if (n > 0) sum(correct) / n else NA_real_, mean_or_na(recall), mean_or_na(precision)),
     n = c(n, sum(n_truth > 0), sum(n_pred > 0)),
     stringsAsFactors = FALSE)
   lev <- object$levels
   per_class <- data.frame(
-    metric = rep(c("recall", "precision"), each = length(lev)),
+    .metric = rep(c("recall", "precision"), each = length(lev)),
     class = rep(lev, 2),
-    estimate = c(unname(recall), unname(precision)),
+    .estimate = c(unname(recall), unname(precision)),
     n = c(unname(n_truth), unname(n_pred)),
     stringsAsFactors = FALSE)
   out <- rbind(overall, per_class)
@@ -278,18 +278,18 @@ print.summary_grasp_confusion <- function(x, ...) {
   ov <- d[is.na(d$class), , drop = FALSE]
   cat("Confusion-matrix metrics\n")
   for (i in seq_len(nrow(ov))) {
-    cat(sprintf("  %-18s %s  (n = %d)\n", ov$metric[i], fmt_pct(ov$estimate[i]), as.integer(ov$n[i])))
+    cat(sprintf("  %-18s %s  (n = %d)\n", ov$.metric[i], fmt_pct(ov$.estimate[i]), as.integer(ov$n[i])))
   }
   pc <- d[!is.na(d$class), , drop = FALSE]
   if (nrow(pc) > 0) {
     lev <- unique(pc$class)
-    rec <- pc[pc$metric == "recall", ]
-    pre <- pc[pc$metric == "precision", ]
+    rec <- pc[pc$.metric == "recall", ]
+    pre <- pc[pc$.metric == "precision", ]
     wide <- data.frame(class = lev,
                        truth_n = as.integer(rec$n[match(lev, rec$class)]),
-                       recall = fmt_pct(rec$estimate[match(lev, rec$class)]),
+                       recall = fmt_pct(rec$.estimate[match(lev, rec$class)]),
                        predicted_n = as.integer(pre$n[match(lev, pre$class)]),
-                       precision = fmt_pct(pre$estimate[match(lev, pre$class)]),
+                       precision = fmt_pct(pre$.estimate[match(lev, pre$class)]),
                        stringsAsFactors = FALSE)
     cat("Per class:\n")
     print(wide, row.names = FALSE, right = FALSE)

@@ -252,7 +252,7 @@ print.grasp_evaluation <- function(x, ...) {
 #' @param object A [evaluate_loso()] result.
 #' @param ... Unused.
 #' @return A data frame (class `grasp_evaluation_summary`) with columns
-#'   `metric`, `class`, `held_out` and `in_sample` (`NA` when the in-sample
+#'   `.metric`, `class`, `held_out` and `in_sample` (`NA` when the in-sample
 #'   fit was not computed), the rows of [summary.grasp_confusion()]; the
 #'   shares are stored as fractions and printed as percentages.
 #' @export
@@ -264,8 +264,8 @@ print.grasp_evaluation <- function(x, ...) {
 #' summary(evaluate_loso(g, method = "last_frame", fit_args = list(ncomp = 2)))
 summary.grasp_evaluation <- function(object, ...) {
   h <- as.data.frame(unclass(summary(object$confusion)))
-  out <- data.frame(metric = h$metric, class = h$class, held_out = h$estimate, stringsAsFactors = FALSE)
-  out$in_sample <- if (is.null(object$in_sample)) NA_real_ else summary(object$in_sample)$estimate
+  out <- data.frame(.metric = h$.metric, class = h$class, held_out = h$.estimate, stringsAsFactors = FALSE)
+  out$in_sample <- if (is.null(object$in_sample)) NA_real_ else summary(object$in_sample)$.estimate
   # prints the shares as percentages (R/thesis-table-print.R)
   class(out) <- c("grasp_evaluation_summary", class(out))
   out

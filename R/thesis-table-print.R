@@ -42,7 +42,7 @@ unclass_thesis_table <- function(x) {
 # precision), held out beside in-sample, printed as percentages.
 #' @export
 print.grasp_evaluation_summary <- function(x, ...) {
-  out <- as.data.frame(x[c("metric", "class", "held_out", "in_sample")])
+  out <- as.data.frame(x[c(".metric", "class", "held_out", "in_sample")])
   class(out) <- "data.frame"
   out$class[is.na(out$class)] <- ""
   # words left-aligned (padded), percentages right-aligned

@@ -55,7 +55,7 @@ test_that("last-frame classification is near 100% on planted well-separated type
   expect_equal(cl$method, "last_frame")
   expect_equal(dim(cl$distances), c(length(g), 5L))
   acc <- summary(grasp_confusion(cl))
-  expect_gte(acc$estimate[acc$metric == "accuracy"], 0.98)
+  expect_gte(acc$.estimate[acc$.metric == "accuracy"], 0.98)
   # same result from a fitted model; the method follows from its class
   fit <- fit_grasp_classifier(g, method = "last_frame", ncomp = 5)
   expect_equal(classify(fit, g)$predictions, cl$predictions)
@@ -79,7 +79,7 @@ test_that("one-type data: every recording goes to the only type, accuracy 1", {
   expect_true(all(cl$predictions$predicted == "Index Finger Extension"))
   cm <- grasp_confusion(cl)
   expect_equal(cm$levels, "Index Finger Extension")
-  expect_equal(summary(cm)$estimate[1], 1)
+  expect_equal(summary(cm)$.estimate[1], 1)
 })
 
 test_that("FPCA classification is near 100% on planted well-separated types", {
@@ -123,7 +123,7 @@ test_that("summary, autoplot and as.data.frame of a classification", {
   cl <- classify(fit_grasp_classifier(g, method = "last_frame", ncomp = 2), g)
   s <- summary(cl)
   expect_s3_class(s, "summary_grasp_confusion")
-  expect_equal(s$estimate[s$metric == "accuracy"], 1)
+  expect_equal(s$.estimate[s$.metric == "accuracy"], 1)
   b <- ggplot2::ggplot_build(ggplot2::autoplot(cl))
   expect_equal(nrow(b$data[[1]]), 4)
   expect_equal(as.data.frame(cl), cl$predictions)

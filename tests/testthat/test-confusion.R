@@ -23,8 +23,10 @@ test_that("the table has rows = prediction and columns = truth", {
 test_that("summary gives the hand-computed metrics", {
   s <- summary(grasp_confusion(known_truth, known_pred))
   expect_s3_class(s, "data.frame")
+  # yardstick's names for the metric and its value
+  expect_named(s, c(".metric", "class", ".estimate", "n"))
   est <- function(metric, class = NA) {
-    s$estimate[s$metric == metric & (if (is.na(class)) is.na(s$class) else s$class %in% class)]
+    s$.estimate[s$.metric == metric & (if (is.na(class)) is.na(s$class) else s$class %in% class)]
   }
   expect_equal(est("accuracy"), 0.7)
   expect_equal(est("balanced_accuracy"), 0.75)
@@ -35,13 +37,13 @@ test_that("summary gives the hand-computed metrics", {
   expect_equal(est("precision", "A"), 2 / 3)
   expect_equal(est("precision", "B"), 0.5)
   expect_equal(est("precision", "C"), 1)
-  expect_equal(s$n[s$metric == "recall"], c(4, 2, 4))
+  expect_equal(s$n[s$.metric == "recall"], c(4, 2, 4))
 })
 
 test_that("a class never predicted has NA precision, not a silent zero", {
   s <- summary(grasp_confusion(c("A", "B"), c("A", "A"), levels = c("A", "B")))
-  expect_true(is.na(s$estimate[s$metric == "precision" & s$class %in% "B"]))
-  expect_equal(s$estimate[s$metric == "recall" & s$class %in% "B"], 0)
+  expect_true(is.na(s$.estimate[s$.metric == "precision" & s$class %in% "B"]))
+  expect_equal(s$.estimate[s$.metric == "recall" & s$class %in% "B"], 0)
 })
 
 test_that("missing truth or prediction is counted, not dropped silently", {
@@ -68,7 +70,7 @@ test_that("as.data.frame gives the long form and round-trips through a table", {
   expect_equal(d$n[d$predicted == "B" & d$truth == "A"], 2L)
   back <- grasp_confusion(cm$table)
   expect_equal(unclass(back$table), unclass(cm$table))
-  expect_equal(summary(back)$estimate, summary(cm)$estimate)
+  expect_equal(summary(back)$.estimate, summary(cm)$.estimate)
   from_df <- grasp_confusion(data.frame(truth = known_truth, predicted = known_pred))
   expect_equal(unclass(from_df$table), unclass(cm$table))
   expect_error(grasp_confusion(matrix(1:6, 2)), class = "handmotion_error_bad_input")

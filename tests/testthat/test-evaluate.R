@@ -18,9 +18,9 @@ test_that("LOSO on a planted design: held-out accuracy <= in-sample, bookkeeping
   # each recording is predicted exactly once, by the fold that held out its subject
   expect_setequal(ev$predictions$id, g$meta$id)
   s <- summary(ev)
-  expect_named(s, c("metric", "class", "held_out", "in_sample"))
-  expect_equal(s$held_out[s$metric == "accuracy"], ev$accuracy[["held_out"]])
-  expect_equal(s$in_sample[s$metric == "accuracy"], ev$accuracy[["in_sample"]])
+  expect_named(s, c(".metric", "class", "held_out", "in_sample"))
+  expect_equal(s$held_out[s$.metric == "accuracy"], ev$accuracy[["held_out"]])
+  expect_equal(s$in_sample[s$.metric == "accuracy"], ev$accuracy[["in_sample"]])
   # printed for a person: percentages, not raw fractions
   out <- capture.output(print(s))
   expect_true(any(grepl(sprintf("%.1f%%", 100 * ev$accuracy[["held_out"]]), out, fixed = TRUE)))

@@ -343,7 +343,7 @@ def classify(models, x, method=None, **kwargs):
     conf = call("grasp_confusion", res)
     table = ro.r["as.data.frame.matrix"](ro.r["unclass"](conf.rx2("table")))
     summ = r_to_py(call(ro.r["summary"], conf))
-    acc = summ.loc[summ["metric"] == "accuracy", "estimate"]
+    acc = summ.loc[summ[".metric"] == "accuracy", ".estimate"]
     return {"classification": RHandle(res),
             "predictions": r_to_py(ro.r["as.data.frame"](res)),
             "confusion": r_to_py(table).set_axis(list(ro.r["rownames"](table)), axis=0),
