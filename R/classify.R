@@ -60,14 +60,20 @@
 #' projection fails gives a column of `NA` distances, recorded in `$failures`
 #' with a warning; a recording with no finite distance gets `NA` as prediction.
 #'
-#' @param models Fitted models: a [fit_grasp_models()] result (FPCA distance)
-#'   or a [fit_grasp_classifier()] result (any `method`). A `grasps` object is refused with a
+#' @param models A fitted classifier (of the family `grasp_classifier`, see
+#'   [summary.grasp_classifier()]): a [fit_grasp_models()] result (FPCA
+#'   distance), a [fit_grasp_classifier()] result (any `method`) or a
+#'   [fit_grasp_recognizer()] result. A `grasps` object is refused with a
 #'   hint: fitting is a separate, visible step (for a held-out estimate see
 #'   [evaluate_loso()], which fits on training subjects only).
 #' @param x A [grasps()] object to classify.
 #' @param method `"fpca"`, `"last_frame"`, `"discriminant"` or
 #'   `"weighted_fpca"`. Inferred from `models`; giving a method that
-#'   contradicts it is an error.
+#'   contradicts it is an error. This default is the one list of the
+#'   classifiers' method names ([evaluate_loso()] takes the same; the Python
+#'   front end reads it as `eval(formals(handmotion::classify)$method)`). A
+#'   [fit_grasp_recognizer()] result is classified from whole recordings
+#'   (method `"recognizer"`, inferred only).
 #' @param ... Not used; an error if given.
 #' @return An object of class `grasp_classification`: a list with
 #'   `predictions` (data frame: `id`, `subject`, `truth`, `predicted`,
@@ -113,16 +119,10 @@ classify <- function(models, x, method = c("fpca", "last_frame", "discriminant",
 }
 
 resolve_method <- function(models, method, defaulted, call = rlang::caller_env()) {
-  implied <- if (inherits(models, "last_frame_pca")) "last_frame"
-             else if (inherits(models, "grasp_models")) "fpca"
-             else if (inherits(models, "grasp_classifier")) "discriminant"
-             else if (inherits(models, "weighted_fpca")) "weighted_fpca" else NA_character_
-  if (is.na(implied)) {
-    hm_abort("{.arg models} must be a {.cls grasp_models}, {.cls last_frame_pca}, {.cls grasp_classifier} or {.cls weighted_fpca} object, not {.obj_type_friendly {models}}.",
-             "bad_input", argument = "models", call = call)
-  }
+  check_classifier(models, "models", call = call)
+  implied <- classifier_method(models)
   if (defaulted) return(implied)
-  method <- check_choice(method, c("fpca", "last_frame", "discriminant", "weighted_fpca"), arg = "method", call = call)
+  method <- check_choice(method, classify_methods(), arg = "method", call = call)
   if (method != implied) {
     hm_abort("{.arg method} is {.val {method}} but {.arg models} is a {.cls {class(models)[1]}} ({.val {implied}}) fit.",
              "bad_input", argument = "method", call = call)
@@ -130,8 +130,18 @@ resolve_method <- function(models, method, defaulted, call = rlang::caller_env()
   method
 }
 
-# Fit the models a method needs on a training set (evaluate_loso()).
+# The methods classify() and evaluate_loso() take by name: the default of
+# classify()'s `method` (the one list; the Python front end reads it there).
+classify_methods <- function() eval(formals(classify)$method)
+
+# Fit the models a method needs on a training set (evaluate_loso()); a
+# method given as a function is the fitter of a classifier of the family.
 fit_classifier <- function(train, method, fit_args) {
+  if (is.function(method)) {
+    fit <- do.call(method, c(list(train), fit_args))
+    if (!inherits(fit, "grasp_classifier")) not_a_classifier(fit, "method", rlang::caller_env())
+    return(fit)
+  }
   if (method != "fpca") return(do.call(fit_grasp_classifier, c(list(train, method = method), fit_args)))
   # One Gaussian per DoF's scores (mixture_components = 1, closed form)
   # instead of the EM for two components halves the refit. The residual
@@ -142,28 +152,6 @@ fit_classifier <- function(train, method, fit_args) {
   # Held-out classification needs no probabilities, so no temperature.
   if (is.null(fit_args$mixture_components)) fit_args$mixture_components <- 1L
   do.call(fit_model_set, c(list(train), fit_args, calibrate = FALSE))
-}
-
-# The distances of every recording of x to every class of a fitted
-# classifier (recordings x classes, smaller is closer), with the FPCA set's
-# target lengths and failed models: what predict() and classify() rank.
-classifier_distances <- function(models, x, call = rlang::caller_env(), seen = NULL) {
-  none <- list(target_length = NULL, failures = no_failures())
-  if (inherits(models, "grasp_models")) return(fpca_distances(models, x, call = call))
-  if (inherits(models, "last_frame_pca")) return(c(list(distances = last_frame_distances(models, x, call = call)), none))
-  if (inherits(models, "weighted_fpca")) {
-    return(c(list(distances = weighted_fpca_distances(models, x, call = call)), none))
-  }
-  if (inherits(models, "grasp_classifier")) {
-    return(c(list(distances = neg_log_posterior(classifier_log_posterior(models, x, call = call))), none))
-  }
-  if (inherits(models, "grasp_recognizer")) {
-    check_trained_dofs(x, models$dofs, "recogniser", call = call)
-    seen <- seen %||% x$meta$n_frames
-    return(c(list(distances = neg_log_posterior(recognizer_scores(models, x, seen))), none))
-  }
-  hm_abort("{.arg object} must be a fitted grasp classifier, not {.obj_type_friendly {models}}.",
-           "bad_input", argument = "object", call = call)
 }
 
 no_failures <- function() data.frame(model = character(0), message = character(0))
@@ -254,7 +242,9 @@ print.grasp_classification <- function(x, ...) {
   cat(sprintf("<grasp_classification> %s, %d recording%s x %d model%s\n",
               switch(x$method, fpca = if (identical(x$fpca_distance, "likelihood")) "FPCA likelihood distance" else "FPCA projection distance", last_frame = "last-frame PCA distance",
                      discriminant = "shrinkage LDA (distance = -log posterior)",
-                     weighted_fpca = "weighted FPCA distance"),
+                     weighted_fpca = "weighted FPCA distance",
+                     recognizer = "early recogniser, whole recordings (distance = -log posterior)",
+                     paste(x$method, "distance")),
               nrow(p), if (nrow(p) == 1) "" else "s", ncol(x$distances),
               if (ncol(x$distances) == 1) "" else "s"))
   if (sum(lab) > 0)

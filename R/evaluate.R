@@ -53,7 +53,11 @@
 #' @param x A [grasps()] object with `grasp` and `subject` metadata.
 #' @param method `"fpca"` ([fit_grasp_models()] + projection distance),
 #'   or `"last_frame"`, `"discriminant"` or `"weighted_fpca"`
-#'   ([fit_grasp_classifier()] with that `method`).
+#'   ([fit_grasp_classifier()] with that `method`); or a function that fits
+#'   any classifier of the family ([summary.grasp_classifier()]) on a
+#'   [grasps()] object, called as `method(train, ...)` with `fit_args` as
+#'   its further arguments (e.g. [fit_grasp_recognizer]); the result's
+#'   `method` is then the function's name.
 #' @param fit_args A list of arguments for the fitting function (e.g.
 #'   `list(ncomp = 5)` for last-frame PCA: the `...` of [fit_grasp_classifier()]).
 #' @param subjects Subjects to hold out (default: all). Other subjects are
@@ -89,7 +93,11 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
                           folds = NULL, in_sample = TRUE, seed = 1, split = c("auto", "subject", "recording")) {
   call <- rlang::caller_env()
   check_grasps(x, call = call)
-  method <- check_choice(method, arg = "method", call = call)
+  # a fitter function: its name is the method's in the result
+  label <- if (is.function(method)) {
+    if (is.symbol(substitute(method))) as.character(substitute(method)) else "custom"
+  }
+  if (!is.function(method)) method <- check_choice(method, arg = "method", call = call)
   in_sample <- check_flag(in_sample, "in_sample", call = call)
   seed <- check_seed(seed, call = call)
   # future.seed switches the session to L'Ecuyer-CMRG; give the caller back
@@ -148,7 +156,7 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
     cl <- classify(fit_quietly(x, method, fit_args), x)
     ins <- new_confusion(cl$predictions$truth, cl$predictions$predicted, levels = lev)
   }
-  structure(list(method = method, scheme = attr(groups, "scheme"), split = attr(groups, "split"),
+  structure(list(method = label %||% method, scheme = attr(groups, "scheme"), split = attr(groups, "split"),
                  confusion = held, in_sample = ins,
                  accuracy = c(held_out = confusion_accuracy(held),
                               in_sample = if (is.null(ins)) NA_real_ else confusion_accuracy(ins)),

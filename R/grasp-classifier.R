@@ -14,9 +14,11 @@
 #' distance needs no extra fit: [classify()] takes a [fit_grasp_models()]
 #' result directly). `method` chooses the classifier; its arguments are
 #' given in `...` (see below) and each method returns its own documented
-#' class, which [classify()] and `predict()` recognise:
+#' class, a member of the classifier family `grasp_classifier` (see
+#' [summary.grasp_classifier()]), which [classify()] and `predict()`
+#' recognise:
 #'
-#' * `"discriminant"` (default, beyond the thesis; class `grasp_classifier`):
+#' * `"discriminant"` (default, beyond the thesis; class `grasp_discriminant`):
 #'   describes every recording by its posture (all DoFs) at `at` fractions of
 #'   its own duration (linear interpolation between frames), its log duration
 #'   and how far each DoF travels (log of 1 + the sum of its absolute
@@ -58,7 +60,7 @@
 #'   components (no scaling: all DoFs share the angle unit). A recording is
 #'   scored against each type by the Euclidean distance between its last frame
 #'   and that frame's projection on the type's first `ncomp` PCs
-#'   ([predict.last_frame_pca()]). A type with `n` recordings has at most
+#'   ([predict.grasp_classifier()]). A type with `n` recordings has at most
 #'   `n - 1` informative PCs; when `n - 1 < ncomp` it uses `n - 1` (0 for a single
 #'   recording: distance to the mean), recorded in `$ncomp_used` and announced by
 #'   a warning of class `handmotion_warning_few_recordings`. Unlabelled
@@ -106,7 +108,7 @@
 #'     `"end"`; any other argument is passed to [fit_grasp_models()] when
 #'     `models` is `NULL`.
 #' @return By `method`:
-#'   * `"discriminant"`: class `grasp_classifier`, a list with `classes`,
+#'   * `"discriminant"`: class `grasp_discriminant`, a list with `classes`,
 #'     `levels` (of the training labels, carried by predictions), `at`,
 #'     `dofs`, `rate`, `prior`, `fit` (the discriminant of the subclasses:
 #'     coefficients, offsets, `shrinkage`, `type_of` (each subclass's type),
@@ -118,12 +120,15 @@
 #'     type: `mean`, `rotation`, `sdev`, `cumvar`, `n`), `ncomp`, `ncomp_used` (named
 #'     integer), `dofs` and `n_unlabelled`;
 #'   * `"weighted_fpca"`: class `weighted_fpca`, a list with `models` (the
-#'     `grasp_models`), `time`, `scale` (types x DoFs matrix of `s2`) and `n`
-#'     (training recordings per type).
+#'     `grasp_models`), `time` and `scale` (types x DoFs matrix of `s2`).
 #'
-#'   Each has a `print()` method; [classify()] ranks its distances.
+#'   Each also has the fields of every classifier of the family: `classes`,
+#'   `levels` (of the training labels, carried by predictions), `n`
+#'   (training recordings per class) and `temperature` (of its
+#'   probabilities, see [predict.grasp_models()]); each has `print()` and
+#'   `summary()` methods; [classify()] ranks its distances.
 #' @seealso [classify()], [predict.grasp_classifier()],
-#'   [predict.last_frame_pca()], [evaluate_loso()], [fit_grasp_recognizer()]
+#'   [summary.grasp_classifier()], [evaluate_loso()], [fit_grasp_recognizer()]
 #'   for recognition while the hand is still moving.
 #' @export
 #' @examples
@@ -173,7 +178,7 @@ fit_discriminant <- function(x, at = seq(0, 1, by = 0.125), prior = c("equal", "
   y <- check_training_labels(x, call = call)
   F <- classifier_features(x, at)
   fit <- fit_subclass_lda(F, y, prior, subclasses, subjects = x$meta$subject)
-  new_grasp_classifier(fit, at = at, dofs = x$dofs, rate = x$rate, prior = prior, levels = grasp_levels(x))
+  new_grasp_discriminant(fit, at = at, dofs = x$dofs, rate = x$rate, prior = prior, levels = grasp_levels(x))
 }
 
 classifier_features <- function(x, at) cbind(motion_features(x, at), travel_features(x))
@@ -185,12 +190,26 @@ grasp_levels <- function(x) {
   if (is.factor(g)) levels(g) else sort(unique(as.character(g)))
 }
 
-new_grasp_classifier <- function(fit, at, dofs, rate, prior, levels) {
+# The discriminant in the classifier family (R/classifier.R): its distance
+# is minus the log posterior, so its temperature is 1 (the softmax gives the
+# posterior back).
+new_grasp_discriminant <- function(fit, at, dofs, rate, prior, levels) {
   n <- tapply(fit$n, factor(fit$type_of, levels = fit$types), sum)
-  structure(list(classes = fit$types, levels = levels, at = at, dofs = dofs, rate = rate, prior = prior,
-                 fit = fit, n = stats::setNames(as.integer(n), fit$types), temperature = 1),
-            class = "grasp_classifier")
+  new_grasp_classifier(at = at, dofs = dofs, rate = rate, prior = prior, fit = fit,
+                       classes = fit$types, levels = levels, n = n, temperature = 1,
+                       class = "grasp_discriminant")
 }
+
+#' @export
+classifier_distances.grasp_discriminant <- function(object, new_data, ..., call = rlang::caller_env()) {
+  neg_log_posterior(classifier_log_posterior(object, new_data, call = call))
+}
+
+#' @export
+classifier_method.grasp_discriminant <- function(object) "discriminant"
+
+#' @export
+classifier_parts.grasp_discriminant <- function(object) c(NextMethod(), "at", "dofs", "fit")
 
 # Fractions of the motion: finite numbers in [0, 1], sorted, no duplicates.
 check_fractions <- function(at, arg, call = rlang::caller_env()) {
@@ -246,8 +265,8 @@ classifier_log_posterior <- function(object, x, call = rlang::caller_env()) {
 }
 
 #' @export
-print.grasp_classifier <- function(x, ...) {
-  cat(sprintf("<grasp_classifier> shrinkage LDA, %d grasp types, %d training recordings\n",
+print.grasp_discriminant <- function(x, ...) {
+  cat(sprintf("<grasp_discriminant> shrinkage LDA, %d grasp types, %d training recordings\n",
               length(x$classes), sum(x$n)))
   cat(sprintf("  features: %d DoFs at %d fractions of the motion (%s) + log duration + travel per DoF\n",
               length(x$dofs), length(x$at), paste(signif(x$at, 3), collapse = ", ")))
@@ -259,29 +278,9 @@ print.grasp_classifier <- function(x, ...) {
   invisible(x)
 }
 
-#' Summaries of the fitted grasp classifiers
-#'
-#' One row per class the classifier was trained on. Every classifier also has
-#' a `print()` method and answers [predict()][predict.grasp_models()].
-#'
-#' @param object A [fit_grasp_classifier()] or [fit_grasp_recognizer()]
-#'   result.
-#' @param ... Unused.
-#' @return A data frame with columns `class` and `n` (training recordings),
-#'   and by classifier: `"discriminant"` `log_prior` and `subclasses` (the
-#'   clusters the type was split into); the recogniser `log_prior`;
-#'   `"last_frame"` `ncomp_used` (PCs used) and `var_explained` (the fraction of
-#'   the type's last-frame variance they explain); `"weighted_fpca"`
-#'   `top_dofs` (the two DoFs it weighs most for the type) and `weight_range`
-#'   (largest over smallest DoF weight).
+#' @rdname summary.grasp_classifier
 #' @export
-#' @examples
-#' g <- simulate_grasps(subjects = 4, grasps = 1:3, objects = 2, trials = 2, seed = 1)
-#' summary(fit_grasp_classifier(g))
-#' summary(fit_grasp_classifier(g, method = "last_frame", ncomp = 2))
-#' summary(fit_grasp_recognizer(g))
-summary.grasp_classifier <- function(object, ...) {
-  data.frame(class = object$classes, n = as.integer(object$n[object$classes]),
-             log_prior = unname(object$fit$type_prior[object$classes]),
-             subclasses = unname(object$fit$subclasses_used[object$classes]), stringsAsFactors = FALSE)
+summary.grasp_discriminant <- function(object, ...) {
+  classifier_summary_frame(object, log_prior = unname(object$fit$type_prior[object$classes]),
+                           subclasses = unname(object$fit$subclasses_used[object$classes]))
 }

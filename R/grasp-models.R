@@ -244,10 +244,40 @@ models_temperature <- function(models, x, call) {
 # labels: the levels predictions carry) and `temperature` (of the class
 # probabilities) and `distance` (what classify() ranks: "likelihood" or
 # "residual", see fit_grasp_models(); NULL, from older sets, is "residual").
+#
+# A member of the classifier family (R/classifier.R, parent class
+# "grasp_classifier"), but not built by its constructor: the set is the
+# list of its models, indexed by type (`ms[["Tripod"]]`, `names(ms)`) by
+# users, generate(), the thesis tables and the Python front end, so its
+# family fields cannot be elements beside the models; they are attributes,
+# read only through the family's generics below.
 new_grasp_models <- function(models, seed = NULL, levels = NULL, temperature = NULL, distance = NULL) {
-  validate_grasp_models(structure(models, class = "grasp_models", seed = seed, levels = levels,
-                                  temperature = temperature, distance = distance))
+  validate_grasp_models(structure(models, class = c("grasp_models", "grasp_classifier"), seed = seed,
+                                  levels = levels, temperature = temperature, distance = distance))
 }
+
+# The set in the classifier family: its distances are the FPCA distances
+# (fpca_distances(), R/classify.R), its classes the fitted types.
+#' @export
+classifier_distances.grasp_models <- function(object, new_data, ..., call = rlang::caller_env()) {
+  fpca_distances(object, new_data, call = call)
+}
+
+#' @export
+classifier_method.grasp_models <- function(object) "fpca"
+
+#' @export
+classifier_classes.grasp_models <- function(object) names(fitted_models(object))
+
+#' @export
+classifier_levels.grasp_models <- function(object) attr(object, "levels") %||% model_set_levels(object)
+
+#' @export
+classifier_temperature.grasp_models <- function(object) attr(object, "temperature")
+
+# (its models are checked by check_grasp_models() where they are read)
+#' @export
+classifier_parts.grasp_models <- function(object) character(0)
 
 # Every element a model or a failure, named by its own type, once; the fitted
 # models share their DoFs, rate and unit (one set classifies one kind of
@@ -391,8 +421,10 @@ print.grasp_models <- function(x, ...) {
 #'
 #' @param object A `grasp_models` set from [fit_grasp_models()].
 #' @param ... Unused.
-#' @return A data frame with columns `grasp_id`, `grasp`, `n_input`,
-#'   `n_used`, `n_overlong` (removed as over-long), `n_degenerate` (removed
+#' @return A data frame with columns `grasp_id`, `grasp`, `n` (the
+#'   recordings the type's model was fitted on: the first three columns of
+#'   every classifier's summary, see [summary.grasp_classifier()]), `n_input`,
+#'   `n_used` (the same as `n`), `n_overlong` (removed as over-long), `n_degenerate` (removed
 #'   for a degenerate warp: `degenerate_warps = "drop"`, the thesis' rule),
 #'   `n_warp_fallback` (recordings whose DTW warp was degenerate, kept with a
 #'   slope-constrained or linear warp: `degenerate_warps = "constrain"`),
@@ -412,7 +444,7 @@ summary.grasp_models <- function(object, ...) {
   check_grasp_models(object, "object", "be summarised")
   rows <- lapply(unclass(object), function(m) {
     if (inherits(m, "grasp_model_failed")) {
-      return(data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n_input = NA_integer_, n_used = NA_integer_,
+      return(data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n = NA_integer_, n_input = NA_integer_, n_used = NA_integer_,
                         n_overlong = NA_integer_, n_degenerate = NA_integer_, n_warp_fallback = NA_integer_,
                         target_length = NA_integer_,
                         warping = NA_character_, em_fallback = NA_character_, n_em_fallback = NA_integer_,
@@ -425,7 +457,7 @@ summary.grasp_models <- function(object, ...) {
     em <- fb$dof[fb$step == "mixture"]
     const <- fb$dof[fb$step == "fpca"]
     stat <- function(f) if (all(is.na(ve))) NA_real_ else f(ve, na.rm = TRUE)
-    data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n_input = m$n_input, n_used = m$n_used,
+    data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n = m$n_used, n_input = m$n_input, n_used = m$n_used,
                n_overlong = sum(m$removed$reason == "overlong"),
                n_degenerate = sum(m$removed$reason == "degenerate warp"),
                n_warp_fallback = NROW(m$warping$degenerate),
@@ -438,7 +470,7 @@ summary.grasp_models <- function(object, ...) {
                max_var = stat(max), failed = NA_character_, stringsAsFactors = FALSE)
   })
   out <- if (length(rows)) do.call(rbind, rows) else
-    data.frame(grasp_id = integer(), grasp = character(), n_input = integer(), n_used = integer(),
+    data.frame(grasp_id = integer(), grasp = character(), n = integer(), n_input = integer(), n_used = integer(),
                n_overlong = integer(), n_degenerate = integer(), n_warp_fallback = integer(),
                target_length = integer(),
                warping = character(), em_fallback = character(), n_em_fallback = integer(),

@@ -51,9 +51,7 @@ fit_grasp_recognizer <- function(x, at = c(0, 0.25, 0.5, 0.75, 1), horizon = NUL
   det <- if (resolve_motion(x, "auto") == "trim") fit_onset_detector(x)
   x <- from_onset(x, det)
   y <- check_training_labels(x, call = call)
-  rec <- recognizer_fit(x, y, at, recognizer_horizon(x, horizon, call))
-  rec$onset <- det
-  rec
+  recognizer_fit(x, y, at, recognizer_horizon(x, horizon, call), onset = det)
 }
 
 # The number of horizons: given, or the 95th percentile of the durations.
@@ -66,15 +64,40 @@ recognizer_horizon <- function(x, horizon, call) {
 # streams; evaluate_early_recognition() fits only the horizons its held-out
 # recordings are classified at (the others stay NULL, and such a recogniser
 # never leaves it).
-recognizer_fit <- function(x, y, at, H, horizons = seq_len(H)) {
+recognizer_fit <- function(x, y, at, H, horizons = seq_len(H), onset = NULL) {
   prefix <- prefix_source(x)
   fits <- vector("list", H)
   fits[horizons] <- lapply(horizons, function(h) fit_shrunk_lda(prefix_features(prefix, h, at), y))
   first <- fits[[horizons[1]]]
-  structure(list(classes = first$classes, levels = grasp_levels(x), at = at, dofs = x$dofs, rate = x$rate,
-                 horizon = H, fits = fits, n = stats::setNames(first$n, first$classes), temperature = 1),
-            class = "grasp_recognizer")
+  new_grasp_recognizer(first$classes, grasp_levels(x), at, x$dofs, x$rate, H, fits, first$n, onset)
 }
+
+# The recogniser in the classifier family (R/classifier.R): its distance is
+# minus the log posterior, so its temperature is 1. `onset`: the motion-onset
+# detector new recordings are read from (NULL: from their first frame).
+new_grasp_recognizer <- function(classes, levels, at, dofs, rate, horizon, fits, n, onset = NULL) {
+  new_grasp_classifier(at = at, dofs = dofs, rate = rate, horizon = horizon, fits = fits, onset = onset,
+                       classes = classes, levels = levels, n = n, temperature = 1, class = "grasp_recognizer")
+}
+
+# `seen`: frames seen of each recording of new_data, which predict() has
+# already read from the motion's onset; without it (classify()) the whole
+# recordings are read from their onset, as predict() reads them by default.
+#' @export
+classifier_distances.grasp_recognizer <- function(object, new_data, seen = NULL, ..., call = rlang::caller_env()) {
+  check_trained_dofs(new_data, object$dofs, "recogniser", call = call)
+  if (is.null(seen)) {
+    new_data <- from_onset(new_data, object$onset)
+    seen <- new_data$meta$n_frames
+  }
+  neg_log_posterior(recognizer_scores(object, new_data, seen))
+}
+
+#' @export
+classifier_method.grasp_recognizer <- function(object) "recognizer"
+
+#' @export
+classifier_parts.grasp_recognizer <- function(object) c(NextMethod(), "at", "dofs", "horizon", "fits")
 
 # What the features of every horizon are read from: the recordings stacked
 # (frames x DoFs, as doubles) and the distance each DoF has travelled up to
@@ -172,6 +195,5 @@ print.grasp_recognizer <- function(x, ...) {
 #' @export
 summary.grasp_recognizer <- function(object, ...) {
   last <- object$fits[[object$horizon]]
-  data.frame(class = object$classes, n = as.integer(object$n[object$classes]),
-             log_prior = last$log_prior, stringsAsFactors = FALSE)
+  classifier_summary_frame(object, log_prior = last$log_prior)
 }

@@ -157,6 +157,12 @@ new_handover_model <- function(markers, method, ncomp, neighbours, neighbours_us
   ), class = "handover_model"))
 }
 
+# The fields its predict() reads, re-checked there (check_fitted_parts()).
+#' @export
+classifier_parts.handover_model <- function(object) {
+  c("markers", "center", "rotation", "ref_x", "ref_scores", "dofs")
+}
+
 # Shapes that fit together: p DoFs (a full p x p rotation), 3 reference
 # marker columns per marker, one score row per reference frame.
 validate_handover_model <- function(x) {

@@ -26,13 +26,25 @@ fit_last_frame_pca <- function(x, ncomp = 5, grasps = NULL, call = rlang::caller
               i = "Using n - 1 components instead (see {.field ncomp_used})."),
             "few_recordings")
   }
-  fit <- structure(list(models = models, ncomp = ncomp, ncomp_used = ncomp_used, dofs = x$dofs,
-                        n_unlabelled = sum(is.na(x$meta$grasp)), levels = grasp_levels(x)),
-                   class = "last_frame_pca")
   # the temperature of its probabilities, on held-out distances
-  fit$temperature <- fit_temperature(last_frame_heldout_distances(fit, x, last), x$meta$grasp)
-  fit
+  temperature <- fit_temperature(last_frame_heldout_distances(list(models = models, ncomp_used = ncomp_used), x, last),
+                                 x$meta$grasp)
+  new_grasp_classifier(models = models, ncomp = ncomp, ncomp_used = ncomp_used, dofs = x$dofs,
+                       n_unlabelled = sum(is.na(x$meta$grasp)), classes = types, levels = grasp_levels(x),
+                       n = n_per, temperature = temperature, class = "last_frame_pca")
 }
+
+# The last-frame PCA in the classifier family (R/classifier.R).
+#' @export
+classifier_distances.last_frame_pca <- function(object, new_data, ..., call = rlang::caller_env()) {
+  last_frame_distances(object, new_data, call = call)
+}
+
+#' @export
+classifier_method.last_frame_pca <- function(object) "last_frame"
+
+#' @export
+classifier_parts.last_frame_pca <- function(object) c(NextMethod(), "models", "dofs")
 
 # The training recordings' distances to every type from PCAs fitted without
 # them: held out by subject when the recordings name two or more subjects
@@ -164,9 +176,8 @@ print.last_frame_pca <- function(x, ...) {
 #' @rdname summary.grasp_classifier
 #' @export
 summary.last_frame_pca <- function(object, ...) {
-  n <- vapply(object$models, function(m) m$n, integer(1))
-  data.frame(class = names(object$models), n = unname(n), ncomp_used = unname(object$ncomp_used[names(object$models)]),
-             var_explained = unname(vapply(names(object$models), function(ty) {
-               object$models[[ty]]$cumvar[max(object$ncomp_used[[ty]], 1L)]
-             }, numeric(1))), stringsAsFactors = FALSE)
+  classifier_summary_frame(object, ncomp_used = unname(object$ncomp_used[object$classes]),
+                           var_explained = unname(vapply(object$classes, function(ty) {
+                             object$models[[ty]]$cumvar[max(object$ncomp_used[[ty]], 1L)]
+                           }, numeric(1))))
 }

@@ -92,15 +92,6 @@ check_grasp_models <- function(x, arg, action, each = TRUE, call = rlang::caller
   invisible(x)
 }
 
-# The fields each classifier's predict() reads; a fit missing one was edited.
-classifier_parts <- list(
-  grasp_classifier = c("classes", "levels", "at", "dofs", "fit"),
-  grasp_recognizer = c("classes", "levels", "at", "dofs", "horizon", "fits"),
-  last_frame_pca = c("models", "dofs", "levels"),
-  weighted_fpca = c("models", "scale", "levels"),
-  handover_model = c("markers", "center", "rotation", "ref_x", "ref_scores", "dofs")
-)
-
 # The first numeric part (by its path, `fit$coef`) holding a missing or
 # infinite value, or NULL. Data frames (reports) are not model parts; a
 # single number may be infinite (a setting: neighbours = Inf), not
@@ -122,15 +113,18 @@ nonfinite_part <- function(x, path) {
 
 # A fitted classifier or hand-over model given as `arg`: the parts its
 # predict() reads are there, finite, and agree with one another.
+# The fields it reads are its classifier_parts() (a method beside each
+# classifier; a hand-over model's beside fit_handover()).
 check_fitted_parts <- function(object, arg, call = rlang::caller_env()) {
-  kind <- intersect(class(object), names(classifier_parts))[1]
-  if (is.na(kind)) return(invisible(object))
+  parts <- classifier_parts(object)
+  if (!length(parts)) return(invisible(object))
+  kind <- class(object)[1]
   bad <- function(what) {
     hm_abort(c(paste0("{.arg {arg}} is not a valid {.cls {kind}} fit: ", what, "."),
                i = "Was it changed after fitting? Refit it."),
              "bad_model", argument = arg, call = call, .envir = parent.frame())
   }
-  lost <- classifier_parts[[kind]][vapply(classifier_parts[[kind]], function(f) is.null(object[[f]]), logical(1))]
+  lost <- parts[vapply(parts, function(f) is.null(object[[f]]), logical(1))]
   if (length(lost)) bad("it has no {.field {lost}}")
   if (!is.null(object$classes) && !is.null(object$n) && length(object$classes) != length(object$n)) {
     bad("its {.field classes} ({length(object$classes)}) do not match its class counts {.field n} ({length(object$n)})")

@@ -97,30 +97,6 @@ NULL
 
 #' @rdname predict.grasp_models
 #' @export
-predict.grasp_models <- function(object, new_data, type = c("class", "prob", "distance"), ...) {
-  predict_classifier(object, new_data, type, list(...), rlang::caller_env())
-}
-
-#' @rdname predict.grasp_models
-#' @export
-predict.grasp_classifier <- function(object, new_data, type = c("class", "prob", "distance"), ...) {
-  predict_classifier(object, new_data, type, list(...), rlang::caller_env())
-}
-
-#' @rdname predict.grasp_models
-#' @export
-predict.last_frame_pca <- function(object, new_data, type = c("class", "prob", "distance"), ...) {
-  predict_classifier(object, new_data, type, list(...), rlang::caller_env())
-}
-
-#' @rdname predict.grasp_models
-#' @export
-predict.weighted_fpca <- function(object, new_data, type = c("class", "prob", "distance"), ...) {
-  predict_classifier(object, new_data, type, list(...), rlang::caller_env())
-}
-
-#' @rdname predict.grasp_models
-#' @export
 predict.grasp_recognizer <- function(object, new_data, type = c("class", "prob", "distance"),
                                      frames = NULL, ms = NULL, fraction = NULL, ...) {
   call <- rlang::caller_env()
@@ -141,6 +117,7 @@ predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, 
              "bad_input", argument = "...", call = call)
   }
   type <- check_choice(type, c("class", "prob", "distance"), arg = "type", call = call)
+  check_classifier(object, arg, call = call)
   check_fitted_parts(object, arg, call = call)
   if (!checked) {
     check_new_recordings(new_data, "new_data", "classify", finite = FALSE, call = call)
@@ -149,8 +126,8 @@ predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, 
   d <- res$distances
   reasons <- unclassified_reasons(d, new_data)
   out <- switch(type,
-    class = data.frame(.pred_class = nearest_type(d, classifier_levels(object, colnames(d)))),
-    prob = prefixed_frame(distance_softmax(d, classifier_temperature(object, call)), ".pred_"),
+    class = data.frame(.pred_class = nearest_type(d, classifier_levels(object))),
+    prob = prefixed_frame(distance_softmax(d, required_temperature(object, call)), ".pred_"),
     distance = prefixed_frame(d, ".dist_"))
   new_grasp_predictions(out, new_data$meta$id, type, reasons,
                         extra = if (type == "distance") res[c("target_length", "failures")])
@@ -161,7 +138,7 @@ predict_classifier <- function(object, new_data, type, dots, call, seen = NULL, 
 # not stop the others.
 finite_distances <- function(object, x, call, seen) {
   finite <- recordings_finite(x$recordings)
-  if (all(finite)) return(classifier_distances(object, x, call = call, seen = seen))
+  if (all(finite)) return(distance_result(object, x, call, seen))
   bad <- x$meta$id[!finite]
   hm_warn(c("{.arg new_data} has {length(bad)} recording{?s} with missing or infinite values, not classified: {.val {bad}}.",
             i = "Their predictions are {.val NA}; see {.code attr(, \"reasons\")}."),
@@ -169,18 +146,10 @@ finite_distances <- function(object, x, call, seen) {
   classes <- classifier_classes(object)
   d <- matrix(NA_real_, length(finite), length(classes), dimnames = list(x$meta$id, classes))
   if (!any(finite)) return(list(distances = d, target_length = NULL, failures = no_failures()))
-  res <- classifier_distances(object, x[finite], call = call, seen = seen[finite])
+  res <- distance_result(object, x[finite], call, seen[finite])
   d[finite, ] <- res$distances[, classes, drop = FALSE]
   res$distances <- d
   res
-}
-
-# The classes a fitted classifier ranks, in its order.
-classifier_classes <- function(object) {
-  if (inherits(object, "grasp_models")) return(names(fitted_models(object)))
-  if (inherits(object, "last_frame_pca")) return(names(object$models))
-  if (inherits(object, "weighted_fpca")) return(rownames(object$scale))
-  object$classes
 }
 
 # A matrix as a data frame with prefixed column names (kept as given: class
@@ -189,23 +158,6 @@ prefixed_frame <- function(m, prefix) {
   out <- as.data.frame(unname(m))
   names(out) <- paste0(prefix, colnames(m))
   out
-}
-
-# The levels of the predicted class: those of the training labels (stored
-# by the fit), or the classes themselves for an object built without them.
-classifier_levels <- function(object, classes) {
-  lv <- if (inherits(object, "grasp_models")) attr(object, "levels") %||% model_set_levels(object) else object$levels
-  lv %||% classes
-}
-
-classifier_temperature <- function(object, call) {
-  t <- if (inherits(object, "grasp_models")) attr(object, "temperature") else object$temperature
-  if (is.null(t)) {
-    hm_abort(c("This {.cls {class(object)[1]}} has no fitted temperature, so it gives no probabilities.",
-               i = "Fit it with {.fn fit_grasp_models} or {.fn fit_grasp_classifier}."),
-             "bad_model", argument = "object", call = call)
-  }
-  t
 }
 
 # Why each recording without any finite distance has no prediction (named

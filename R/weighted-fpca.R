@@ -47,11 +47,22 @@ fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ...,
   dimnames(scale) <- list(types, models[[1]]$dofs)
   # the distance is minus twice the log-likelihood: temperature 2 gives the
   # models' posterior with equal priors
-  structure(list(models = models, time = time, scale = scale,
-                 n = table(factor(as.character(x$meta$grasp), levels = types)),
-                 levels = grasp_levels(x), temperature = 2),
-            class = "weighted_fpca")
+  new_grasp_classifier(models = models, time = time, scale = scale, classes = types, levels = grasp_levels(x),
+                       n = table(factor(as.character(x$meta$grasp), levels = types)), temperature = 2,
+                       class = "weighted_fpca")
 }
+
+# The weighted FPCA distance in the classifier family (R/classifier.R).
+#' @export
+classifier_distances.weighted_fpca <- function(object, new_data, ..., call = rlang::caller_env()) {
+  weighted_fpca_distances(object, new_data, call = call)
+}
+
+#' @export
+classifier_method.weighted_fpca <- function(object) "weighted_fpca"
+
+#' @export
+classifier_parts.weighted_fpca <- function(object) c(NextMethod(), "models", "scale")
 
 # Weights on a template grid of L points: uniform (the thesis) or rising
 # linearly from 0 to 2 (mean 1).
@@ -105,9 +116,9 @@ print.weighted_fpca <- function(x, ...) {
 #' @rdname summary.grasp_classifier
 #' @export
 summary.weighted_fpca <- function(object, ...) {
-  w <- 1 / object$scale
-  data.frame(class = rownames(w), n = as.integer(object$n[rownames(w)]),
-             top_dofs = apply(w, 1L, function(v) paste(names(sort(v, decreasing = TRUE))[1:min(2L, length(v))],
-                                                       collapse = "+")),
-             weight_range = apply(w, 1L, function(v) max(v) / min(v)), stringsAsFactors = FALSE, row.names = NULL)
+  w <- 1 / object$scale[object$classes, , drop = FALSE]
+  classifier_summary_frame(object,
+                           top_dofs = apply(w, 1L, function(v) paste(names(sort(v, decreasing = TRUE))[1:min(2L, length(v))],
+                                                                     collapse = "+")),
+                           weight_range = apply(w, 1L, function(v) max(v) / min(v)))
 }

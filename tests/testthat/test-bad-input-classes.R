@@ -88,7 +88,7 @@ test_that("a fitted model whose parts were edited is refused by every verb, nami
   # a set holding something that is not a model
   text <- unclass(f$ms)
   text[[2]] <- "x"
-  class(text) <- "grasp_models"
+  class(text) <- class(f$ms)
   attr(text, "levels") <- attr(f$ms, "levels")
   expect_error(classify(text, f$g), "models[[2]] (Small Diameter)", fixed = TRUE, class = "handmotion_error_bad_model")
   expect_error(generate(text, n = 1), "x[[2]]", fixed = TRUE, class = "handmotion_error_bad_model")

@@ -61,9 +61,16 @@ test_that("every classifier answers predict() with classes, probabilities and di
     expect_match(paste(out, collapse = "\n"), "more rows")
     expect_output(print(p[1:3, ]), "class probabilities of 3 recordings")
     expect_output(print(fit))
+    # every summary begins with the family's columns: the class and its
+    # training recordings (the FPCA set's n: those its model kept)
     s <- summary(fit)
     expect_s3_class(s, "data.frame")
-    expect_true(all(classes %in% s[[intersect(c("class", "grasp"), names(s))[1]]]), label = info)
+    expect_identical(names(s)[1:3], c("grasp_id", "grasp", "n"), label = info)
+    expect_identical(s$grasp, classes, label = info)
+    expect_identical(s$grasp_id, as.integer(types), label = info)
+    counts <- as.integer(table(train$meta$grasp)[classes])
+    if (name == "fpca") expect_true(all(s$n <= counts & s$n >= counts - 2L), label = info)
+    else expect_identical(s$n, counts, label = info)
     # bad arguments, classed
     expect_error(predict(fit, test, type = "raw"), class = "handmotion_error_bad_input")
     expect_error(predict(fit, test, foo = 1), class = "handmotion_error_bad_input")

@@ -50,8 +50,8 @@ test_that("a type too small to split stays one subclass, and that is recorded", 
   x <- g[g$meta$grasp == "Tripod" | seq_along(g) %in% ring[1:6]]
   cl <- fit_grasp_classifier(x, subclasses = 4)
   s <- summary(cl)
-  expect_equal(s$subclasses[s$class == "Ring"], 1L)       # 6 recordings < 2 x 5
-  expect_equal(s$subclasses[s$class == "Tripod"], 4L)
+  expect_equal(s$subclasses[s$grasp == "Ring"], 1L)       # 6 recordings < 2 x 5
+  expect_equal(s$subclasses[s$grasp == "Tripod"], 4L)
   expect_error(fit_grasp_classifier(x, subclasses = 0), class = "handmotion_error_bad_input")
 })
 
