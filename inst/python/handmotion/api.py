@@ -312,7 +312,19 @@ def generate(models, grasp=None, n=1, seed=1, as_array=False, limits=None, **kwa
     return out.as_array()
 
 
-_CLASSIFY_METHODS = ("fpca", "last_frame", "discriminant", "weighted_fpca")
+_state_methods = {}
+
+
+def _classify_methods():
+    """The classifiers' method names, read from R, where they are written once: the default
+    of ``classify()``'s ``method`` (``?handmotion::classify``; ``evaluate_loso()`` takes the
+    same), so a method added in R is one Python accepts."""
+    methods = _state_methods.get("classify")
+    if methods is None:
+        methods = tuple(str(m) for m in r().r("eval(formals(handmotion::classify)$method)"))
+        _state_methods["classify"] = methods
+    return methods
+
 
 
 def classify(models, x, method=None, **kwargs):
@@ -330,8 +342,8 @@ def classify(models, x, method=None, **kwargs):
     of R's ``summary()``) and ``classification`` (a handle on the R result, for
     :func:`thesis_table`).
     """
-    if method is not None and method not in _CLASSIFY_METHODS:
-        raise BadInputError(f"method must be one of {_CLASSIFY_METHODS}, not {method!r}")
+    if method is not None and method not in _classify_methods():
+        raise BadInputError(f"method must be one of {_classify_methods()}, not {method!r}")
     if isinstance(models, Grasps):
         raise BadInputError("models must be fitted: fit_grasp_models(train) or fit_grasp_classifier(train); "
                             "evaluate_loso() fits on training subjects and classifies the held-out ones")
@@ -363,8 +375,8 @@ def evaluate_loso(x, method="fpca", folds=None, seed=1, split="auto", **kwargs):
     if split not in ("auto", "subject", "recording"):
         raise BadInputError(f"split must be 'auto', 'subject' or 'recording', not {split!r}")
     kwargs["split"] = split
-    if method not in _CLASSIFY_METHODS:
-        raise BadInputError(f"method must be one of {_CLASSIFY_METHODS}, not {method!r}")
+    if method not in _classify_methods():
+        raise BadInputError(f"method must be one of {_classify_methods()}, not {method!r}")
     ro = r()
     res = call("evaluate_loso", _as_grasps(x), method=method,
                folds=None if folds is None else _check_count(folds, "folds"), seed=_check_seed(seed),

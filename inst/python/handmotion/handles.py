@@ -161,8 +161,9 @@ def _labelled_matrix(mat):
 
 
 class GraspClassifier(Classifier):
-    """A fitted grasp classifier (R classes ``grasp_classifier``, ``last_frame_pca`` and
-    ``weighted_fpca``, from :func:`handmotion.fit_grasp_classifier`)."""
+    """A fitted grasp classifier (R classes ``grasp_discriminant``, ``last_frame_pca`` and
+    ``weighted_fpca`` of the family ``grasp_classifier``, from
+    :func:`handmotion.fit_grasp_classifier`)."""
 
 
 class GraspRecognizer(Classifier):

@@ -62,6 +62,18 @@ def test_classify(hm, models, small):
         hm.classify(models, small, method="last_frame")
 
 
+def test_classify_methods_are_read_from_r(hm):
+    # the one list is R's (the default of classify()'s method): the FPCA set's and every
+    # method of fit_grasp_classifier(), which evaluate_loso() takes too
+    from handmotion import api
+    from handmotion._bridge import r
+    ro = r()
+    fit_methods = [str(m) for m in ro.r("eval(formals(handmotion::fit_grasp_classifier)$method)")]
+    loso_methods = [str(m) for m in ro.r("eval(formals(handmotion::evaluate_loso)$method)")]
+    assert set(api._classify_methods()) == {"fpca", *fit_methods}
+    assert list(api._classify_methods()) == loso_methods
+
+
 def test_generate_needs_models(hm):
     with pytest.raises(hm.BadInputError):
         hm.generate("not a model", n=1)
