@@ -40,6 +40,9 @@
 #' | `$k`, `$k_used` of a last-frame classifier / a hand-over model | `$ncomp`, `$ncomp_used` / `$neighbours`, `$neighbours_used` |
 #' | `fit_weighted_fpca(x, models = , time = )` | `fit_grasp_classifier(x, method = "weighted_fpca", models = , time = )` |
 #' | `fit_grasp_classifier(x, at = , prior = )` | unchanged: `method = "discriminant"` is the default |
+#' | class `grasp_classifier` of the discriminant (`fit_grasp_classifier(method = "discriminant")`) | `grasp_discriminant`; `grasp_classifier` is now the parent class of every fitted classifier ([summary.grasp_classifier()]); a discriminant saved by an earlier version is refused with a classed error saying to refit it |
+#' | columns `metric`, `estimate` of `summary()` of a confusion matrix; `metric` of an evaluation's | `.metric`, `.estimate` (yardstick's names) |
+#' | column `class` of `summary()` of a `fit_grasp_classifier()` or `fit_grasp_recognizer()` result | `grasp`, after `grasp_id`, as in every classifier's summary |
 #' | `rank_markers(x, weighting = )` | `attr(`[select_markers()]`(x, n, weighting = ), "ranking")`; `select_markers(x, n)` takes the top `n` |
 #' | `compare_marker_sets(reference, test, sets = )` | [handover_error()]`(test, by = "markers", reference = reference, sets = )` |
 #' | `reconstruct(model, query)` | `predict(model, query)` ([predict.handover_model()]) |
