@@ -8,14 +8,19 @@
 # softmax(-distance / temperature). For the discriminants the distance is
 # minus the log posterior and the temperature 1, so the softmax gives back
 # their posterior exactly; for the distance classifiers the temperature is
-# fitted on the training data (fit_temperature()).
+# fitted on the training data (fit_temperature()). The distances and the
+# temperature come through the family's generics (R/classifier.R); this
+# file only shapes the answer.
 
 #' Predict grasp types with any fitted classifier
 #'
 #' Every classifier handmotion fits answers the same `predict()`: a
 #' [fit_grasp_models()] set (the thesis' FPCA distance), each
 #' [fit_grasp_classifier()] method (`"discriminant"`, `"last_frame"`,
-#' `"weighted_fpca"`) and a [fit_grasp_recognizer()]. The result follows the
+#' `"weighted_fpca"`) and a [fit_grasp_recognizer()]: they are one family,
+#' class `grasp_classifier` (see [summary.grasp_classifier()]), and this is
+#' its `predict()` (the recogniser adds how much of each recording is
+#' seen). The result follows the
 #' tidymodels convention: a data frame with one row per recording of
 #' `new_data`, in its order (row names: the recording ids), of class
 #' `grasp_predictions`, whose `print()` shows the first rows only.
