@@ -144,11 +144,10 @@ fit_classifier <- function(train, method, fit_args) {
   }
   if (method != "fpca") return(do.call(fit_grasp_classifier, c(list(train, method = method), fit_args)))
   # One Gaussian per DoF's scores (mixture_components = 1, closed form)
-  # instead of the EM for two components halves the refit. The residual
-  # distance never reads the mixtures; the likelihood distance does, and on
-  # flexglove it is better with one Gaussian (68.7% held out by participant)
-  # than with two (65.3%): two components fitted to one person's recordings
-  # are narrower than the other person's spread.
+  # instead of the EM for two components halves the refit. Neither distance
+  # reads the mixtures (the likelihood scores the joint score vector by a
+  # kernel density, R/fpca-likelihood.R) except for a type of fewer than
+  # three recordings.
   # Held-out classification needs no probabilities, so no temperature.
   if (is.null(fit_args$mixture_components)) fit_args$mixture_components <- 1L
   do.call(fit_model_set, c(list(train), fit_args, calibrate = FALSE))

@@ -20,9 +20,9 @@
 #' (`mixture_components = 1`, no EM) unless `fit_args` sets it. With
 #' `fit_args = list(distance = "residual")` (the thesis' eq. 4.4, which reads
 #' only the models' mean curves and FPCs) the predictions are those of the
-#' thesis' two-component models; the default likelihood distance reads the
-#' score mixtures too, and held out by participant on the real flexglove
-#' recordings one Gaussian is the better (68.7% against 65.3% with two).
+#' thesis' two-component models; the default likelihood distance scores
+#' the FPC scores by a kernel density of the training scores, which the
+#' mixtures do not enter (except for a type of fewer than three recordings).
 #' `folds = n` is the cheaper option:
 #' subjects are split at random (seeded) into `n` groups and each group is
 #' held out in turn (leave-one-group-of-subjects-out), so only `n` refits are

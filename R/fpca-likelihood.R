@@ -13,12 +13,28 @@
 # shape but differ in amplitude (a flex glove's grasp types do) are not told
 # apart; the score term says how unlikely that amplitude is for the type,
 # and the residual term is scaled by each type's own residual size.
+#
+# The scores are scored jointly, all DoFs at once, by a Gaussian kernel
+# density of the type's own training score vectors (the kernel model's
+# density, R/dependence-kernel.R: the scores' shrunk covariance, a bandwidth
+# chosen by leave-one-out likelihood on the training recordings alone), not
+# DoF by DoF under each DoF's own mixture. A type grasped round several
+# objects puts its recordings in clusters of the joint score vector, one per
+# object, and fingers move together: a recording whose every finger is
+# typical of the type, but in a combination no recording of the type shows,
+# is far. Held out by participant on flexglove this lifts the distance from
+# 68.7% (P1 62.2%, P2 77.7%) to 73.5% (P1 63.8%, P2 86.7%). A type with
+# fewer than three recordings (no bandwidth to cross-validate) keeps the
+# per-DoF mixtures. Like the mixtures, the kernel is unchanged by a gain or
+# offset of a channel common to all recordings: the scores' spread carries
+# the gain and the mean curve the offset.
 
 # One model's distances for a projection (project_recordings(details =
 # FALSE)): a vector over the projected recordings.
 fpca_likelihood_distance <- function(model, pr) {
   k <- model$settings$ncomp
   total <- numeric(length(pr$distance))
+  kern <- likelihood_score_kernel(model)
   for (j in seq_along(model$dofs)) {
     f <- model$fpca[[j]]
     # a constant DoF (zero basis, point-mass mixture) says nothing about type
@@ -32,11 +48,53 @@ fpca_likelihood_distance <- function(model, pr) {
     nu <- if (s2 > 0) max(s1^2 / s2, 1) else 1
     rss <- pmax(pr$residual[, j]^2, .Machine$double.xmin)
     total <- total - 2 * (stats::dchisq(rss / scale, nu, log = TRUE) - log(scale))
-    S <- matrix(pr$scores[, j, ], ncol = k)
-    mix <- model$gmm[[j]]
-    total <- total - 2 * gmm_log_density(mix$weights, mix$means, mix$covs, S)
+    if (is.null(kern)) {
+      S <- matrix(pr$scores[, j, ], ncol = k)
+      mix <- model$gmm[[j]]
+      total <- total - 2 * gmm_log_density(mix$weights, mix$means, mix$covs, S)
+    }
   }
+  if (!is.null(kern)) total <- total - 2 * score_kernel_log_density(kern, pr$scores)
   stats::setNames(total, pr$ids)
+}
+
+# The joint density of a model's FPC scores (see above): list(dof, comp
+# (which score of pr$scores each column is), Y (the training vectors,
+# standardised and whitened), sd, W, h, logdet (of the kernel's covariance
+# h^2 S, over the d directions kept)); NULL with fewer than three training
+# recordings or no score that varies.
+likelihood_score_kernel <- function(model) {
+  cols <- score_columns(model)
+  cols <- cols[!cols$warp, , drop = FALSE]
+  if (!nrow(cols) || model$n_used < 3L) return(NULL)
+  X <- score_matrix(model, cols)
+  sd <- apply(X, 2, stats::sd)
+  # a score without spread (identical recordings) does not enter the metric
+  live <- is.finite(sd) & sd > 1e-10 * max(sd, 0, na.rm = TRUE)
+  if (!any(live)) return(NULL)
+  X <- X[, live, drop = FALSE]
+  sd <- sd[live]
+  kd <- kernel_density(X)
+  e <- eigen(kd$cor, symmetric = TRUE)
+  keep <- e$values > 1e-10 * max(e$values)
+  W <- e$vectors[, keep, drop = FALSE] %*% diag(1 / sqrt(e$values[keep]), sum(keep))
+  d <- sum(keep)
+  list(dof = match(cols$dof[live], model$dofs), comp = cols$comp[live],
+       Y = sweep(X, 2, sd, "/") %*% W, sd = sd, W = W, h = kd$bandwidth,
+       logdet = 2 * d * log(kd$bandwidth) + 2 * sum(log(sd)) + sum(log(e$values[keep])))
+}
+
+# Log density of score arrays (recordings x DoFs x ncomp) under the kernel:
+# the log of the mean, over the training vectors, of N(s; x_i, h^2 S).
+score_kernel_log_density <- function(kern, scores) {
+  S <- vapply(seq_along(kern$dof), function(a) scores[, kern$dof[a], kern$comp[a]], numeric(dim(scores)[1]))
+  S <- matrix(S, dim(scores)[1])
+  Ys <- sweep(S, 2, kern$sd, "/") %*% kern$W
+  D2 <- pmax(outer(rowSums(Ys^2), rowSums(kern$Y^2), `+`) - 2 * tcrossprod(Ys, kern$Y), 0)
+  A <- -D2 / (2 * kern$h^2)
+  top <- apply(A, 1, max)
+  lse <- top + log(rowSums(exp(A - top)))
+  lse - log(nrow(kern$Y)) - 0.5 * kern$logdet - 0.5 * ncol(kern$Y) * log(2 * pi)
 }
 
 # The distance a model set ranks by: sets from before the choice existed

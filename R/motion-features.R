@@ -44,3 +44,39 @@ travel_features <- function(x) {
   colnames(T) <- paste0(x$dofs, ".travel")
   T
 }
+
+# The extremes each DoF reaches over the whole recording: the smallest and
+# the largest value of the channel smoothed by a running median of 3 frames
+# (a one-frame spike, such as flexglove's flex6 jumping to
+# 886 counts, is not an extreme). Postures at fixed fractions of the motion
+# miss what happens between them: the hand opening wider before it closes
+# (preshaping) or a finger that bends further than where it rests on the
+# object. On flexglove held out by participant they lift the discriminant
+# from 83.1% to 85.1% (P1 76.5% -> 80.9%, P2 92.0% -> 90.9%), and on the
+# default data from 92.2% to 95.9% (five folds of subjects). An offset or
+# positive gain of a channel moves its
+# extremes alike, a negative gain swaps them: either way an invertible
+# affine map of the features, which the discriminant ignores.
+extreme_features <- function(x) {
+  p <- length(x$dofs)
+  E <- t(vapply(x$recordings, function(r) {
+    S <- median3_channels(r)
+    c(apply(S, 2, min), apply(S, 2, max))
+  }, numeric(2L * p)))
+  if (length(x$recordings) == 0L) E <- matrix(0, 0L, 2L * p)
+  colnames(E) <- c(paste0(x$dofs, ".min"), paste0(x$dofs, ".max"))
+  E
+}
+
+# Running median of 3 frames per column, the first and last frames the
+# median of the first and last three (vectorised: stats::runmed() per
+# channel tripled the discriminant's fitting time on flexglove). A recording
+# of fewer than 3 frames as is.
+median3_channels <- function(r) {
+  n <- nrow(r)
+  if (n < 3L) return(r)
+  a <- r[c(1L, seq_len(n - 2L), n - 2L), , drop = FALSE]
+  b <- r[c(2L, 2:(n - 1L), n - 1L), , drop = FALSE]
+  c <- r[c(3L, 3:n, n), , drop = FALSE]
+  pmax(pmin(a, b), pmin(pmax(a, b), c))
+}

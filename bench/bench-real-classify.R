@@ -118,6 +118,60 @@ cat(sprintf("A per-recording offset of sd %.1f counts (the rest level's spread w
             rest_sd, fmt(mean(changed))))
 bench_record("flexglove discriminant predictions changed by a per-recording offset", mean(changed), "fraction")
 
+# What the discriminant should be invariant to (issue 40): its features
+# referred to each recording's own rest level (the median of its frames
+# before the detected onset), to each participant's median rest level, and
+# also divided by each participant's median range per channel (rest minus
+# the smallest value). The per-participant forms use the held-out
+# participant's unlabelled recordings together. Held out by participant as
+# above, with the package's subclass choice.
+rest <- t(mapply(function(r, s) apply(r[seq_len(max(3L, s - 1L)), , drop = FALSE], 2, stats::median),
+                 g$recordings, find_motion(g)$start))
+invariance <- local({
+  p <- length(g$dofs)
+  at <- seq(0, 1, by = 0.125)
+  by_subject <- function(M) {
+    for (s in unique(g$meta$subject)) {
+      i <- g$meta$subject == s
+      M[i, ] <- matrix(apply(M[i, , drop = FALSE], 2, stats::median), sum(i), ncol(M), byrow = TRUE)
+    }
+    M
+  }
+  range_ <- rest - t(vapply(g$recordings, function(r) apply(r, 2, min), numeric(p)))
+  F <- classifier_features(g, at)
+  level_cols <- c(seq_len(length(at) * p), ncol(F) - 2L * p + seq_len(2L * p))   # postures and extremes
+  chan <- c(rep(seq_len(p), length(at)), rep(seq_len(p), 2L))
+  refer <- function(level, scale = NULL) {
+    G <- F
+    G[, level_cols] <- F[, level_cols] - level[, chan]
+    if (!is.null(scale)) G[, level_cols] <- G[, level_cols] / scale[, chan]
+    G
+  }
+  y <- droplevels(as.factor(g$meta$grasp))
+  acc <- function(G) {
+    ok <- logical(length(y))
+    for (s in unique(g$meta$subject)) {
+      tr <- g$meta$subject != s
+      fit <- fit_subclass_lda(G[tr, , drop = FALSE], y[tr], "equal", "auto", subjects = g$meta$subject[tr])
+      ok[!tr] <- top_class(fit$types, subclass_lda_scores(fit, G[!tr, , drop = FALSE])) == as.character(y[!tr])
+    }
+    c(pooled = mean(ok), vapply(c("P1", "P2"), function(s) mean(ok[g$meta$subject == s]), numeric(1)))
+  }
+  rbind(`as recorded` = acc(F), `each recording's rest level removed` = acc(refer(rest)),
+        `each participant's rest level removed` = acc(refer(by_subject(rest))),
+        `... and divided by the participant's range` = acc(refer(by_subject(rest), by_subject(range_))))
+})
+cat("The discriminant held out by participant, with its features referred to a rest level:\n")
+print(data.frame(features = rownames(invariance), pooled = fmt(invariance[, "pooled"]), `test P1` = fmt(invariance[, "P1"]),
+                 `test P2` = fmt(invariance[, "P2"]), check.names = FALSE), row.names = FALSE)
+subject_rest <- apply(rest, 2, function(v) tapply(v, g$meta$subject, stats::median))
+cat(sprintf("  the participants' median rest levels differ by %s counts on channels %s\n\n",
+            paste(round(apply(subject_rest, 2, function(v) diff(range(v))), 1), collapse = ", "),
+            paste(g$dofs, collapse = ", ")))
+for (k in seq_len(nrow(invariance))) {
+  bench_record(sprintf("flexglove discriminant, %s", rownames(invariance)[k]), invariance[k, "pooled"], "fraction")
+}
+
 # The simulator's raw-count glove (bench/bench-glove.R's set): one person, 5 folds by recording
 objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)
 raw <- simulate_grasps(subjects = 1, grasps = objects[seq_len(bq(6, 3))], objects = 1, trials = bq(28, 8),

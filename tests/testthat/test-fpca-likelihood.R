@@ -57,11 +57,12 @@ test_that("the likelihood distance reads the scores: a recording in both types' 
   expect_lt(abs(res$.dist_A - res$.dist_B), abs(d$.dist_A - d$.dist_B))
 })
 
-test_that("the likelihood distance is minus twice the log density of scores and residual, by DoF", {
+test_that("the likelihood distance is minus twice the log density of the residual by DoF and of the joint scores", {
   g <- amplitude_types(subjects = 2, trials = 6)
   ms <- fit_grasp_models(g, seed = 1, ncomp = 1, mixture_components = 1)
   d <- predict(ms, g, type = "distance")
-  # by hand, for model A: project, then score density and scaled chi-square
+  # by hand, for model A: project, then the scaled chi-square of each DoF's
+  # residual and the Gaussian kernel density of the joint score vector
   m <- fitted_models(ms)[["A"]]
   pr <- project(m, g)
   ref <- numeric(length(g))
@@ -71,10 +72,109 @@ test_that("the likelihood distance is minus twice the log density of scores and 
     a <- sum(ev^2) / sum(ev)
     nu <- sum(ev)^2 / sum(ev^2)
     ref <- ref - 2 * (stats::dchisq(pr$residual[, j]^2 / a, nu, log = TRUE) - log(a))
-    mix <- m$gmm[[j]]
-    ref <- ref - 2 * stats::dnorm(pr$scores[, j, 1], mix$means[1, 1], sqrt(mix$covs[1, 1, 1]), log = TRUE)
   }
+  X <- vapply(m$fpca, function(f) f$scores[, 1], numeric(m$n_used))   # training scores, n x 16
+  S <- pr$scores[, , 1]
+  kd <- kernel_density(X)
+  K <- kd$bandwidth^2 * kd$cor * tcrossprod(apply(X, 2, stats::sd))
+  Ki <- solve(K)
+  logdet <- determinant(K)$modulus[[1]]
+  dens <- apply(S, 1, function(s) {
+    q <- apply(X, 1, function(xi) sum((s - xi) * (Ki %*% (s - xi))))
+    mean(exp(-q / 2 - logdet / 2 - ncol(X) / 2 * log(2 * pi)))
+  })
+  ref <- ref - 2 * log(dens)
   expect_equal(unname(d$.dist_A), unname(ref), tolerance = 1e-8)
+})
+
+# Two types whose every DoF is alike, told apart only by how the DoFs go
+# together: each recording ramps to amplitude u on DoFs 1-8 and v on 9-16,
+# (u, v) one of (1, 1), (2, 2) for type A (two objects) and one of (1, 2),
+# (2, 1) for type B. Each DoF's scores have the same two clusters in both
+# types, so a density DoF by DoF cannot tell them apart; the joint one can.
+coupled_types <- function(subjects = 4, trials = 8, seed = 1) {
+  withr::with_seed(seed, {
+    base <- stats::runif(16, 20, 60)
+    recs <- list()
+    meta <- list()
+    for (s in seq_len(subjects)) for (ty in c("A", "B")) for (r in seq_len(trials)) {
+      u <- 1 + r %% 2
+      v <- if (ty == "A") u else 3 - u
+      amp <- c(rep(u, 8), rep(v, 8)) * (1 + stats::rnorm(16, 0, 0.05))
+      n <- 20 + sample(-2:2, 1)
+      ramp <- (1 - cos(pi * seq(0, 1, length.out = n))) / 2
+      recs[[length(recs) + 1]] <- outer(ramp, amp * base) + matrix(stats::rnorm(n * 16, 0, 1), n, 16)
+      meta[[length(meta) + 1]] <- data.frame(grasp = ty, subject = paste0("s", s), object = "o1", trial = r)
+    }
+    grasps(recs, meta = do.call(rbind, meta))
+  })
+}
+
+test_that("the joint score density tells apart types that differ only in how their DoFs go together", {
+  g <- coupled_types()
+  train <- g[g$meta$subject != "s4"]
+  test <- g[g$meta$subject == "s4"]
+  acc <- function(ms) {
+    cl <- classify(ms, test)
+    mean(as.character(cl$predictions$predicted) == as.character(cl$predictions$truth))
+  }
+  ms <- fit_grasp_models(train, seed = 1, ncomp = 1, mixture_components = 2)
+  # 16 held-out recordings, 4 per (type, object): all right
+  expect_gte(acc(ms), 15 / 16)
+  # the same models scored DoF by DoF (each DoF's own two-cluster mixture,
+  # the former score term) are near chance: the marginals are the same
+  m <- fitted_models(ms)
+  pr <- lapply(m, function(mm) project(mm, test))
+  per_dof <- vapply(names(m), function(t) {
+    -2 * rowSums(vapply(seq_along(m[[t]]$dofs), function(j) {
+      mix <- m[[t]]$gmm[[j]]
+      gmm_log_density(mix$weights, mix$means, mix$covs, matrix(pr[[t]]$scores[, j, ], ncol = 1))
+    }, numeric(length(test))))
+  }, numeric(length(test)))
+  expect_lt(mean(colnames(per_dof)[max.col(-per_dof)] == test$meta$grasp), 0.8)
+})
+
+test_that("the likelihood distance ignores a gain and an offset of each channel common to all recordings", {
+  g <- coupled_types(subjects = 3, trials = 6)
+  set.seed(9)
+  gain <- stats::runif(16, 0.3, 4) * sample(c(-1, 1), 16, TRUE)   # counts that fall as a finger bends, too
+  offset <- stats::runif(16, -300, 300)
+  moved <- g
+  moved$recordings <- lapply(g$recordings, function(r) sweep(sweep(r, 2, gain, "*"), 2, offset, "+"))
+  # linear warping, as for recordings trimmed to their motion (real gloves'):
+  # the DTW's own choice of warps depends on the channels' units
+  dist <- function(x) {
+    ms <- fit_grasp_models(x, seed = 1, ncomp = 1, mixture_components = 1, warping = "linear")
+    as.matrix(as.data.frame(predict(ms, x, type = "distance")))
+  }
+  d0 <- dist(g)
+  d1 <- dist(moved)
+  # every distance moves by the same constant (the log of the gains), so
+  # the ranking is the same: differences between types are unchanged
+  expect_equal(d1[, 1] - d1[, 2], d0[, 1] - d0[, 2], tolerance = 1e-6)
+  expect_equal(max.col(-d1), max.col(-d0))
+})
+
+test_that("a type of fewer than three recordings keeps the DoF-by-DoF score mixtures", {
+  g <- amplitude_types(subjects = 1, trials = 2)
+  expect_warning(ms <- fit_grasp_models(g, seed = 1, ncomp = 1, mixture_components = 1),
+                 class = "handmotion_warning_few_recordings")
+  m <- fitted_models(ms)[["A"]]
+  expect_null(likelihood_score_kernel(m))
+  pr <- project(m, g)
+  ref <- numeric(length(g))
+  for (j in seq_along(m$dofs)) {
+    f <- m$fpca[[j]]
+    if (isTRUE(f$constant)) next
+    ev <- f$eigenvalues[-1]
+    ev <- ev[is.finite(ev) & ev > 0]
+    a <- max(if (length(ev)) sum(ev^2) / sum(ev) else 0, 1e-8 * max(f$eigenvalues, 1))
+    nu <- if (length(ev)) max(sum(ev)^2 / sum(ev^2), 1) else 1
+    mix <- m$gmm[[j]]
+    ref <- ref - 2 * (stats::dchisq(pmax(pr$residual[, j]^2, .Machine$double.xmin) / a, nu, log = TRUE) - log(a)) -
+      2 * gmm_log_density(mix$weights, mix$means, mix$covs, matrix(pr$scores[, j, ], ncol = 1))
+  }
+  expect_equal(unname(predict(ms, g, type = "distance")$.dist_A), unname(ref), tolerance = 1e-8)
 })
 
 test_that("distance is checked, kept by subsetting, and printed", {

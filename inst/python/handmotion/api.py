@@ -397,8 +397,8 @@ def fit_grasp_classifier(x, method="discriminant", **kwargs):
     """A fitted grasp classifier for :func:`classify` (R's ``fit_grasp_classifier()``; the
     method's arguments by name, validated in R):
 
-    * ``"discriminant"``: shrinkage LDA on postures at fractions of the motion, duration and
-      travel per DoF (``at``, ``prior``); a :class:`GraspClassifier`;
+    * ``"discriminant"``: shrinkage LDA on postures at fractions of the motion, duration,
+      travel and extremes per DoF (``at``, ``prior``); a :class:`GraspClassifier`;
     * ``"last_frame"``: per-type PCA of the recordings' last frames, the thesis' baseline
       (``ncomp``, ``grasps``), also for :func:`thesis_table`;
     * ``"weighted_fpca"``: the thesis' FPCA distance with per-type DoF weights (``models``, a
