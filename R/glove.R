@@ -298,9 +298,15 @@ find_stuck <- function(recordings, tol = 1e-9) {
 }
 
 # The smallest and largest value of each channel over every frame of a set.
-channel_ranges <- function(recordings) {
-  list(lo = Reduce(pmin, lapply(recordings, function(r) apply(r, 2, min))),
-       hi = Reduce(pmax, lapply(recordings, function(r) apply(r, 2, max))))
+# The recordings are stacked a block at a time (two apply() calls per
+# recording were a tenth of evaluate_generation()'s time; blocks keep the
+# copy small at ten times the data).
+channel_ranges <- function(recordings, block = 500L) {
+  parts <- lapply(split(seq_along(recordings), (seq_along(recordings) - 1L) %/% block), function(i) {
+    S <- do.call(rbind, recordings[i])
+    list(lo = apply(S, 2, min), hi = apply(S, 2, max))
+  })
+  list(lo = Reduce(pmin, lapply(parts, `[[`, "lo")), hi = Reduce(pmax, lapply(parts, `[[`, "hi")))
 }
 
 # Recordings a set needs before a channel constant over all of them counts

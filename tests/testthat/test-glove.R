@@ -114,3 +114,19 @@ test_that("raw counts given an angle profile (a CyberGlove's) keep its joints an
   expect_identical(g$glove$channels$joint[drawn], glove_profile("cyberglove22")$channels$joint[drawn])
   expect_true(all(is.finite(forward_kinematics(g[1])[[1]])))
 })
+
+test_that("channel ranges over blocks of recordings are the ranges over every frame", {
+  set.seed(8)
+  recs <- lapply(1:7, function(i) matrix(stats::rnorm(4 * 3, mean = i), 4, 3,
+                                         dimnames = list(NULL, c("x", "y", "z"))))
+  recs[[5]][2, 2] <- 100   # the largest value of y, in a middle block
+  recs[[1]][1, 3] <- -50   # the smallest of z, in the first block
+  all <- do.call(rbind, recs)
+  for (block in c(1L, 3L, 500L)) {
+    r <- channel_ranges(recs, block = block)
+    expect_identical(r$lo, apply(all, 2, min))
+    expect_identical(r$hi, apply(all, 2, max))
+  }
+  recs <- lapply(recs, function(m) { m[, "y"] <- 2; m })
+  expect_identical(find_stuck(recs), c(x = FALSE, y = TRUE, z = FALSE))
+})
