@@ -25,6 +25,7 @@ SEXP hm_project_warped(SEXP recs, SEXP cols, SEXP u, SEXP mean, SEXP comps, SEXP
 SEXP hm_byte_counts(SEXP x); /* byte-counts.c */
 SEXP hm_lda_w2(SEXP F, SEXP rows, SEXP cls, SEXP means, SEXP inv_s); /* lda-moments.c */
 SEXP hm_mmd_permutations(SEXP K, SEXP n, SEXP perms); /* mmd-permutations.c */
+SEXP hm_channel_ranges(SEXP recs, SEXP p); /* channel-ranges.c */
 
 static const R_CallMethodDef call_methods[] = {
   {"hm_dtw_pair", (DL_FUNC) &hm_dtw_pair, 3}, {"hm_dtw_batch", (DL_FUNC) &hm_dtw_batch, 4},
@@ -41,6 +42,7 @@ static const R_CallMethodDef call_methods[] = {
   {"hm_byte_counts", (DL_FUNC) &hm_byte_counts, 1},
   {"hm_lda_w2", (DL_FUNC) &hm_lda_w2, 5},
   {"hm_mmd_permutations", (DL_FUNC) &hm_mmd_permutations, 3},
+  {"hm_channel_ranges", (DL_FUNC) &hm_channel_ranges, 2},
   {NULL, NULL, 0}
 };
 

@@ -66,3 +66,20 @@ test_that("byte counts are tabulate()'s", {
   expect_identical(.Call(hm_byte_counts, raw(0)), numeric(256))
   expect_error(.Call(hm_byte_counts, 1:3), "raw vector")
 })
+
+test_that("a file whose rows sum past the largest double is still read, to the same numbers", {
+  # fread's rows are checked for finite values through their sums: a row of
+  # finite values whose sum overflows sends its file to the text parser
+  dir <- withr::local_tempdir()
+  v <- matrix(round(seq_len(4 * 23) / 1000, 5), 4, 23, byrow = TRUE)
+  v[2, 1:2] <- 1.5e308
+  p <- write_fixture(dir, "01_ex01-rad-001-grasp-su01.txt", graspdb14_row_text(4, values = v))
+  q <- write_fixture(dir, "01_ex01-rad-002-grasp-su01.txt", graspdb14_row_text(4))
+  fast <- graspdb14_fread_many(c(p, q))
+  expect_null(fast[[1]])
+  expect_false(is.null(fast[[2]]))
+  g <- read_graspdb14(dir)
+  expect_identical(read_failures(g)$file, character())
+  expect_identical(unname(g$recordings[[1]][2, 1:2]), c(1.5e308, 1.5e308))
+  expect_equal(unname(g$recordings[[1]][-2, ]), v[-2, ], tolerance = 1e-12)
+})
