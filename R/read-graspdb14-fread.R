@@ -23,63 +23,66 @@ graspdb14_fread_chunk <- 32 * 1024^2
 # dropped) or NULL for a file the text parser must read).
 graspdb14_fread_many <- function(files) {
   out <- vector("list", length(files))
-  size <- file.size(files)
-  size[is.na(size)] <- 0
+  size <- graspdb14_readable_size(files)
   chunk <- cumsum(size) %/% graspdb14_fread_chunk
   for (idx in split(seq_along(files), chunk)) {
-    plain <- lapply(files[idx], graspdb14_plain_bytes)
-    ok <- !vapply(plain, is.null, logical(1))
-    if (any(ok)) out[idx[ok]] <- graspdb14_fread_group(plain[ok])
+    plain <- graspdb14_plain_text(files[idx], size[idx])
+    ok <- !is.na(plain$n_lines)
+    if (any(ok)) out[idx[ok]] <- graspdb14_fread_group(files[idx][ok], size[idx][ok], plain$n_lines[ok], plain$text)
   }
   out
 }
 
-# A file's bytes and line count when it holds only the characters of numbers,
-# blanks and line ends; NULL otherwise (or when it is empty or unreadable).
-graspdb14_plain_bytes <- function(file) {
-  size <- file.size(file)
-  # a folder, broken link or unreadable file is left to the per-file reader,
-  # which reports it (unreadable_file) without R's connection warnings
-  if (is.na(size) || size == 0 || dir.exists(file) || file.access(file, 4L) != 0L) return(NULL)
-  bytes <- tryCatch(suppressWarnings(readBin(file, "raw", size)), error = function(e) NULL)
-  if (length(bytes) != size) return(NULL)
-  counts <- .Call(hm_byte_counts, bytes)
-  if (sum(counts[graspdb14_plain_codes]) != size) return(NULL)
-  last_open <- bytes[size] != as.raw(10L)
-  # a last line without its line end gets one, so files can be concatenated
-  if (last_open) bytes <- c(bytes, as.raw(10L))
-  list(bytes = bytes, n_lines = counts[11L] + last_open)
+# The size of each file, 0 for one the per-file reader must see: a folder,
+# broken link or unreadable file is left to it, which reports it
+# (unreadable_file) without R's connection warnings.
+graspdb14_readable_size <- function(files) {
+  size <- file.size(files)
+  size[is.na(size) | dir.exists(files) | file.access(files, 4L) != 0L] <- 0
+  size
 }
 
-graspdb14_plain_codes <- utf8ToInt("0123456789.+-eE \t\r\n") + 1L
+# The plain files among `files` (only the characters of numbers, blanks and
+# line ends), concatenated into one string (`text`, each file's last line
+# ended), and each file's line count (`n_lines`, NA for a file left out: not
+# plain, empty or unreadable). Compiled (src/plain-text.c): the bytes are
+# read into the string once.
+graspdb14_plain_text <- function(files, size) {
+  .Call(hm_plain_text, files, as.numeric(size))
+}
 
-# Read a group of plain files with one fread; when the group does not parse
-# as 30 finite numbers on every line, halve it until the files that do not
-# are alone (they get NULL), so one bad file costs a few extra freads.
-graspdb14_fread_group <- function(plain) {
-  n_lines <- vapply(plain, `[[`, numeric(1), "n_lines")
-  values <- graspdb14_fread_bytes(lapply(plain, `[[`, "bytes"), sum(n_lines))
+# Read a group of plain files with one fread (of `text`, when the caller has
+# it); when the group does not parse as 30 finite numbers on every line,
+# halve it until the files that do not are alone (they get NULL), so one bad
+# file costs a few extra freads.
+graspdb14_fread_group <- function(files, size, n_lines, text = NULL) {
+  text <- text %||% graspdb14_plain_text(files, size)$text
+  values <- graspdb14_fread_text(text, sum(n_lines))
   if (!is.null(values)) {
-    file_of_row <- rep.int(seq_along(plain), n_lines)
-    finite <- rowSums(!is.finite(values)) == 0
-    good <- vapply(split(finite, factor(file_of_row, seq_along(plain))), all, logical(1))
-    rows <- split(seq_len(nrow(values)), factor(file_of_row, seq_along(plain)))
-    return(lapply(seq_along(plain), function(i) {
+    file_of_row <- rep.int(seq_along(files), n_lines)
+    # a row of finite values has a finite sum (a sum that overflows only
+    # sends its file to the text parser, which reads it the same): one pass,
+    # where !is.finite() of every value cost as much as the fread
+    finite <- is.finite(rowSums(values))
+    good <- vapply(split(finite, factor(file_of_row, seq_along(files))), all, logical(1))
+    rows <- split(seq_len(nrow(values)), factor(file_of_row, seq_along(files)))
+    return(lapply(seq_along(files), function(i) {
       if (!good[i]) return(NULL)
       list(values = values[rows[[i]], , drop = FALSE], line_no = seq_len(n_lines[i]), dropped = FALSE)
     }))
   }
-  if (length(plain) == 1L) return(list(NULL))
-  half <- seq_len(length(plain) %/% 2L)
-  c(graspdb14_fread_group(plain[half]), graspdb14_fread_group(plain[-half]))
+  if (length(files) == 1L) return(list(NULL))
+  half <- seq_len(length(files) %/% 2L)
+  c(graspdb14_fread_group(files[half], size[half], n_lines[half]),
+    graspdb14_fread_group(files[-half], size[-half], n_lines[-half]))
 }
 
-# One fread of concatenated file contents: the 30-column matrix, or NULL when
-# fread warns, fails, or does not find 30 fields on each of `n_lines` lines.
-graspdb14_fread_bytes <- function(bytes, n_lines) {
-  # one string in memory (plain bytes hold no NUL): fread parses it in place,
-  # where a temporary file would cost a disk write of the whole directory
-  text <- rawToChar(unlist(bytes, use.names = FALSE))
+# One fread of the concatenated contents of plain files: the 30-column
+# matrix, or NULL when fread warns, fails, or does not find 30 fields on each
+# of `n_lines` lines. The text is one string in memory (plain bytes hold no
+# NUL): fread parses it in place, where a temporary file would cost a disk
+# write of the whole directory.
+graspdb14_fread_text <- function(text, n_lines) {
   # a warning is noted and muffled, not caught: unwinding out of fread's C
   # code mid-read leaves it unable to read the next file
   warned <- FALSE

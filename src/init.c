@@ -22,8 +22,10 @@ SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SE
                       SEXP weights, SEXP norm_weights); /* project-kernel.c */
 SEXP hm_project_warped(SEXP recs, SEXP cols, SEXP u, SEXP mean, SEXP comps, SEXP weights,
                        SEXP norm_weights, SEXP mode); /* project-kernel.c */
-SEXP hm_byte_counts(SEXP x); /* byte-counts.c */
 SEXP hm_lda_w2(SEXP F, SEXP rows, SEXP cls, SEXP means, SEXP inv_s); /* lda-moments.c */
+SEXP hm_mmd_permutations(SEXP K, SEXP n, SEXP perms); /* mmd-permutations.c */
+SEXP hm_channel_ranges(SEXP recs, SEXP p); /* channel-ranges.c */
+SEXP hm_plain_text(SEXP files, SEXP sizes); /* plain-text.c */
 
 static const R_CallMethodDef call_methods[] = {
   {"hm_dtw_pair", (DL_FUNC) &hm_dtw_pair, 3}, {"hm_dtw_batch", (DL_FUNC) &hm_dtw_batch, 4},
@@ -37,8 +39,10 @@ static const R_CallMethodDef call_methods[] = {
   {"hm_project_batch", (DL_FUNC) &hm_project_batch, 8},
   {"hm_project_warped", (DL_FUNC) &hm_project_warped, 8},
   {"hm_copula_draw", (DL_FUNC) &hm_copula_draw, 4},
-  {"hm_byte_counts", (DL_FUNC) &hm_byte_counts, 1},
   {"hm_lda_w2", (DL_FUNC) &hm_lda_w2, 5},
+  {"hm_mmd_permutations", (DL_FUNC) &hm_mmd_permutations, 3},
+  {"hm_channel_ranges", (DL_FUNC) &hm_channel_ranges, 2},
+  {"hm_plain_text", (DL_FUNC) &hm_plain_text, 2},
   {NULL, NULL, 0}
 };
 

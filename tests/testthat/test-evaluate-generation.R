@@ -84,6 +84,15 @@ test_that("the MMD test by quadratic forms equals the former permutation-by-inde
   expect_equal(new$p, old$p)
   expect_gt(old$p, 0.01)
   expect_lt(old$p, 0.9)
+  # the compiled permutations take as many draws from the session's stream
+  # as sample.int() did: what is drawn after it is the same
+  after_new <- withr::with_seed(9, {mmd_test(X, Y, bw, permutations = 300); stats::runif(3)})
+  after_old <- withr::with_seed(9, {mmd_test_reference(X, Y, bw, permutations = 300); stats::runif(3)})
+  expect_identical(after_new, after_old)
+  # a permutation that splits the samples as observed scores as the observed
+  # split does (the same terms in the same order)
+  same <- withr::with_seed(2, mmd_test(X[1:2, ], Y[1:2, ], bw, permutations = 50))
+  expect_equal(same$p, withr::with_seed(2, mmd_test_reference(X[1:2, ], Y[1:2, ], bw, permutations = 50))$p)
 })
 
 test_that("evaluate_generation() flags independent DoFs and returns a tidy table", {

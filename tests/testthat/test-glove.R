@@ -114,3 +114,21 @@ test_that("raw counts given an angle profile (a CyberGlove's) keep its joints an
   expect_identical(g$glove$channels$joint[drawn], glove_profile("cyberglove22")$channels$joint[drawn])
   expect_true(all(is.finite(forward_kinematics(g[1])[[1]])))
 })
+
+test_that("channel ranges are the ranges over every frame of every recording", {
+  set.seed(8)
+  recs <- lapply(c(4, 1, 6, 4, 9, 2, 4), function(n) matrix(stats::rnorm(n * 3, mean = n), n, 3,
+                                                         dimnames = list(NULL, c("x", "y", "z"))))
+  recs[[5]][2, 2] <- 100   # the largest value of y, inside a recording
+  recs[[1]][1, 3] <- -50   # the smallest of z, the first value of the first
+  recs[[7]][4, 1] <- 1e6   # the largest of x, the last value of the last
+  all <- do.call(rbind, recs)
+  r <- channel_ranges(recs)
+  expect_identical(r$lo, apply(all, 2, min))
+  expect_identical(r$hi, apply(all, 2, max))
+  expect_identical(r$hi[["x"]], 1e6)
+  # integer recordings are read as numbers
+  expect_identical(channel_ranges(list(matrix(1:6, 3)))$hi, c(3, 6))
+  recs <- lapply(recs, function(m) { m[, "y"] <- 2; m })
+  expect_identical(find_stuck(recs), c(x = FALSE, y = TRUE, z = FALSE))
+})

@@ -130,3 +130,15 @@ test_that("several unknown grasp types are all named in one error", {
   expect_error(as_feix_grasp(c("foo", "bar", "Tripod")), "foo", class = "handmotion_error_unknown_grasp")
   expect_error(as_feix_grasp(c(40, 50)), class = "handmotion_error_unknown_grasp")
 })
+
+test_that("finite values whose sum overflows are accepted, a non-finite one anywhere is not", {
+  big <- matrix(1.5e308, 3, 2)
+  expect_identical(unname(grasps(list(big))$recordings[[1]][3, 2]), 1.5e308)
+  for (bad in c(NA, NaN, -Inf)) {
+    m <- big
+    m[2, 2] <- bad
+    err <- expect_error(grasps(list(m)), class = "handmotion_error_bad_recording")
+    expect_match(conditionMessage(err), "frame 2")
+  }
+  expect_error(grasps(list(matrix(c(1L, NA, 3L, 4L), 2))), class = "handmotion_error_bad_recording")
+})

@@ -74,3 +74,16 @@ test_that("dof_limits() gives each limited DoF its range in its own unit and sig
   expect_equal(unname(out[1, lim$col]), lim$hi)
   expect_equal(unname(out[2, lim$col]), lim$lo)
 })
+
+test_that("limit_violations() counts the frames outside the limits, per DoF and overall", {
+  # planted: DoF b is below its limit in 3 of 10 frames, c above in 2 (one
+  # of them a frame where b is below too); DoF a has no limit
+  r1 <- cbind(a = 1:5, b = c(-1, 0, 0, 0, -2), c = c(0, 0, 0, 0, 9))
+  r2 <- cbind(a = 6:10, b = c(0, -3, 0, 0, 0), c = c(0, 0, 5, 0, 0))
+  x <- grasps(list(r1, r2), rate = 10)
+  lim <- data.frame(dof = c("c", "b"), lo = c(-1, -0.5), hi = c(1, 1))
+  v <- limit_violations(x, lim)
+  expect_equal(v$by_dof, c(c = 0.2, b = 0.3))
+  expect_equal(v$frames, 0.4)
+  expect_identical(limit_violations(x, lim[0, ])$frames, NA_real_)
+})

@@ -60,9 +60,38 @@ test_that("a switch or time stamp fread reads as a number is still checked, by l
   expect_identical(err$line, 4L)
 })
 
-test_that("byte counts are tabulate()'s", {
-  b <- as.raw(c(0, 10, 10, 255, 48, 48, 48))
-  expect_identical(.Call(hm_byte_counts, b), as.numeric(tabulate(as.integer(b) + 1L, 256L)))
-  expect_identical(.Call(hm_byte_counts, raw(0)), numeric(256))
-  expect_error(.Call(hm_byte_counts, 1:3), "raw vector")
+test_that("the plain files of a group are concatenated, each line ended, the others left out", {
+  dir <- withr::local_tempdir()
+  a <- write_fixture(dir, "a.txt", c("1 2", "3 4"))                      # 2 lines
+  b <- write_fixture(dir, "b.txt", c("5 6e-1", "-7\t+8"), final_eol = FALSE)  # last line open
+  c <- write_fixture(dir, "c.txt", c("# a comment", "1 2"))              # not plain
+  d <- write_fixture(dir, "d.txt", c("9 10\r"))                           # CR: plain bytes
+  e <- file.path(dir, "e.txt")
+  file.create(e)                                                         # empty
+  sub <- file.path(dir, "sub.txt")
+  dir.create(sub)                                                        # a folder
+  files <- c(a, b, c, d, e, sub, file.path(dir, "missing.txt"))
+  size <- graspdb14_readable_size(files)
+  expect_identical(size, c(8, 12, 16, 6, 0, 0, 0))
+  got <- graspdb14_plain_text(files, size)
+  expect_identical(got$n_lines, c(2, 2, NA, 1, NA, NA, NA))
+  expect_identical(got$text, "1 2\n3 4\n5 6e-1\n-7\t+8\n9 10\r\n")
+  expect_identical(graspdb14_plain_text(c, 16)$text, "")
+})
+
+test_that("a file whose rows sum past the largest double is still read, to the same numbers", {
+  # fread's rows are checked for finite values through their sums: a row of
+  # finite values whose sum overflows sends its file to the text parser
+  dir <- withr::local_tempdir()
+  v <- matrix(round(seq_len(4 * 23) / 1000, 5), 4, 23, byrow = TRUE)
+  v[2, 1:2] <- 1.5e308
+  p <- write_fixture(dir, "01_ex01-rad-001-grasp-su01.txt", graspdb14_row_text(4, values = v))
+  q <- write_fixture(dir, "01_ex01-rad-002-grasp-su01.txt", graspdb14_row_text(4))
+  fast <- graspdb14_fread_many(c(p, q))
+  expect_null(fast[[1]])
+  expect_false(is.null(fast[[2]]))
+  g <- read_graspdb14(dir)
+  expect_identical(read_failures(g)$file, character())
+  expect_identical(unname(g$recordings[[1]][2, 1:2]), c(1.5e308, 1.5e308))
+  expect_equal(unname(g$recordings[[1]][-2, ]), v[-2, ], tolerance = 1e-12)
 })
