@@ -47,8 +47,9 @@ score_columns <- function(model) {
   kw <- model$settings$warp_ncomp
   live <- !vapply(model$fpca, function(f) isTRUE(f$constant), logical(1))
   dofs <- model$dofs[live]
+  # (rep(): a model whose every DoF is constant has no columns)
   cols <- data.frame(dof = rep(dofs, each = k), comp = rep(seq_len(k), length(dofs)),
-                     warp = FALSE, stringsAsFactors = FALSE)
+                     warp = rep(FALSE, length(dofs) * k), stringsAsFactors = FALSE)
   if (!isTRUE(model$warp$constant)) {
     cols <- rbind(cols, data.frame(dof = NA_character_, comp = seq_len(kw), warp = TRUE,
                                    stringsAsFactors = FALSE))

@@ -34,7 +34,9 @@
 fpca_likelihood_distance <- function(model, pr) {
   k <- model$settings$ncomp
   total <- numeric(length(pr$distance))
-  kern <- likelihood_score_kernel(model)
+  # (NULL: fewer than three recordings, or a model fitted before the joint
+  # density, which scored DoF by DoF)
+  kern <- model$likelihood_kernel
   for (j in seq_along(model$dofs)) {
     f <- model$fpca[[j]]
     # a constant DoF (zero basis, point-mass mixture) says nothing about type
@@ -64,6 +66,7 @@ fpca_likelihood_distance <- function(model, pr) {
 # h^2 S, over the d directions kept)); NULL with fewer than three training
 # recordings or no score that varies.
 likelihood_score_kernel <- function(model) {
+  if (model$n_used < 3L || !isTRUE(model$settings$ncomp > 0)) return(NULL)
   cols <- score_columns(model)
   cols <- cols[!cols$warp, , drop = FALSE]
   if (!nrow(cols) || model$n_used < 3L) return(NULL)
