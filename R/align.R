@@ -238,7 +238,7 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
   if (!is.null(norm)) {
     # back to data units: the normalisation is affine per recording and DoF,
     # so the mean of the normalised matched frames maps to the raw mean
-    # (denormalise_recording() for all recordings at once: element [i, l, c]
+    # (x * scale + centre for all recordings at once: element [i, l, c]
     # of the array is scaled by scale[i, c], in the array's own order)
     per_frame <- rep(seq_len(ncol(norm$scale)), each = L)
     warped <- warped * as.vector(norm$scale[kept, per_frame, drop = FALSE]) +
@@ -297,11 +297,6 @@ shape_features <- function(recs, k = 3L) {
 normalise_recording <- function(x, nm) {
   n <- nrow(x)
   (x - rep(nm$centre, each = n)) / rep(nm$scale, each = n)
-}
-
-denormalise_recording <- function(x, nm) {
-  n <- nrow(x)
-  x * rep(nm$scale, each = n) + rep(nm$centre, each = n)
 }
 
 new_grasp_alignment <- function(...) {
