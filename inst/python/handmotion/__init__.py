@@ -35,8 +35,9 @@ and argument names (a test compares this list with R's NAMESPACE):
 
 Deliberately not mirrored: ``autoplot`` (ggplot2 graphics belong to R; every result
 is a DataFrame or numpy array to plot in Python), ``hand_3d_output`` and
-``render_hand_3d`` (Shiny bindings, R-only) and ``joint_map`` (R's mapping of DoFs to
-skeleton joints, used inside forward_kinematics()). Python-only helpers:
+``render_hand_3d`` (Shiny bindings, R-only), ``joint_map`` (R's mapping of DoFs to
+skeleton joints, used inside forward_kinematics()) and ``python_bridge`` (the R entry this
+package's bridge calls, ``?python_bridge``; it never reaches R's internals through ``:::``). Python-only helpers:
 ``joint_names`` (the joint order of ``forward_kinematics`` arrays) and ``extdata`` (the path
 of a file or folder the R package ships, R's ``system.file("extdata", ...)``, e.g. the real
 flexglove recordings for ``read_glove``).

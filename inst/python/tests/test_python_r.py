@@ -88,6 +88,16 @@ def test_no_r_code_in_python_strings():
             assert not re.search(r"function\s*\(", text), f
 
 
+def test_no_r_internals_reached():
+    # R's internals are reached through the documented python_bridge() export only
+    tests = os.path.dirname(os.path.abspath(__file__))
+    for folder in (PKG, tests):
+        for f in os.listdir(folder):
+            if f.endswith(".py"):
+                text = open(os.path.join(folder, f), encoding="utf-8").read()
+                assert "handmotion" + ":::" not in text, f
+
+
 def test_project_mirrors_r(hm, small):
     # project() gives the thesis' residual distance (eq. 4.4): a set ranked by it
     m = hm.fit_grasp_models(small, seed=1, distance="residual")
