@@ -20,7 +20,7 @@ slope_pattern <- matrix(c(
   5, 3, 1, -1,  5, 2, 0, 2,  5, 1, 0, 1,  5, 0, 0, 1), ncol = 4, byrow = TRUE)
 
 # The slope-constrained path of recording x against the template: index1,
-# index2 and distance as dtw_align_pair(). "fast" is src/dtw-slope.c,
+# index2 and distance as dtw_pair_reference(). "fast" is src/dtw-slope.c,
 # "reference" the dtw package (same path).
 dtw_slope_pair <- function(x, template, engine = "fast") {
   if (engine == "fast") return(.Call(hm_dtw_pattern, x, template, slope_pattern))

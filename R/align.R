@@ -12,55 +12,9 @@
 # simulated data that dropped 7-23% of each type as degenerate, against 0-3%
 # with shape features (features = "raw" keeps the plain comparison).
 
-#' Multivariate DTW of one recording against a template
-#'
-#' Dynamic time warping with the Euclidean distance between frames (across
-#' all DoFs) and the `symmetric2` step pattern (the dtw package's default:
-#' diagonal steps weigh the local distance twice).
-#'
-#' @param x Numeric matrix, frames x DoFs (the recording).
-#' @param template Numeric matrix, frames x DoFs, same number of columns.
-#' @param engine `"fast"` (the package's C implementation) or `"reference"`
-#'   ([dtw::dtw()]); both give the same path and distance.
-#' @param window `NULL` (no constraint) or a non-negative number: the
-#'   half-width, in template frames, of a band around the diagonal slanted
-#'   from (1, 1) to (n, L) (dtw's `"slantedband"` window).
-#' @return A list: `index1` (frames of `x`) and `index2` (frames of
-#'   `template`), integer vectors of equal length giving the warping path from
-#'   (1, 1) to (n, L), and `distance`, the accumulated cost (not normalised).
-#' @seealso [align_recordings()]
-#' @examples
-#' t1 <- seq(0, 1, length.out = 30); t2 <- seq(0, 1, length.out = 40)^1.5
-#' x <- cbind(a = sin(pi * t1), b = t1^2)
-#' y <- cbind(a = sin(pi * t2), b = t2^2)
-#' p <- dtw_align_pair(x, y)
-#' p$distance
-#' head(cbind(p$index1, p$index2))
-#' @noRd
-dtw_align_pair <- function(x, template, engine = c("fast", "reference"), window = NULL) {
-  call <- rlang::caller_env()
-  engine <- check_choice(engine, arg = "engine", call = call)
-  x <- as_numeric_matrix(x, "x", " (frames x DoFs)", call = call)
-  template <- as_numeric_matrix(template, "template", " (frames x DoFs)", call = call)
-  if (ncol(x) != ncol(template)) {
-    hm_abort("{.arg x} has {ncol(x)} column{?s} but {.arg template} has {ncol(template)}.",
-             "bad_input", argument = "template", call = call)
-  }
-  window <- check_number(window, "window", min = 0, allow_null = TRUE, call = call)
-  res <- tryCatch(
-    if (engine == "fast") dtw_pair_fast(x, template, window)
-    else dtw_pair_reference(x, template, window),
-    error = function(e) {
-      hm_abort(c("DTW failed.", x = conditionMessage(e)), "alignment_failed",
-               call = call)
-    })
-  res
-}
-
-dtw_pair_fast <- function(x, template, window) {
-  .Call(hm_dtw_pair, x, template, window)
-}
-
+# One pairwise DTW by the dtw package (the "reference" engine, symmetric2 steps,
+# Euclidean distance between frames, optionally a slanted band `window`): the
+# warping path `index1`/`index2` and the accumulated `distance`.
 dtw_pair_reference <- function(x, template, window) {
   args <- list(x, template, step.pattern = dtw::symmetric2, keep.internals = FALSE)
   # dtw warns when dist.method is given for one-column series; Euclidean is
@@ -81,7 +35,7 @@ dtw_pair_reference <- function(x, template, window) {
 #' warping against a template refined by DTW barycenter averaging (DBA):
 #' the initial template is the mean of all recordings linearly resampled to
 #' `L`; each iteration aligns every recording to the template
-#' (`dtw_align_pair()`) and replaces template frame `j` by the mean of all
+#' (pairwise DTW) and replaces template frame `j` by the mean of all
 #' recording frames matched to it, until the relative change of the template
 #' (Frobenius norm) is below `tol` or after `max_iter` iterations.
 #'
@@ -129,13 +83,14 @@ dtw_pair_reference <- function(x, template, window) {
 #' @param target_length Length `L` of the warped recordings; default
 #'   `round(mean(n_frames))`; at most 1,000,000 frames (the warped array
 #'   holds `n x L x p` numbers).
-#' @param engine `"fast"` or `"reference"` pairwise DTW (see
-#'   `dtw_align_pair()`).
+#' @param engine `"fast"` (src/dtw.c) or `"reference"` (the dtw package)
+#'   pairwise DTW; both give the same paths.
 #' @param max_iter Maximum number of DBA iterations (0 = align to the linear
 #'   mean only).
 #' @param tol Convergence tolerance on the relative template change.
 #' @param max_stall Longest allowed stall, as a fraction of `L`.
-#' @param window Optional DTW window half-width (see `dtw_align_pair()`).
+#' @param window Optional DTW window half-width: a band of that many template
+#'   frames around the diagonal slanted from (1, 1) to (n, L).
 #' @param features What DTW compares. `"shape"` (default): each recording's
 #'   DoFs centred on the midpoint of its start and end postures and scaled by
 #'   their standard deviation, so that differences in posture and excursion
@@ -238,7 +193,7 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
   if (!is.null(norm)) {
     # back to data units: the normalisation is affine per recording and DoF,
     # so the mean of the normalised matched frames maps to the raw mean
-    # (denormalise_recording() for all recordings at once: element [i, l, c]
+    # (x * scale + centre for all recordings at once: element [i, l, c]
     # of the array is scaled by scale[i, c], in the array's own order)
     per_frame <- rep(seq_len(ncol(norm$scale)), each = L)
     warped <- warped * as.vector(norm$scale[kept, per_frame, drop = FALSE]) +
@@ -271,37 +226,14 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
 # posture whatever the timing, so unlike the mean over time this centre does
 # not depend on the warp. The scale has a floor of 10% of the recording's
 # largest DoF sd, so a DoF that barely moves is not blown up to noise.
-shape_normaliser <- function(x, k = 3L) {
-  n <- nrow(x)
-  k <- min(k, n)
-  centre <- (colMeans(x[seq_len(k), , drop = FALSE]) +
-               colMeans(x[(n - k + 1L):n, , drop = FALSE])) / 2
-  sdev <- if (n > 1L) sqrt(colSums((x - rep(colMeans(x), each = n))^2) / (n - 1L)) else rep(0, ncol(x))
-  floor <- 0.1 * max(sdev)
-  if (!is.finite(floor) || floor <= 0) floor <- 1
-  list(centre = centre, scale = pmax(sdev, floor))
-}
-
 # The shape features of every recording in one compiled call
-# (src/dba-prep.c, the same arithmetic as shape_normaliser() and
-# normalise_recording(), which stay as the reference): `features` (named like
+# (src/dba-prep.c; shape_normaliser() and normalise_recording() in
+# tests/testthat/helper-align-reference.R are the R reference): `features` (named like
 # `recs`), and `centre` and `scale` (recordings x DoFs).
 shape_features <- function(recs, k = 3L) {
   out <- .Call(hm_shape_features, unname(recs), as.integer(k))
   names(out$features) <- names(recs)
   out
-}
-
-# (rep() rather than sweep(): called once per recording, sweep's checks cost
-# more than the arithmetic)
-normalise_recording <- function(x, nm) {
-  n <- nrow(x)
-  (x - rep(nm$centre, each = n)) / rep(nm$scale, each = n)
-}
-
-denormalise_recording <- function(x, nm) {
-  n <- nrow(x)
-  x * rep(nm$scale, each = n) + rep(nm$centre, each = n)
 }
 
 new_grasp_alignment <- function(...) {
@@ -510,24 +442,16 @@ pin_warp_ends <- function(warps, n) {
 }
 
 # Longest run of template frames held on one original frame, per recording
-# (compiled, src/dba-prep.c; stall_lengths_r() is the reference).
+# (compiled, src/dba-prep.c; stall_lengths_r() in the tests' helper-align-reference.R
+# is the reference).
 stall_lengths <- function(warps) {
   .Call(hm_stall_lengths, warps)
 }
 
-stall_lengths_r <- function(warps) {
-  L <- ncol(warps)
-  if (L < 2L) return(rep(1L, nrow(warps)))
-  same <- warps[, -1L, drop = FALSE] == warps[, -L, drop = FALSE]
-  apply(same, 1L, function(s) {
-    r <- rle(s)
-    if (any(r$values)) max(r$lengths[r$values]) + 1L else 1L
-  })
-}
-
 # The mean of the recordings linearly resampled to L frames. Compiled
 # (src/dba-prep.c) with the warping functions from linear_warp_function(),
-# one per distinct length; mean_linear_template_r() is the reference.
+# one per distinct length; mean_linear_template_r() (tests' helper-align-reference.R)
+# is the reference.
 mean_linear_template <- function(recs, L) {
   n <- vapply(recs, nrow, integer(1))
   lengths <- sort(unique(n))
@@ -535,12 +459,6 @@ mean_linear_template <- function(recs, L) {
   acc <- .Call(hm_linear_mean, unname(recs), warps, match(n, lengths))
   cn <- colnames(recs[[1]])
   if (!is.null(cn)) dimnames(acc) <- list(NULL, cn) # as the R version's sum keeps them
-  acc / length(recs)
-}
-
-mean_linear_template_r <- function(recs, L) {
-  acc <- matrix(0, L, ncol(recs[[1]]))
-  for (x in recs) acc <- acc + warp_linear(x, L)
   acc / length(recs)
 }
 
@@ -586,12 +504,6 @@ apply_warp <- function(x, warp) {
   out <- x[i0, , drop = FALSE] * (1 - f) + x[i0 + 1, , drop = FALSE] * f
   rownames(out) <- NULL
   out
-}
-
-# Resample recording x to L frames, equally spaced in original time.
-warp_linear <- function(x, L) {
-  if (!is.matrix(x)) x <- as.matrix(x)
-  apply_warp(x, linear_warp_function(nrow(x), L))
 }
 
 #' @export

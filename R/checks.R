@@ -163,10 +163,12 @@ check_renamed_args <- function(given, fun_name, call = rlang::caller_env()) {
 }
 
 # Arguments renamed before the first release (see ?handmotion-renamed), by
-# what they count: one bullet per old name the caller used.
+# what they count or to the word every other verb uses: one bullet per old
+# name the caller used.
 renamed_arguments <- c(
   k = paste("{.arg k} was renamed by what it counts: {.arg mixture_components} (fit_grasp_model(),",
-            "fit_grasp_models()), {.arg ncomp} (last-frame PCs) or {.arg neighbours} (fit_handover()).")
+            "fit_grasp_models()), {.arg ncomp} (last-frame PCs) or {.arg neighbours} (fit_handover())."),
+  newdata = "{.arg newdata} is {.arg new_data}, as in every {.fn predict} method and {.fn autoplot} of a model."
 )
 
 renamed_argument_hints <- function(nms) {

@@ -4,8 +4,8 @@
 # recordings are from every model) and a pairwise residual. A row minimum
 # (G1) cannot depend on the model effect, which is constant along the row,
 # nor a column minimum (G2) on the type effect, so the split says which part
-# of the table sets each count. The report and the maintainer's diagnoses in
-# data-raw/ use this one decomposition.
+# of the table sets each count. The thesis report (reproduce_thesis(), its
+# Table 5.3 section) uses this decomposition; no other verb does.
 
 #' Split a Table 5.3 distance table into model, type and pairwise effects
 #'

@@ -6,7 +6,9 @@
 # weight curves jump and two FPCs cannot follow them. The thesis' repair
 # flipped each frame's PC to agree with the previous frame; it smooths the
 # curves but the model still loses the information of the dropped PCs. This
-# file keeps that experiment reproducible so a vignette can show why it fails.
+# file keeps that experiment reproducible for the thesis report
+# (reproduce_thesis(), its Figure 5.3 section), which shows why it fails; no
+# other verb uses it.
 
 #' Fit the frame-PCA alternative model (abandoned in the thesis)
 #'

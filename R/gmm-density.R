@@ -1,5 +1,7 @@
-# The density, log-likelihood and draws of a fitted mixture (the models'
-# generation samples from it; classification and plots evaluate it).
+# The density of a fitted mixture (the model plots evaluate it). The
+# log-likelihood and draws are in the tests' helper-gmm-density.R: the fits
+# compute their log-likelihood inside the EM and generation draws through
+# its own kernel.
 
 # Log-density of each row of X under N(mu, S). A singular S (a fallback on
 # collinear or identical points, or a point mass) is handled as the density on
@@ -54,75 +56,25 @@ gmm_points <- function(fit, X, call) {
   X
 }
 
-#' Density and log-likelihood of a Gaussian mixture
+#' Density of a Gaussian mixture
 #'
-#' `gmm_density()` evaluates the mixture density at each row of `X`;
-#' `gmm_loglik()` sums the log-densities (computed on the log scale, so it
-#' stays finite where the density underflows). A component with a singular
+#' `gmm_density()` evaluates the mixture density at each row of `X`
+#' (computed on the log scale). A component with a singular
 #' covariance (a fallback fitted to collinear or identical points) has its
 #' density taken on its support, and zero off it.
 #'
 #' @param fit A `gmm_fit()` object.
 #' @param X An `m x d` matrix of points (a vector of length `d` is one point;
 #'   for `d = 1` a vector is a set of points).
-#' @return `gmm_density()`: a numeric vector of length `m`; `gmm_loglik()`:
-#'   a number.
+#' @return A numeric vector of length `m`.
 #' @noRd
 #' @examples
 #' X <- rbind(matrix(rnorm(100), 50), matrix(rnorm(100, mean = 4), 50))
 #' fit <- gmm_fit(X)
 #' gmm_density(fit, rbind(c(0, 0), c(4, 4), c(2, 2)))
-#' gmm_loglik(fit, X)
 gmm_density <- function(fit, X) {
   call <- rlang::caller_env()
   check_gmm_fit(fit, call)
   X <- gmm_points(fit, X, call)
   exp(gmm_log_density(fit$weights, fit$means, fit$covs, X))
 }
-
-#' @noRd
-gmm_loglik <- function(fit, X) {
-  call <- rlang::caller_env()
-  check_gmm_fit(fit, call)
-  X <- gmm_points(fit, X, call)
-  gmm_loglik_params(fit$weights, fit$means, fit$covs, X)
-}
-
-#' Draw from a Gaussian mixture
-#'
-#' Picks a component for each draw with the mixture weights, then draws from
-#' that component's Gaussian (through a symmetric square root of its
-#' covariance, so singular fallback covariances and point masses work too).
-#' Uses the random number generator: set a seed first for reproducible draws.
-#'
-#' @param fit A `gmm_fit()` object.
-#' @param n Number of draws.
-#' @return An `n x d` matrix.
-#' @noRd
-#' @examples
-#' X <- rbind(matrix(rnorm(100), 50), matrix(rnorm(100, mean = 4), 50))
-#' fit <- gmm_fit(X)
-#' set.seed(1)
-#' gmm_sample(fit, 5)
-gmm_sample <- function(fit, n) {
-  call <- rlang::caller_env()
-  check_gmm_fit(fit, call)
-  if (!is.numeric(n) || length(n) != 1L || is.na(n) || n < 0 || n != round(n)) {
-    hm_abort("{.arg n} must be a non-negative whole number, not {.val {n}}.", "bad_input",
-             argument = "n", call = call)
-  }
-  k <- length(fit$weights)
-  d <- ncol(fit$means)
-  comp <- if (k == 1L) rep(1L, n) else sample.int(k, n, replace = TRUE, prob = fit$weights)
-  Z <- matrix(stats::rnorm(n * d), n, d)
-  out <- matrix(0, n, d, dimnames = list(NULL, colnames(fit$means)))
-  for (j in seq_len(k)) {
-    rows <- which(comp == j)
-    if (length(rows) == 0L) next
-    e <- eigen(as.matrix(fit$covs[, , j]), symmetric = TRUE)
-    root <- e$vectors %*% (sqrt(pmax(e$values, 0)) * t(e$vectors))
-    out[rows, ] <- Z[rows, , drop = FALSE] %*% root + rep(fit$means[j, ], each = length(rows))
-  }
-  out
-}
-

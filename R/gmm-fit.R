@@ -88,13 +88,13 @@ gmm_det_floor <- 1e-8
 #'   `means` (`k x d`), `covs` (`d x d x k`), `loglik` (of `X` under the fit),
 #'   `iterations`, `converged`, `fallback`, `reason` (`NA` unless
 #'   `fallback`), `engine`, `n` and `colnames`.
-#' @seealso `gmm_sample()`, `gmm_density()`, `gmm_loglik()`.
+#' @seealso `gmm_density()`.
 #' @noRd
 #' @examples
 #' X <- rbind(matrix(rnorm(100), 50), matrix(rnorm(100, mean = 4), 50))
 #' fit <- gmm_fit(X, k = 2)
 #' fit
-#' gmm_sample(fit, 3)
+#' gmm_density(fit, X[1:3, ])
 gmm_fit <- function(X, k = 2, engine = c("fast", "reference"), max_iter = 500, tol = NULL,
                     seed = NULL) {
   call <- rlang::caller_env()

@@ -255,25 +255,18 @@ build_meta <- function(meta, recordings, ids, call = rlang::caller_env()) {
   meta[c(core, setdiff(names(meta), core))]
 }
 
-#' Access the recordings and metadata of a grasps set
+#' Access the recordings of a grasps set
 #'
 #' @param x A [grasps()] object.
-#' @return `recordings()` gives the list of frames x DoF matrices, named by
-#'   recording id; `grasp_meta()` the metadata data frame.
+#' @return The list of frames x DoF matrices, named by recording id (the
+#'   metadata are `x$meta`).
 #' @noRd
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:2, objects = 1, trials = 1)
 #' dim(recordings(g)[[1]])
-#' grasp_meta(g)
 recordings <- function(x) {
   check_grasps(x)
   x$recordings
-}
-
-#' @noRd
-grasp_meta <- function(x) {
-  check_grasps(x)
-  x$meta
 }
 
 # A grasps set where a verb uses it: the class, then the invariants grasps()

@@ -5,10 +5,10 @@
 #' Reconstruct full hand motion from sparse markers
 #'
 #' `predict()` on a hand-over model rebuilds every joint angle from the
-#' sparse markers of `newdata`.
+#' sparse markers of `new_data`.
 #'
 #' @param object A `handover_model` from [fit_handover()].
-#' @param newdata Either a [grasps()] object (its markers are computed by
+#' @param new_data Either a [grasps()] object (its markers are computed by
 #'   forward kinematics, for evaluation against its own joint angles), or a
 #'   frames x (3 * m) matrix of recorded marker positions relative to the
 #'   root link (one recording), or a list of such matrices. Matrix columns
@@ -39,20 +39,20 @@
 #' mk[5, 1:3] <- NaN   # the index tip is occluded in frame 5
 #' rec <- predict(fit, mk)
 #' attr(rec, "handover")$markers_used[[1]][1:6]
-predict.handover_model <- function(object, newdata, ...) {
+predict.handover_model <- function(object, new_data, ...) {
   call <- rlang::caller_env()
   check_dots_for(list(...), predict.handover_model, "predict.handover_model", call = call)
   check_fitted_parts(object, "object", call = call)
   model <- object
-  query <- newdata
+  query <- new_data
   cols <- marker_columns(model$markers)
   if (inherits(query, "grasps")) {
     if (!identical(query$dofs, model$dofs)) {
       first <- which(rep_len(query$dofs, length(model$dofs)) != model$dofs)[1]
-      hm_abort(c("The DoFs of {.arg newdata} differ from the model's.",
-                 x = if (length(query$dofs) != length(model$dofs)) "{.arg newdata} has {length(query$dofs)} DoFs, the model {length(model$dofs)}."
+      hm_abort(c("The DoFs of {.arg new_data} differ from the model's.",
+                 x = if (length(query$dofs) != length(model$dofs)) "{.arg new_data} has {length(query$dofs)} DoFs, the model {length(model$dofs)}."
                      else "DoF {first} is {.val {query$dofs[first]}}, the model's {.val {model$dofs[first]}}."),
-               "bad_input", argument = "newdata", call = call)
+               "bad_input", argument = "new_data", call = call)
     }
     mk <- do.call(markers_from_angles, c(list(query, skeleton = model$skeleton, markers = model$markers),
                                          model$fk_args))
@@ -60,8 +60,8 @@ predict.handover_model <- function(object, newdata, ...) {
   } else {
     if (is.matrix(query) || is.data.frame(query)) query <- list(query)
     if (!is.list(query) || length(query) == 0L) {
-      hm_abort("{.arg newdata} must be a grasps object, a marker matrix or a list of marker matrices, not {.obj_type_friendly {query}}.",
-               "bad_input", argument = "newdata", call = call)
+      hm_abort("{.arg new_data} must be a grasps object, a marker matrix or a list of marker matrices, not {.obj_type_friendly {query}}.",
+               "bad_input", argument = "new_data", call = call)
     }
     mk <- lapply(seq_along(query), function(i) as_query_markers(query[[i]], cols, i, call))
     meta <- data.frame(id = if (!is.null(names(query)) && all(nzchar(names(query))))
@@ -86,32 +86,32 @@ predict.handover_model <- function(object, newdata, ...) {
 as_query_markers <- function(m, cols, i, call) {
   if (is.data.frame(m)) m <- as.matrix(m)
   if (!is.matrix(m) || !is.numeric(m)) {
-    hm_abort("{.arg newdata[[{i}]]} must be a numeric frames x (3 * markers) matrix, not {.obj_type_friendly {m}}.",
-             "bad_markers", argument = "newdata", recording = i, call = call)
+    hm_abort("{.arg new_data[[{i}]]} must be a numeric frames x (3 * markers) matrix, not {.obj_type_friendly {m}}.",
+             "bad_markers", argument = "new_data", recording = i, call = call)
   }
   if (!is.null(colnames(m))) {
     miss <- setdiff(cols, colnames(m))
     if (length(miss)) {
-      hm_abort(c("{.arg newdata[[{i}]]} lacks marker column{?s} {.val {miss}}.",
+      hm_abort(c("{.arg new_data[[{i}]]} lacks marker column{?s} {.val {miss}}.",
                  i = "The model was fitted on markers {.val {sub('\\\\.x$', '', cols[c(TRUE, FALSE, FALSE)])}}."),
-               "bad_markers", argument = "newdata", recording = i, column = miss, call = call)
+               "bad_markers", argument = "new_data", recording = i, column = miss, call = call)
     }
     m <- m[, cols, drop = FALSE]
   } else {
     # unnamed columns cannot be checked: in another order than the model's
     # they would give a plausible but wrong hand
-    hm_abort(c("{.arg newdata[[{i}]]} has unnamed columns; name them {.val {utils::head(cols, 3)}}, ... (x, y, z per marker).",
+    hm_abort(c("{.arg new_data[[{i}]]} has unnamed columns; name them {.val {utils::head(cols, 3)}}, ... (x, y, z per marker).",
                i = "{.fn markers_from_angles} returns named marker columns."),
-             "bad_markers", argument = "newdata", recording = i, call = call)
+             "bad_markers", argument = "new_data", recording = i, call = call)
   }
   if (nrow(m) == 0L) {
-    hm_abort("{.arg newdata[[{i}]]} has no frames.", "bad_markers", argument = "newdata", recording = i, call = call)
+    hm_abort("{.arg new_data[[{i}]]} has no frames.", "bad_markers", argument = "new_data", recording = i, call = call)
   }
   inf <- which(is.infinite(m), arr.ind = TRUE)
   if (nrow(inf)) {
-    hm_abort(c("{.arg newdata[[{i}]]} has {nrow(inf)} infinite marker coordinate{?s}.",
+    hm_abort(c("{.arg new_data[[{i}]]} has {nrow(inf)} infinite marker coordinate{?s}.",
                x = "First in column {.val {colnames(m)[inf[1, 2]]}}, frame {inf[1, 1]}."),
-             "bad_markers", argument = "newdata", recording = i, column = colnames(m)[inf[1, 2]],
+             "bad_markers", argument = "new_data", recording = i, column = colnames(m)[inf[1, 2]],
              line = inf[1, 1], call = call)
   }
   storage.mode(m) <- "double"
@@ -130,13 +130,13 @@ reconstruct_one <- function(model, m, id, call) {
     bad <- which(used == 0L)
     hm_abort(c("In recording {.val {id}}, {length(bad)} frame{?s} ha{?s/ve} no visible marker: {.val {utils::head(bad, 10)}}{if (length(bad) > 10) ', ...' else ''}.",
                i = "Hand-over needs at least one of the markers {.val {model$markers}} in every frame; trim or fill those frames."),
-             "occluded", recording = id, argument = "newdata", call = call)
+             "occluded", recording = id, argument = "new_data", call = call)
   }
   q <- model$ncomp
   if (model$method == "direct") {
     if (any(used < nm)) {
       hm_abort("The no-PCA baseline cannot handle occluded markers (recording {.val {id}}).",
-               "occluded", recording = id, argument = "newdata", call = call)
+               "occluded", recording = id, argument = "new_data", call = call)
     }
     dr <- model$direct
     ang <- sweep(sweep(m, 2, dr$mu_x) %*% dr$beta, 2, dr$mu_y, "+")

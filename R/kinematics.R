@@ -438,29 +438,6 @@ skeleton_rest_frames <- function(skeleton) {
   out
 }
 
-# Batch rotations as n x 9 matrices (column-major 3 x 3 in each row).
-rot_batch <- function(axis, a) {
-  c <- cos(a)
-  s <- sin(a)
-  o <- rep(0, length(a))
-  l <- rep(1, length(a))
-  switch(axis,
-         x = cbind(l, o, o, o, c, s, o, -s, c, deparse.level = 0),
-         y = cbind(c, o, -s, o, l, o, s, o, c, deparse.level = 0),
-         z = cbind(c, s, o, -s, c, o, o, o, l, deparse.level = 0))
-}
-
-bmul <- function(A, B) {
-  C <- matrix(0, nrow(A), 9)
-  for (j in 0:2) {
-    b1 <- B[, 1 + 3 * j]
-    b2 <- B[, 2 + 3 * j]
-    b3 <- B[, 3 + 3 * j]
-    for (i in 1:3) C[, i + 3 * j] <- A[, i] * b1 + A[, i + 3] * b2 + A[, i + 6] * b3
-  }
-  C
-}
-
 # Applied angles in radians, one column per used mapping row.
 fk_angles <- function(plan, rec, factor) {
   used <- plan$used

@@ -12,12 +12,6 @@ feix_levels <- function() handmotion::feix_taxonomy$name
 # Are these the levels of a Feix-labelled set?
 is_feix_levels <- function(levels) identical(as.character(levels), feix_levels())
 
-# Does a set (or a factor of labels) carry Feix types?
-has_feix_labels <- function(x) {
-  lab <- if (inherits(x, "grasps")) x$meta$grasp else x
-  is.factor(lab) && is_feix_levels(levels(lab))
-}
-
 # Feix ids of labels (NA where a label is not a Feix type, e.g. user labels).
 feix_ids <- function(labels) match(as.character(labels), feix_levels())
 

@@ -130,17 +130,6 @@ project_pose <- function(pose, view, call = rlang::caller_env()) {
   pose
 }
 
-pose_bones <- function(p) {
-  key <- paste(p$id, p$frame, p$joint, sep = "\r")
-  pk <- match(paste(p$id, p$frame, p$parent, sep = "\r"), key)
-  b <- p[!is.na(pk), , drop = FALSE]
-  pk <- pk[!is.na(pk)]
-  b$sxend <- p$sx[pk]
-  b$syend <- p$sy[pk]
-  b$depth <- (b$depth + p$depth[pk]) / 2
-  b[order(b$depth), , drop = FALSE]
-}
-
 # Panel labels: the grasp type names a recording better than its id; the id
 # is added only where one type has several recordings.
 pose_panels <- function(p) {

@@ -10,7 +10,7 @@
 #'   of each FPC's scores times that FPC (dashed), one panel per DoF.
 #' * `type = "projection"` (Figure 5.5): one recording warped to the model's
 #'   time (grey) and its projection on the FPCs (red), one panel per DoF. The
-#'   recording is one of the model's training recordings, or from `newdata`.
+#'   recording is one of the model's training recordings, or from `new_data`.
 #' * `type = "mixture"` (Figure 5.6): density contours of each DoF's Gaussian
 #'   mixture over its two FPC scores (levels relative to each DoF's peak
 #'   density), with the training scores as points.
@@ -30,8 +30,8 @@
 #'   `"alignment"` or `"dependence"`.
 #' @param dof DoFs to show (names or indices); all by default.
 #' @param recording For `"projection"`: which recording (index or id) of the
-#'   training data, or of `newdata` when given.
-#' @param newdata Optional [grasps()] object holding the recording to project.
+#'   training data, or of `new_data` when given.
+#' @param new_data Optional [grasps()] object holding the recording to project.
 #' @param max_recordings Draw at most this many training curves.
 #' @param ... Unused.
 #' @return A ggplot object.
@@ -47,13 +47,14 @@
 #' ggplot2::autoplot(mc, type = "dependence")
 autoplot.grasp_model <- function(object, type = c("fpca", "projection", "mixture", "warps", "alignment",
                                                   "dependence"),
-                                 dof = NULL, recording = 1, newdata = NULL, max_recordings = 100, ...) {
+                                 dof = NULL, recording = 1, new_data = NULL, max_recordings = 100, ...) {
+  check_renamed_args(...names(), "autoplot.grasp_model", call = rlang::current_env())
   type <- check_choice(type, arg = "type", call = rlang::current_env())
   check_grasp_model(object, "object", "be drawn", call = rlang::current_env())
   dofs <- plot_model_dofs(object, dof)
   switch(type,
     fpca = plot_model_fpca(object, dofs, max_recordings),
-    projection = plot_model_projection(object, dofs, recording, newdata),
+    projection = plot_model_projection(object, dofs, recording, new_data),
     mixture = plot_model_mixture(object, dofs),
     warps = plot_model_warps(object, max_recordings),
     alignment = {
@@ -97,7 +98,7 @@ plot_model_dofs <- function(object, dof) {
 plot_model_needs_data <- function(object, what) {
   if (is.null(object$alignment)) {
     hm_abort(c("This plot needs the model's {what}, but the model was fitted with {.code keep_data = FALSE}.",
-               i = "Refit with {.code keep_data = TRUE}, or give {.arg newdata}."),
+               i = "Refit with {.code keep_data = TRUE}, or give {.arg new_data}."),
              "bad_input", argument = "object")
   }
 }
@@ -155,8 +156,8 @@ plot_model_fpca <- function(object, dofs, max_recordings) {
     ggplot2::theme_minimal() + ggplot2::theme(legend.position = "bottom")
 }
 
-plot_model_projection <- function(object, dofs, recording, newdata) {
-  if (is.null(newdata)) {
+plot_model_projection <- function(object, dofs, recording, new_data) {
+  if (is.null(new_data)) {
     plot_model_needs_data(object, "training recordings")
     ids <- object$ids
     i <- if (is.character(recording)) match(recording, ids) else recording
@@ -168,8 +169,8 @@ plot_model_projection <- function(object, dofs, recording, newdata) {
     S <- matrix(model_scores(object)[i, , ], length(object$dofs))
     id <- ids[i]
   } else {
-    check_grasps(newdata, arg = "newdata")
-    pr <- project(object, newdata[recording])
+    check_grasps(new_data, arg = "new_data")
+    pr <- project(object, new_data[recording])
     warped <- pr$warped[[1]]
     S <- matrix(pr$scores[1, , ], length(object$dofs))
     id <- pr$ids[1]

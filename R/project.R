@@ -94,7 +94,7 @@ project.default <- function(object, new_data, ...) {
            "bad_input", argument = "object", call = rlang::caller_env())
 }
 
-# Every fitted model of a set projects `newdata`: each model is validated
+# Every fitted model of a set projects `new_data`: each model is validated
 # and projects the recordings straight from their list (R/project.R's
 # kernel reads them in place). `keep` reduces each projection as it is made
 # (the FPCA classifier keeps only the distances: all scores of every model
@@ -104,7 +104,7 @@ project.default <- function(object, new_data, ...) {
 # `time_weights`, a function of the model, gives each its weights on the
 # template time (the weighted FPCA distance); NULL is eq. 4.4. One progress
 # step per model (`progress`, a progressr progressor or NULL).
-project_models <- function(models, newdata, arg, details, call, keep = identity, keep_going = FALSE,
+project_models <- function(models, new_data, arg, details, call, keep = identity, keep_going = FALSE,
                            time_weights = NULL, distance_only = FALSE, progress = NULL) {
   models <- fitted_models(models)
   if (length(models) == 0L) {
@@ -112,15 +112,15 @@ project_models <- function(models, newdata, arg, details, call, keep = identity,
   }
   # recordings projected on models fitted to trimmed motion are trimmed alike
   if (any(vapply(models, function(m) identical(m$settings$motion, "trim"), logical(1)))) {
-    newdata <- trim_motion(newdata)
+    new_data <- trim_motion(new_data)
   }
-  recs <- double_recordings(newdata)
+  recs <- double_recordings(new_data)
   # before the native kernel; an edited model is the caller's error, not a
   # type to skip with keep_going
   for (m in models) validate_projection_model(m, call)
   one <- function(m) {
-    check_projection_dofs(m, newdata, call)
-    keep(project_recordings(m, newdata, details = details, distance_only = distance_only, recs = recs,
+    check_projection_dofs(m, new_data, call)
+    keep(project_recordings(m, new_data, details = details, distance_only = distance_only, recs = recs,
                             time_weights = if (!is.null(time_weights)) time_weights(m)))
   }
   lapply(models, function(m) {

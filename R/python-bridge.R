@@ -1,6 +1,54 @@
 # The R side of the Python front end (inst/python/handmotion, through rpy2).
-# Python reaches these internals as `handmotion:::py_*`; they live here, not as
-# R code in Python strings, so that testthat runs them (test-python-bridge.R).
+# Python reaches these internals through one exported, documented entry,
+# python_bridge(), never through `:::`; they live here, not as R code in
+# Python strings, so that testthat runs them (test-python-bridge.R).
+
+#' The Python front end's entry into R
+#'
+#' The handmotion Python package (`inst/python`, through rpy2) reaches R
+#' only through the package's exports: the user verbs, called by name, and
+#' this function for the few steps of the bridge itself. Each `part` is one
+#' step: R users have no need of it.
+#'
+#' * `"call"`: `(f, args)` calls the exported function named `f` with the
+#'   list `args` and turns every condition into a value: a list with `ok`,
+#'   `value`, `warnings` (each with its `message` and `class`) and, for an
+#'   error, its `message` and `class`, for Python to raise as a classed
+#'   exception.
+#' * `"grasps_out"`: `(x)` flattens a [grasps()] set into one numeric vector
+#'   of all recordings and its metadata (faster across rpy2 than a list of
+#'   matrices); `"grasps_in"`: the inverse, rebuilt through [grasps()].
+#' * `"default_dofs"`: `(p)` the DoF names [grasps()] gives `p` unnamed
+#'   columns.
+#' * `"fitted_types"`: `(models)` the types of a model set that have a fitted
+#'   model; `"dependence_matrix"`: `(model)` the correlation a model
+#'   generates its DoFs' first FPC scores with.
+#' * `"widget_html"`: `(widget)` a [hand_3d()] widget as one self-contained
+#'   HTML page (text).
+#' * `"progress_setup"`: `(terminal)` progress bars on standard output in a
+#'   terminal, none elsewhere (called once as Python starts R).
+#'
+#' @param part Which step of the bridge (see above).
+#' @param ... The step's arguments.
+#' @return What the step returns (see above).
+#' @keywords internal
+#' @export
+#' @examples
+#' res <- python_bridge("call", "simulate_grasps",
+#'                      list(subjects = 1, grasps = 17, objects = 1, trials = 1, seed = 1))
+#' res$ok
+#' flat <- python_bridge("grasps_out", res$value)
+#' length(flat$values)
+#' python_bridge("call", "simulate_grasps", list(subjects = -1))$class
+python_bridge <- function(part = c("call", "grasps_out", "grasps_in", "default_dofs", "fitted_types",
+                                   "dependence_matrix", "widget_html", "progress_setup"), ...) {
+  part <- check_choice(part, arg = "part")
+  step <- switch(part, call = py_call, grasps_out = py_grasps_out, grasps_in = py_grasps_in,
+                 default_dofs = py_default_dofs, fitted_types = py_fitted_types,
+                 dependence_matrix = py_dependence_matrix, widget_html = py_widget_html,
+                 progress_setup = py_progress_setup)
+  step(...)
+}
 
 # Call `f` (an exported handmotion function's name, or a function) with the list
 # `args`, turning every condition into a value: an error becomes

@@ -41,7 +41,7 @@ read_bvh <- function(file) {
 
 # The parts of a BVH read back (joints, offsets, channels, motion with every
 # channel in file order, `position`: which motion columns are lengths), for
-# write_bvh() and bvh_positions().
+# write_bvh() (and the tests' bvh_positions(), helper-bvh.R).
 bvh_parts <- function(x, recording = 1L) {
   b <- attr(x, "bvh")
   cols <- unlist(Map(function(n, ch) if (length(ch)) paste0(n, ":", ch) else character(0),
@@ -158,32 +158,4 @@ parse_bvh <- function(file, call) {
   list(joints = data.frame(name = names, parent = names[parent], end_site = end_site,
                            stringsAsFactors = FALSE),
        offsets = off, channels = channels, frames = nfr, frame_time = ft, motion = motion)
-}
-
-# World positions of every BVH joint over the frames (frames x joints x 3)
-# of a read_bvh() result, for checking an export against forward_kinematics().
-bvh_positions <- function(x) {
-  bvh <- bvh_parts(x)
-  j <- bvh$joints
-  n <- bvh$frames
-  pidx <- match(j$parent, j$name)
-  M <- vector("list", nrow(j))
-  out <- array(0, c(n, nrow(j), 3), dimnames = list(NULL, j$name, c("x", "y", "z")))
-  for (i in seq_len(nrow(j))) {
-    p <- pidx[i]
-    pos <- if (is.na(p)) matrix(0, n, 3) else out[, p, ] + M[[p]] %*% kronecker(bvh$offsets[i, ], diag(3))
-    ch <- bvh$channels[[i]]
-    if (is.na(p)) {
-      tr <- match(c("Xposition", "Yposition", "Zposition"), ch)
-      if (!anyNA(tr)) pos <- pos + bvh$motion[, paste0(j$name[i], ":", ch[tr]), drop = FALSE]
-    }
-    out[, i, ] <- pos
-    R <- if (is.na(p)) rot_batch("x", rep(0, n)) else M[[p]]
-    for (a in ch[grepl("rotation$", ch)]) {
-      ax <- tolower(substr(a, 1, 1))
-      R <- bmul(R, rot_batch(ax, bvh$motion[, paste0(j$name[i], ":", a)] * pi / 180))
-    }
-    M[[i]] <- R
-  }
-  out
 }

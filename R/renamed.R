@@ -32,10 +32,12 @@
 #' | `align_recordings(recs)` | a fitted model's `alignment` ([fit_grasp_model()]), `autoplot(model, type = "alignment")` |
 #' | `overlong_rule()`, `find_overlong()` | the `overlong` argument of [fit_grasp_model()] |
 #' | `simulator_params(...)` | `simulate_grasps(params = list(...))` |
-#' | `calibration_report()`, `fit_frame_pca_model()` | internal (the calibration script and the thesis report) |
+#' | `calibration_report()` | `data-raw/calibration-report.R` in the source repository (the simulator's calibration; not installed) |
+#' | `fit_frame_pca_model()` | internal: Figure 5.3 of the thesis report, [reproduce_thesis()] |
 #' | `fit_last_frame_pca(x, k = 5)` | [fit_grasp_classifier()]`(x, method = "last_frame", ncomp = 5)` |
 #' | argument `k` of `fit_grasp_model()`, `fit_grasp_models()`, `evaluate_loso(fit_args = )` (mixture components) | `mixture_components` |
 #' | argument `k` of `fit_grasp_classifier(method = "last_frame")` (principal components) | `ncomp` |
+#' | argument `newdata` of `predict()` of a hand-over model, `autoplot()` of a grasp model | `new_data`, as in every `predict()` method |
 #' | argument `k` of `fit_handover()`, `select_markers(method = "search")`, `handover_error(by = "markers")` (neighbours) | `neighbours` |
 #' | `$k`, `$k_used` of a last-frame classifier / a hand-over model | `$ncomp`, `$ncomp_used` / `$neighbours`, `$neighbours_used` |
 #' | `fit_weighted_fpca(x, models = , time = )` | `fit_grasp_classifier(x, method = "weighted_fpca", models = , time = )` |

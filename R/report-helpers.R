@@ -65,3 +65,43 @@ report_same_scale <- function(plots) {
 report_type_variability <- function(type) {
   simulator_params()$grasp_variability[[type]]
 }
+
+# The groups of types the thesis names as hard to tell apart (Jeppsson 2017,
+# section 5.2; shared/thesis-tables/claims.md, G6), as Feix ids. A comparison
+# constant for the report (and data-raw/calibration-report.R), never an input
+# of the simulator.
+thesis_confusion_groups <- function() {
+  list(`adducted thumb, light tool, fixed hook` = c(4L, 5L, 15L),
+       `prismatic 4/3/2 finger, writing tripod` = c(6L, 7L, 8L, 20L),
+       `precision disk, precision sphere, tripod` = c(12L, 13L, 14L))
+}
+
+# Which of the groups have a cell (truth, predicted) with both in the group
+# among the `top` largest off-diagonal cells of the confusion matrix `conf`
+# (rows = truth, columns = predicted, dimnames = type names): one logical per
+# group. confusion_groups_found() counts them.
+confusion_groups_hit <- function(conf, groups = thesis_confusion_groups(), top = 10L) {
+  ids <- match(rownames(conf), feix_levels())
+  off <- which(row(conf) != col(conf), arr.ind = FALSE)
+  o <- off[order(conf[off], decreasing = TRUE)][seq_len(min(top, length(off)))]
+  o <- o[conf[o] > 0]
+  ti <- ids[row(conf)[o]]
+  pj <- ids[col(conf)[o]]
+  vapply(groups, function(g) any(ti %in% g & pj %in% g), logical(1))
+}
+
+# The thesis' own Table 5.6 as recovered (best-guess reading; unreadable
+# cells count 0), laid out as the report's confusion: rows = true
+# type, columns = model, Feix names. Measured by the same rules as ours, it
+# shows what the thesis' figures are on its own matrix: its ten largest
+# off-diagonal cells hold only the first of its three hard-to-discern groups
+# (most are types drawn to the palmar pinch model), so the confusion-group
+# figure is compared with that, not with 3.
+thesis_confusion_fpca <- function() {
+  cells <- handmotion::thesis_results$table_5_6_cells
+  lv <- feix_levels()
+  m <- matrix(0, length(lv), length(lv), dimnames = list(truth = lv, predicted = lv))
+  ok <- !is.na(cells$count)
+  m[cbind(cells$true_id[ok], cells$model_id[ok])] <- cells$count[ok]
+  m
+}

@@ -16,6 +16,13 @@
 #' proposed weighted FPCA distance and the shrinkage LDA) is also evaluated on
 #' held-out subjects ([evaluate_loso()]).
 #'
+#' Two sections are the thesis' research rather than the pipeline, and only
+#' this report computes them: Figure 5.3, the frame-wise PCA model the thesis
+#' tried and abandoned (a PCA of the posture in every frame, then an FPCA of
+#' each PC's weights, whose sign flips between frames show why it failed), and
+#' the split of Table 5.3's log distances into a model effect, a type effect
+#' and a pairwise residual (which part of the table sets each of its counts).
+#'
 #' Besides the HTML report, every table is written as a CSV file to
 #' `<output_dir>/tables/` and every figure as a PNG file to
 #' `<output_dir>/figures/`; the time of each step is shown in the report and

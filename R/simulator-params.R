@@ -183,7 +183,8 @@
 #' closer to the others' while their last frames stay as separable. The
 #' frame counts (`target_frames`) are Table 5.1's, exactly.
 #'
-#' `calibration_report()` (internal) recomputes every figure from the
+#' `calibration_report()` (in the source repository's
+#' `data-raw/calibration-report.R`, not installed) recomputes every figure from the
 #' package's outputs and lays the thesis' beside it. Over seeds 1-10 of the
 #' default data (`calibration_report(seeds = 1:10)`, measured 2026-11-25):
 #' | figure (thesis) | tolerance | seeds 1-10 | holds on every seed |

@@ -87,6 +87,17 @@ cat(sprintf("== %s (%s mode; %s; load average %s on %d cores)\n", bench_name,
             if (bench_quick) "quick" else "full", bench_build, format(load_avg()),
             parallel::detectCores()))
 
+# Attach a test helper (tests/testthat/helper-<name>.R): the R references and
+# test-only wrappers live there, not in the package, and some benchmarks time
+# them beside the compiled step. Evaluated in a child of the namespace, so
+# they reach the package's internals as in the tests.
+bench_test_helper <- function(name) {
+  env <- new.env(parent = asNamespace("handmotion"))
+  sys.source(file.path("tests", "testthat", paste0("helper-", name, ".R")), envir = env)
+  attach(env, name = paste0("handmotion:helper-", name), warn.conflicts = FALSE)
+  invisible(env)
+}
+
 # Evaluate `expr` with the R transcription of the batch EM
 # (tests/testthat/helper-gmm-reference.R, the tests' reference; not in the
 # package) in place of the compiled one, to time what compiling it bought.

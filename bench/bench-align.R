@@ -2,6 +2,7 @@
 # the reference package dtw, side by side, and DBA over grasp types.
 # Run from the repository root:  Rscript bench/bench-align.R  (BENCH_QUICK=1: seconds)
 source("bench/_common.R")
+bench_test_helper("align-reference")  # dtw_align_pair(): the pairwise DTW with its engine choice
 
 fmt <- function(sec) if (sec < 1e-3) sprintf("%.1f us", sec * 1e6) else if (sec < 1) sprintf("%.2f ms", sec * 1e3) else sprintf("%.2f s", sec)
 med <- function(expr) {
@@ -25,7 +26,7 @@ bench_record("pairwise DTW, reference / fast", t_ref / t_fast, "x")
 
 cat("== DBA on one grasp type (type 1, over-long removed) ==\n")
 g <- simulate_grasps(grasps = 1, subjects = bq(30, 6))
-m <- grasp_meta(g)
+m <- g$meta
 recs <- g$recordings[!find_overlong(m$n_frames)]
 cat(sprintf("  %d recordings x %d DoFs\n", length(recs), ncol(recs[[1]])))
 s1 <- system.time(al_fast <- align_recordings(recs))
@@ -39,7 +40,7 @@ bench_record("DBA one type, reference / fast (CPU)", cpu_of(s2) / cpu_of(s1), "x
 
 cat("== All types, default settings, fast engine, sequential ==\n")
 gall <- simulate_grasps(subjects = bq(30, 4), grasps = bq(1:33, 1:4))
-mall <- grasp_meta(gall)
+mall <- gall$meta
 types <- levels(droplevels(mall$grasp))
 rows <- vector("list", length(types))
 s_all <- system.time(for (i in seq_along(types)) {

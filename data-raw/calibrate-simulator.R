@@ -49,6 +49,7 @@
 # The thesis tables default to ../shared/thesis-tables (HANDMOTION_SHARED).
 
 pkgload::load_all(".", quiet = TRUE)
+source(file.path("data-raw", "calibration-report.R"))  # calibration_report(), calibration_measure()
 t_start <- Sys.time()
 args <- commandArgs(trailingOnly = TRUE)
 tables <- if (length(args) >= 1L) args[1] else

@@ -217,7 +217,7 @@ corpus_cases <- function(e) {
   add("empty", "read_hust: empty file", quote(read_hust(put("empty.csv", character(0)))), "empty.csv")
   add("empty", "read_graspdb14: empty file", quote(read_graspdb14(put("01_ex01-rad-002-grasp-su09.txt", character(0)))), "su09")
   add("empty", "select_markers: empty matrix", quote(select_markers(mk[0, ], 3)), c("\\bx\\b", "frame"))
-  add("empty", "predict handover: no frames", quote(predict(ho, q[0, ])), c("new_data", "frame", "newdata"))
+  add("empty", "predict handover: no frames", quote(predict(ho, q[0, ])), c("new_data", "frame"))
   add("empty", "generate: empty model set", quote(generate(ms[integer(0)], n = 1)), c("\\bx\\b", "no models", "empty"))
   add("empty", "classify: empty model set", quote(classify(ms[integer(0)], g)), c("models", "empty"))
 

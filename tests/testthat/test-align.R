@@ -321,7 +321,7 @@ test_that("failures fall back to linear warping with a recorded reason", {
   expect_warning(forced <- align_recordings(pl$recs), class = "handmotion_warning_linear_fallback")
   expect_identical(forced$method, "linear")
   expect_match(forced$fallback_reason, "forced")
-  expect_equal(unname(forced$warped[1, , ]), unname(handmotion:::warp_linear(pl$recs[[1]], forced$target_length)))
+  expect_equal(unname(forced$warped[1, , ]), unname(warp_linear(pl$recs[[1]], forced$target_length)))
   expect_equal(unname(forced$template), unname(apply(forced$warped, c(2, 3), mean)))
   expect_equal(nrow(forced$degenerate), 0)
 })
@@ -423,12 +423,12 @@ test_that("apply_warp interpolates linearly, clamps and is exact on frames", {
   expect_equal(handmotion:::apply_warp(x, c(0, 9))[, "a"], c(0, 40))
   expect_identical(colnames(handmotion:::apply_warp(x, 2)), c("a", "b"))
   expect_equal(handmotion:::apply_warp(x[1, , drop = FALSE], c(1, 1.5, 3)), x[c(1, 1, 1), ], ignore_attr = TRUE)
-  lin <- handmotion:::warp_linear(x, 7)
+  lin <- warp_linear(x, 7)
   expect_equal(lin[, "a"], c(0, 5, 10, 15, 20, 30, 40))
-  expect_equal(handmotion:::warp_linear(x, 4), x, ignore_attr = TRUE)
+  expect_equal(warp_linear(x, 4), x, ignore_attr = TRUE)
   # linear functions are reproduced exactly at any resolution
   ramp <- cbind(seq(2, 50, length.out = 37))
-  expect_equal(handmotion:::warp_linear(ramp, 11)[, 1], seq(2, 50, length.out = 11))
+  expect_equal(warp_linear(ramp, 11)[, 1], seq(2, 50, length.out = 11))
 })
 
 test_that("autoplot draws the frame-count histogram and one path per recording", {

@@ -142,7 +142,6 @@ bad_input_cases <- function() {
     list("evaluate_loso: fit_args as text", quote(evaluate_loso(g, fit_args = "ncomp")), "bad_input"),
     list("evaluate_loso: unknown subject", quote(evaluate_loso(g, subjects = "S99")), "bad_input"),
     list("evaluate_generation: zero reps", quote(evaluate_generation(ms, g, g, reps = 0)), "bad_input"),
-    list("calibration_report: one fold", quote(calibration_report(g, models = ms, folds = 1)), "bad_input"),
     list("select_markers, search: negative max_frames", quote(select_markers(g, n = 2, method = "search", max_frames = -5)), "bad_input"),
     list("select_markers, search: unknown holdout column", quote(select_markers(g, n = 2, method = "search", holdout = "colour")), "bad_input"),
     list("fit_handover: zero ridge", quote(fit_handover(g, markers = 3, ridge = 0)), "bad_input"),

@@ -160,6 +160,7 @@ test_that("jitter_scale sets the unexplained timing variation of a type", {
 })
 
 test_that("calibration_report() recomputes every target and lays the thesis beside", {
+  skip_without_calibration_report()
   g <- simulate_grasps(subjects = 3, grasps = c(9, 22), objects = 2, trials = 2, seed = 1)
   rep <- calibration_report(g)
   expect_s3_class(rep, "calibration_report")
@@ -187,6 +188,7 @@ test_that("calibration_report() recomputes every target and lays the thesis besi
 })
 
 test_that("confusion groups are found among the largest off-diagonal cells", {
+  skip_without_calibration_report()
   types <- feix_levels()
   conf <- matrix(0L, 33, 33, dimnames = list(types, types))
   diag(conf) <- 100L
@@ -202,6 +204,7 @@ test_that("confusion groups are found among the largest off-diagonal cells", {
 })
 
 test_that("the thesis' own Table 5.6 is laid out as ours and measured by the same rule", {
+  skip_without_calibration_report()
   th <- thesis_confusion_fpca()
   d <- thesis_results$table_5_6_diagonal
   # rows are true types: the diagonal and the lower-bound column totals of
@@ -221,6 +224,7 @@ test_that("the thesis' own Table 5.6 is laid out as ours and measured by the sam
 })
 
 test_that("reports over seeds give the mean, the spread and the worst seed", {
+  skip_without_calibration_report()
   mk <- function(acc, worst_pc5) {
     targets <- data.frame(target = c("a", "b"), ours = c(acc, 0.8), thesis = c(0.64, 0.8),
                           tolerance = c(0.05, 0.05), worst = c(abs(acc - 0.64), worst_pc5))
@@ -242,6 +246,7 @@ test_that("reports over seeds give the mean, the spread and the worst seed", {
 })
 
 test_that("the default data meet the per-type targets (subset of types, full design)", {
+  skip_without_calibration_report()
   # Per-type figures need only that type's recordings: simulate_grasps(grasps =)
   # is exactly that part of the default data, each model and each last-frame
   # PCA is fitted on its own type.
@@ -271,6 +276,7 @@ test_that("the stored calibration is what data-raw/simulator-calibration.csv say
 })
 
 test_that("the whole default pipeline is the thesis' twin (slow)", {
+  skip_without_calibration_report()
   skip_if_not(identical(Sys.getenv("HANDMOTION_SLOW_TESTS"), "true"),
               "set HANDMOTION_SLOW_TESTS=true to run the full calibration check")
   rep <- calibration_report(held_out = TRUE, folds = 5)
@@ -291,6 +297,7 @@ test_that("the default reaches tell the grasp early (slow)", {
 })
 
 test_that("the shipped calibration's tolerances over seeds 1-5 (slow)", {
+  skip_without_calibration_report()
   # five full pipelines (about a minute on 2 cores): every `make test` and
   # `make test-calibration`, never on CRAN. What holds on every one of seeds
   # 1-10 of the shipped parameters (measured 2026-11-25, see ?simulate_grasps):

@@ -20,14 +20,14 @@ test_that("Feix names in any spelling and Feix ids become the 33-level Feix fact
   g <- grasps(recs6(), meta = data.frame(grasp = rep(c("power sphere", "Tripod", "3"), 2)))
   expect_equal(levels(g$meta$grasp), feix_levels())
   expect_equal(as.character(g$meta$grasp[1:3]), c("Power Sphere", "Tripod", feix_levels()[3]))
-  expect_true(has_feix_labels(g))
+  expect_true(is_feix_levels(levels(g$meta$grasp)))
 })
 
 test_that("a mix of Feix names and other labels keeps them all, with a classed warning", {
   expect_warning(g <- grasps(recs6(), meta = data.frame(grasp = rep(c("Tripod", "Tripd", "mug"), 2))),
                  class = "handmotion_warning_mixed_labels")
   expect_setequal(levels(g$meta$grasp), c("mug", "Tripd", "Tripod"))
-  expect_false(has_feix_labels(g))
+  expect_false(is_feix_levels(levels(g$meta$grasp)))
 })
 
 test_that("every verb keys on the user's labels", {

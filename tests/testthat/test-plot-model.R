@@ -38,7 +38,7 @@ test_that("projection plot shows a recording and its FPC projection (Figure 5.5)
   expect_lt(max(abs(red_d1 - grey_d1)), 1)          # 2 FPCs explain the planted curves
   # a new recording through project()
   nd <- planted_grasps(n = 1, p = 3, seed = 62)
-  b2 <- ggplot2::ggplot_build(ggplot2::autoplot(m, type = "projection", newdata = nd, dof = "d2"))
+  b2 <- ggplot2::ggplot_build(ggplot2::autoplot(m, type = "projection", new_data = nd, dof = "d2"))
   expect_equal(nrow(b2$data[[1]]), 2L * L)
   expect_error(ggplot2::autoplot(m, type = "projection", recording = 99), class = "handmotion_error_bad_input")
 })

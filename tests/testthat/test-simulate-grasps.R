@@ -25,7 +25,7 @@ last_frames <- function(g) t(vapply(recordings(g), function(r) r[nrow(r), ], num
 
 test_that("the default design has the HUST shape and Table 5.1 frame counts", {
   g <- simulate_grasps()
-  m <- grasp_meta(g)
+  m <- g$meta
   expect_s3_class(g, "grasps")
   expect_equal(length(g), 8910L)
   expect_identical(g$dofs, hust_dofs$name)

@@ -35,8 +35,9 @@ and argument names (a test compares this list with R's NAMESPACE):
 
 Deliberately not mirrored: ``autoplot`` (ggplot2 graphics belong to R; every result
 is a DataFrame or numpy array to plot in Python), ``hand_3d_output`` and
-``render_hand_3d`` (Shiny bindings, R-only) and ``joint_map`` (R's mapping of DoFs to
-skeleton joints, used inside forward_kinematics()). Python-only helpers:
+``render_hand_3d`` (Shiny bindings, R-only), ``joint_map`` (R's mapping of DoFs to
+skeleton joints, used inside forward_kinematics()) and ``python_bridge`` (the R entry this
+package's bridge calls, ``?python_bridge``; it never reaches R's internals through ``:::``). Python-only helpers:
 ``joint_names`` (the joint order of ``forward_kinematics`` arrays) and ``extdata`` (the path
 of a file or folder the R package ships, R's ``system.file("extdata", ...)``, e.g. the real
 flexglove recordings for ``read_glove``).
@@ -55,6 +56,8 @@ Names R removed before its first release (``?handmotion-renamed``) are not kept 
 aliases: asking for one raises an ``AttributeError`` that names the replacement.
 """
 
+import os
+
 from .api import (calibrate, calibration_pose_angles, classify, cut_motion, evaluate_early_recognition,
                   evaluate_generation, evaluate_loso, extdata, find_motion, fit_grasp_classifier, fit_grasp_model,
                   fit_grasp_models, fit_grasp_recognizer, fit_handover, forward_kinematics, generate, glove_profile,
@@ -70,7 +73,25 @@ from .handles import (GraspClassifier, GraspModel, GraspModels, GraspRecognizer,
                       RHandle, Skeleton, project)
 from .view import HandView, hand_3d
 
-__version__ = "0.1.0"
+
+def _description_version():
+    """The R package's version, read from its DESCRIPTION, the one place it is written: three
+    folders up in the source tree (inst/python/handmotion), two in the installed R package
+    (<library>/handmotion/python/handmotion). None when neither is there."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    for up in (("..", "..", ".."), ("..", "..")):
+        desc = os.path.join(here, *up, "DESCRIPTION")
+        if os.path.isfile(desc):
+            with open(desc, encoding="utf-8") as f:
+                fields = dict(line.split(":", 1) for line in f if ":" in line and not line[0].isspace())
+            if fields.get("Package", "").strip() == "handmotion" and "Version" in fields:
+                return fields["Version"].strip()
+    return None
+
+
+_VERSION = _description_version()
+if _VERSION is not None:
+    __version__ = _VERSION
 
 # R's grasps() constructor is the Grasps class
 grasps = Grasps
@@ -91,6 +112,11 @@ _RENAMED = {
 
 
 def __getattr__(name):
+    if name == "__version__":
+        # no DESCRIPTION beside this folder: the version of the R package R loads
+        from ._bridge import r
+
+        return str(r().r('as.character(utils::packageVersion("handmotion"))')[0])
     if name in _RENAMED:
         raise AttributeError(f"handmotion.{name}() was removed (as in R, see ?handmotion-renamed); "
                              f"use {_RENAMED[name]}")

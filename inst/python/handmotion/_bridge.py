@@ -2,9 +2,11 @@
 
 R is started lazily on first use and the handmotion R package is loaded. The R
 side of the bridge lives in the R package itself (``R/python-bridge.R``, tested
-by testthat): ``handmotion:::py_call()`` turns every R condition into a value (so
-the Python side can raise a classed exception), ``py_grasps_out()`` and
-``py_grasps_in()`` flatten the ``grasps`` class into one numeric vector for all
+by testthat) and is reached only through its exports, never ``:::``: the user
+verbs by name, and the one documented entry ``handmotion::python_bridge(part, ...)``
+for the bridge's own steps (``?python_bridge``): ``"call"`` turns every R condition
+into a value (so the Python side can raise a classed exception), ``"grasps_out"``
+and ``"grasps_in"`` flatten the ``grasps`` class into one numeric vector for all
 recordings (which crosses the bridge far faster than a list of matrices).
 
 This module imports no other module of the package but :mod:`.errors`: objects
@@ -40,7 +42,7 @@ def r():
         ro.r("suppressPackageStartupMessages(library(handmotion))")
         # one progress bar redrawn in place in a terminal, none in a log or a
         # notebook (R/python-bridge.R, py_progress_setup())
-        ro.r("handmotion:::py_progress_setup")(ro.BoolVector([_terminal()]))
+        ro.r("handmotion::python_bridge")("progress_setup", ro.BoolVector([_terminal()]))
         _state["ro"] = ro
     return _state["ro"]
 
@@ -53,12 +55,12 @@ def _terminal():
         return False
 
 
-def internal(name):
-    """The handmotion R package's internal function ``name`` (one of R/python-bridge.R's ``py_*``)."""
-    key = "internal:" + name
-    if key not in _state:
-        _state[key] = r().r(f"handmotion:::{name}")
-    return _state[key]
+def bridge(part):
+    """A callable for one step ``part`` of the R side of the bridge: ``handmotion::python_bridge(part, ...)``."""
+    if "bridge" not in _state:
+        _state["bridge"] = r().r("handmotion::python_bridge")
+    entry = _state["bridge"]
+    return lambda *args, **kwargs: entry(part, *args, **kwargs)
 
 
 # ---------------------------------------------------------------- conversion
@@ -218,7 +220,7 @@ def call(fname, *args, **kwargs):
     rargs = [py_to_r(a) for a in args]
     rkw = {k: py_to_r(v) for k, v in kwargs.items()}
     arglist = ro.r["list"](*rargs, **rkw)
-    res = internal("py_call")(fname, arglist)
+    res = bridge("call")(fname, arglist)
     for w in res.rx2("warnings"):
         warnings.warn(from_r_warning(str(w.rx2("message")[0]), list(w.rx2("class"))), stacklevel=3)
     if not bool(res.rx2("ok")[0]):

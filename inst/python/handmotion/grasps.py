@@ -3,7 +3,7 @@
 import numpy as np
 import pandas as pd
 
-from ._bridge import call, df_to_py, df_to_r, internal, r, r_array, register_r_class
+from ._bridge import bridge, call, df_to_py, df_to_r, r, r_array, register_r_class
 from .errors import BadInputError
 
 CORE_META = ["id", "grasp", "subject", "object", "trial", "n_frames", "source"]
@@ -231,7 +231,7 @@ class Grasps:
         sw = getattr(self, "switch", None)
         if sw is not None and any(v is not None for v in sw):
             extra["switch"] = [None if v is None else np.asarray(v, dtype=np.int64) for v in sw]
-        res = call(internal("py_grasps_in"), values=values,
+        res = call("python_bridge", "grasps_in", values=values,
                    n_frames=np.asarray(self.meta["n_frames"], dtype=np.int64),
                    meta=df_to_r(meta), dofs=list(self.dofs), rate=self.rate, unit=self.unit, **extra)
         return res
@@ -239,7 +239,7 @@ class Grasps:
     @classmethod
     def from_r(cls, robj):
         """Convert an R ``grasps`` object."""
-        flat = internal("py_grasps_out")(robj)
+        flat = bridge("grasps_out")(robj)
         values = r_array(flat.rx2("values"), dtype=float)
         nf = r_array(flat.rx2("n_frames"), dtype=int)
         dofs = [str(d) for d in flat.rx2("dofs")]
@@ -264,7 +264,7 @@ class Grasps:
 def _default_dofs(p):
     """The DoF names R's grasps() gives p unnamed columns (the 16 HUST DoFs, else dof1..dofp),
     asked from R so the list is written down once."""
-    return [str(d) for d in internal("py_default_dofs")(int(p))]
+    return [str(d) for d in bridge("default_dofs")(int(p))]
 
 
 def as_grasps(x, arg="x"):

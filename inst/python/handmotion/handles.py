@@ -2,7 +2,7 @@
 
 import numpy as np
 
-from ._bridge import call, internal, r, r_to_py
+from ._bridge import bridge, call, r, r_to_py
 from .errors import BadInputError
 from .grasps import as_grasps as _as_grasps
 
@@ -71,7 +71,7 @@ class GraspModels(Classifier):
     def grasp_types(self):
         """Names of the grasp types that have a fitted model (a type whose fit failed stays
         in the set, see :meth:`failed`, but has no model)."""
-        return [str(n) for n in internal("py_fitted_types")(self.robj)]
+        return [str(n) for n in bridge("fitted_types")(self.robj)]
 
     def failed(self):
         """The grasp types whose fit failed, with the reason, as a dict {type: message}."""
@@ -87,7 +87,7 @@ class GraspModels(Classifier):
         with, as a DoF x DoF DataFrame (the identity for the thesis' independent model)."""
         if str(grasp) not in self.grasp_types():
             raise BadInputError(f"no model for grasp type {grasp!r}; have {self.grasp_types()}")
-        return _labelled_matrix(internal("py_dependence_matrix")(self.robj.rx2(str(grasp))))
+        return _labelled_matrix(bridge("dependence_matrix")(self.robj.rx2(str(grasp))))
 
     def project(self, x):
         """The recordings of ``x`` projected onto each type's model: :func:`handmotion.project`."""

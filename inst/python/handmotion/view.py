@@ -3,7 +3,7 @@ as one self-contained HTML page, shown inline in Jupyter."""
 
 import html as _html
 
-from ._bridge import call, internal
+from ._bridge import bridge, call
 from .grasps import as_grasps as _as_grasps
 from .errors import BadInputError
 
@@ -54,5 +54,5 @@ def hand_3d(x, layout="side", limits=False, markers=None, speed=1, autoplay=True
         markers = [markers]
     widget = call("hand_3d", data, layout=layout, limits=limits, markers=list(markers) if markers else None,
                   speed=speed, autoplay=autoplay, loop=loop, width=width, height=height, **kwargs)
-    page = str(internal("py_widget_html")(widget)[0])
+    page = str(bridge("widget_html")(widget)[0])
     return HandView(page, height=height if isinstance(height, (int, float)) else 460)

@@ -23,7 +23,10 @@ def test_no_bar_when_output_is_captured(hm, small, ro, capsys, caplog):
 
 
 def test_terminal_bar_is_one_line_redrawn_in_place(hm, small, ro, capsys, caplog):
-    setup = ro.r("handmotion:::py_progress_setup")
+    bridge = ro.r("handmotion::python_bridge")
+
+    def setup(terminal):
+        return bridge("progress_setup", terminal)
     old = ro.r("options(progressr.enable = NULL, progressr.handlers = NULL)")
     try:
         setup(ro.BoolVector([True]))        # as R starts when stdout is a terminal

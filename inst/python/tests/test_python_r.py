@@ -88,6 +88,25 @@ def test_no_r_code_in_python_strings():
             assert not re.search(r"function\s*\(", text), f
 
 
+def test_version_is_the_r_packages(hm, ro):
+    # written once, in DESCRIPTION: Python reads it, pyproject.toml asks Python
+    assert hm.__version__ == str(ro.r('as.character(utils::packageVersion("handmotion"))')[0])
+    toml = open(os.path.join(os.path.dirname(PKG), "pyproject.toml"), encoding="utf-8").read()
+    assert not re.search(r'^version\s*=\s*"', toml, flags=re.M)
+    assert "handmotion.__version__" in toml
+    assert not re.search(r"__version__\s*=\s*[\"']", open(os.path.join(PKG, "__init__.py"), encoding="utf-8").read())
+
+
+def test_no_r_internals_reached():
+    # R's internals are reached through the documented python_bridge() export only
+    tests = os.path.dirname(os.path.abspath(__file__))
+    for folder in (PKG, tests):
+        for f in os.listdir(folder):
+            if f.endswith(".py"):
+                text = open(os.path.join(folder, f), encoding="utf-8").read()
+                assert "handmotion" + ":::" not in text, f
+
+
 def test_project_mirrors_r(hm, small):
     # project() gives the thesis' residual distance (eq. 4.4): a set ranked by it
     m = hm.fit_grasp_models(small, seed=1, distance="residual")
