@@ -39,11 +39,12 @@ motion_sustain <- 3L         # a departure counts once it lasts 3 frames (spikes
 # resampled from its time stamps (read_glove(time =)), its recorded rate over
 # the grid's rate (recorded frames per grid frame; NA: as recorded). Linear
 # interpolation averages neighbouring samples, which shrinks the second
-# differences (by a third at equal rates), so on the grid the noise looked
-# smaller than the sensor's and onsets came early (flexglove: 3.27 frames MAE
-# on the grid against 2.90 as recorded). The noise is therefore estimated as
-# recorded: from second differences over the recorded spacing, scaled by
-# what interpolation does to them (resampled_mad()). The quantisation
+# differences (by 40% at equal rates) more than the noise of a frame (by
+# 18%), so on the grid the noise looked smaller than a frame's and onsets
+# came early (flexglove: 3.27 frames MAE on the grid against 2.90 as
+# recorded). The noise is therefore read from second differences over the
+# recorded spacing, scaled by what interpolation does to them and to a
+# frame (resampled_mad()). The quantisation
 # floor too: see quantum_floor().
 channel_noise <- function(X, spacing = NA_real_) {
   resampled <- is.finite(spacing)
@@ -82,11 +83,16 @@ quantum_floor <- function(v, resampled) {
 
 # The MAD of lag-`lag` second differences of unit white noise sampled at one
 # frame and linearly interpolated onto a grid of `spacing` recorded frames
-# per grid frame, relative to the same without interpolation (sqrt(6) sds).
-# The grid's phase against the samples drifts (real intervals jitter: 27 to
-# 32 ms on flexglove), so the second differences are a mixture over a
-# uniform phase; the MAD of that mixture is solved for.
+# per grid frame, relative to the same without interpolation (sqrt(6) sds),
+# divided by the sd of one interpolated frame (what the departures and rates
+# are measured in: interpolation averages two samples, so a grid frame
+# carries sqrt(2/3) of a sample's noise). The grid's phase against the
+# samples drifts (real intervals jitter: 27 to 32 ms on flexglove), so the
+# second differences are a mixture over a uniform phase; the MAD of that
+# mixture is solved for. Memoised: a set has a few recorded rates.
 resampled_mad <- function(spacing, lag) {
+  key <- sprintf("%.6f/%d", spacing, lag)
+  if (!is.null(resampled_mad_memo[[key]])) return(resampled_mad_memo[[key]])
   phase <- (seq_len(64) - 0.5) / 64
   sds <- vapply(phase, function(u) {
     at <- u + c(-lag, 0, lag) * spacing
@@ -95,8 +101,10 @@ resampled_mad <- function(spacing, lag) {
     sqrt(sum(w^2))
   }, numeric(1))
   half <- stats::uniroot(function(m) mean(2 * stats::pnorm(m / sds) - 1) - 0.5, c(1e-6, 10))$root
-  half / (stats::qnorm(0.75) * sqrt(6))
+  point <- sqrt(mean((1 - phase)^2 + phase^2))
+  resampled_mad_memo[[key]] <- half / (stats::qnorm(0.75) * sqrt(6)) / point
 }
+resampled_mad_memo <- new.env(parent = emptyenv())
 
 # Per recording of a set, its `spacing` for channel_noise(): recorded frames
 # per grid frame where read_glove(time =) resampled it (`recorded_rate` in

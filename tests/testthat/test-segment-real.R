@@ -23,10 +23,11 @@ test_that("flexglove: the hand-marked onsets within 3 frames mean absolute error
 test_that("flexglove read with its time stamps (resampled to 33.3 Hz): onsets within 3 frames", {
   # the path users take: read_glove(time = "time_ms") resamples the frames
   # (27-32 ms apart) onto one grid by linear interpolation, which shrinks
-  # the second differences the noise is read from; the noise is estimated
-  # as recorded (recorded_rate), so the grid finds the same onsets. Marks
-  # moved onto the grid by their time stamps. Measured 2.99 and 2.50 frames
-  # (with the noise read on the grid as it is: 3.27 and 2.67).
+  # the second differences the noise is read from; the noise is read over
+  # the recorded spacing (recorded_rate), so the grid finds the same onsets.
+  # Marks moved onto the grid by their time stamps. Measured 2.88 and 2.68
+  # frames, ends 4.85 (with the noise read on the grid as it is: 3.27, 2.67
+  # and 4.11; as recorded 2.90, 2.25 and 4.81).
   fx <- flexglove_marked_resampled()
   expect_true(all(fx$g$meta$recorded_rate > 30 & fx$g$meta$recorded_rate < 40))
   m <- find_motion(fx$g)
