@@ -43,7 +43,7 @@ test_that("flexglove read with its time stamps (resampled to 33.3 Hz): onsets wi
   # a motion (the latter did, with a noise of 1e-14, before the quantisation
   # floor was read on the values as recorded). Spikes are not checked here:
   # interpolation spreads a spike of 2 samples over 3 or 4 grid frames,
-  # which the 3-frame sustain lets through (3 to 6 of 80 recordings led by
+  # which the 3-frame sustain lets through (2 to 6 of 80 recordings led by
   # them, where they also move some onsets by a frame; open, see issue 40)
   noisy <- flexglove_marked_resampled(seed = 7)
   m1 <- find_motion(noisy$g)
