@@ -35,15 +35,84 @@ motion_rate_share <- 0.05   # ... and 5% of its peak rate
 motion_edge_share <- 0.3    # the motion is first sure where a channel has moved 30% of its move
 motion_sustain <- 3L         # a departure counts once it lasts 3 frames (spikes last 1 or 2)
 
-# Noise sd per column of a matrix (see above).
-channel_noise <- function(X) {
+# Noise sd per column of a matrix (see above). `spacing`: for a recording
+# resampled from its time stamps (read_glove(time =)), its recorded rate over
+# the grid's rate (recorded frames per grid frame; NA: as recorded). Linear
+# interpolation averages neighbouring samples, which shrinks the second
+# differences (by 40% at equal rates) more than the noise of a frame (by
+# 18%), so on the grid the noise looked smaller than a frame's and onsets
+# came early (flexglove: 3.27 frames MAE on the grid against 2.90 as
+# recorded). The noise is therefore read from second differences over the
+# recorded spacing, scaled by what interpolation does to them and to a
+# frame (resampled_mad()). The quantisation
+# floor too: see quantum_floor().
+channel_noise <- function(X, spacing = NA_real_) {
+  resampled <- is.finite(spacing)
+  lag <- if (resampled) max(1L, as.integer(round(1 / spacing))) else 1L
+  scale <- if (resampled) resampled_mad(spacing, lag) else 1
   apply(X, 2, function(v) {
     v <- v[is.finite(v)]
-    if (length(v) < 4L) return(Inf)
-    d <- abs(diff(v))
-    step <- if (any(d > 0)) min(d[d > 0]) / 2 else 0.5
-    max(stats::mad(diff(v, differences = 2)) / sqrt(6), step)
+    if (length(v) < 2L * lag + 2L) return(Inf)
+    max(stats::mad(diff(v, lag = lag, differences = 2)) / sqrt(6) / scale, quantum_floor(v, resampled))
   })
+}
+
+# Half the smallest step between a channel's values (0.5 for a channel that
+# never changes): the noise of quantisation, the floor of the noise (it
+# binds on channels that mostly hold still, whose second differences are
+# mostly 0). On a grid resampled by linear interpolation the steps are cut
+# into fractions, and a channel that holds still differs from itself by
+# rounding dust: a channel in counts that changed by one count three times
+# had a noise of 1e-14 and "moved". There, in a channel that holds still
+# most of the time (most frames equal to both neighbours: interpolated
+# between equal samples), the values as recorded are read on those flat
+# frames and the floor is half the smallest step between them (0.5 if they
+# are all one value).
+quantum_floor <- function(v, resampled) {
+  tol <- 1e-9 * max(1, abs(v))
+  d <- abs(diff(v))
+  if (resampled) {
+    flat <- which(c(FALSE, d <= tol) & c(d <= tol, FALSE))
+    if (length(flat) > length(v) / 2) {
+      steps <- diff(sort(unique(round(v[flat] / tol) * tol)))
+      return(if (any(steps > tol)) min(steps[steps > tol]) / 2 else 0.5)
+    }
+  }
+  if (any(d > tol)) min(d[d > tol]) / 2 else 0.5
+}
+
+# The MAD of lag-`lag` second differences of unit white noise sampled at one
+# frame and linearly interpolated onto a grid of `spacing` recorded frames
+# per grid frame, relative to the same without interpolation (sqrt(6) sds),
+# divided by the sd of one interpolated frame (what the departures and rates
+# are measured in: interpolation averages two samples, so a grid frame
+# carries sqrt(2/3) of a sample's noise). The grid's phase against the
+# samples drifts (real intervals jitter: 27 to 32 ms on flexglove), so the
+# second differences are a mixture over a uniform phase; the MAD of that
+# mixture is solved for. Memoised: a set has a few recorded rates.
+resampled_mad <- function(spacing, lag) {
+  key <- sprintf("%.6f/%d", spacing, lag)
+  if (!is.null(resampled_mad_memo[[key]])) return(resampled_mad_memo[[key]])
+  phase <- (seq_len(64) - 0.5) / 64
+  sds <- vapply(phase, function(u) {
+    at <- u + c(-lag, 0, lag) * spacing
+    knots <- seq(floor(min(at)), ceiling(max(at)))
+    w <- vapply(knots, function(k) sum(c(1, -2, 1) * pmax(0, 1 - abs(at - k))), numeric(1))
+    sqrt(sum(w^2))
+  }, numeric(1))
+  half <- stats::uniroot(function(m) mean(2 * stats::pnorm(m / sds) - 1) - 0.5, c(1e-6, 10))$root
+  point <- sqrt(mean((1 - phase)^2 + phase^2))
+  resampled_mad_memo[[key]] <- half / (stats::qnorm(0.75) * sqrt(6)) / point
+}
+resampled_mad_memo <- new.env(parent = emptyenv())
+
+# Per recording of a set, its `spacing` for channel_noise(): recorded frames
+# per grid frame where read_glove(time =) resampled it (`recorded_rate` in
+# the metadata), NA where the frames are as recorded.
+recorded_spacing <- function(x) {
+  r <- x$meta$recorded_rate
+  if (is.null(r)) return(rep(NA_real_, length(x)))
+  as.numeric(r) / x$rate
 }
 
 # Running median of 3 frames per column (a recording of 3 frames or fewer as is).
@@ -68,11 +137,12 @@ channel_rate <- function(S, lag) {
 
 # Everything find_motion() and detect_onset() read from one recording:
 # smoothed channels, noise, departure from rest (noise sds), moves, rate and
-# the rate's noise sd. `noise` may be given (a fitted detector's).
-motion_signals <- function(rec, rate, noise = NULL) {
+# the rate's noise sd. `noise` may be given (a fitted detector's); `spacing`
+# as for channel_noise().
+motion_signals <- function(rec, rate, noise = NULL, spacing = NA_real_) {
   rec <- as.matrix(rec)
   S <- smooth_channels(rec)
-  if (is.null(noise)) noise <- channel_noise(rec)
+  if (is.null(noise)) noise <- channel_noise(rec, spacing)
   rest <- apply(S[seq_len(min(rest_frames(rate), nrow(S))), , drop = FALSE], 2, stats::median)
   lag <- rate_lag(rate)
   D <- sweep(sweep(S, 2, rest), 2, noise, "/")
@@ -148,11 +218,11 @@ walk_forward_end <- function(sig, use) {
 }
 
 # The motion of one recording: list(start, end, found, status, lead).
-motion_span <- function(rec, rate, min_move, min_still) {
+motion_span <- function(rec, rate, min_move, min_still, spacing = NA_real_) {
   n <- nrow(rec)
   none <- function(status) list(start = 1L, end = n, found = FALSE, status = status, lead = NA_character_)
   if (n < 2L * rest_frames(rate)) return(none("too short"))
-  sig <- motion_signals(rec, rate)
+  sig <- motion_signals(rec, rate, spacing = spacing)
   use <- moving_channels(sig$move, sig$peak_rate, min_move)
   if (!length(use)) return(none("rest only"))
   sure <- vapply(use, function(j) which(sig$held[, j] > motion_edge_share * sig$move[j])[1], integer(1))

@@ -31,6 +31,13 @@
 #' slows below those rate levels after its last frame at half its peak rate
 #' (slow creep while holding is not motion).
 #'
+#' Recordings that [read_glove()] resampled from their time stamps (metadata
+#' column `recorded_rate`) have their noise estimated as recorded: linear
+#' interpolation averages neighbouring samples and would make the noise look
+#' smaller than the sensor's, so the second differences are scaled by what
+#' interpolation does to white noise at that recorded rate, and the
+#' quantisation floor is read on the values as recorded.
+#'
 #' @param x A [grasps()] object.
 #' @param min_move How far, in noise sds, a channel must leave its rest level
 #'   to count as moving.
@@ -65,8 +72,8 @@ find_motion <- function(x, min_move = 12, min_still = 0.1) {
   check_some_recordings(x, what = "find motion in", call = call)
   min_move <- check_number(min_move, "min_move", min = 3, max = 1e6, call = call)
   min_still <- check_number(min_still, "min_still", min = 0, max = 60, call = call)
-  rows <- lapply(x$recordings, motion_span, rate = x$rate, min_move = min_move,
-                 min_still = max(1L, round(min_still * x$rate)))
+  rows <- Map(motion_span, x$recordings, recorded_spacing(x), MoreArgs = list(
+    rate = x$rate, min_move = min_move, min_still = max(1L, round(min_still * x$rate))))
   n <- x$meta$n_frames
   start <- vapply(rows, `[[`, integer(1), "start")
   end <- vapply(rows, `[[`, integer(1), "end")
@@ -108,8 +115,10 @@ cut_motion <- function(x, min_motion = 0.3, min_gap = 0.3, min_move = 12) {
   min_move <- check_number(min_move, "min_move", min = 3, max = 1e6, call = call)
   pieces <- list()
   meta_rows <- list()
+  spacing <- recorded_spacing(x)
   for (i in seq_along(x)) {
-    runs <- stream_runs(x$recordings[[i]], x$rate, min_move, round(min_gap * x$rate), round(min_motion * x$rate))
+    runs <- stream_runs(x$recordings[[i]], x$rate, min_move, round(min_gap * x$rate), round(min_motion * x$rate),
+                        spacing[i])
     for (k in seq_len(nrow(runs))) {
       id <- sprintf("%s-m%d", x$meta$id[i], k)
       pieces[[id]] <- x$recordings[[i]][runs$start[k]:runs$end[k], , drop = FALSE]
@@ -134,10 +143,10 @@ cut_motion <- function(x, min_motion = 0.3, min_gap = 0.3, min_move = 12) {
 # channels' rates (noise sds), and a motion is a run above the rate level of
 # find_motion() (6 noise sds, 5% of the activity's peak) that reaches twice
 # it, joined across gaps shorter than `min_gap` frames, at least `min_len` long.
-stream_runs <- function(rec, rate, min_move, min_gap, min_len) {
+stream_runs <- function(rec, rate, min_move, min_gap, min_len, spacing = NA_real_) {
   empty <- data.frame(start = integer(), end = integer())
   if (nrow(rec) < 2L * rest_frames(rate)) return(empty)
-  sig <- motion_signals(rec, rate)
+  sig <- motion_signals(rec, rate, spacing = spacing)
   use <- moving_channels(sig$peak_rate, sig$peak_rate, min_move)
   if (!length(use)) return(empty)
   act <- sqrt(rowMeans(sig$R[, use, drop = FALSE]^2))
@@ -214,8 +223,9 @@ still_phases <- function(x, motion) {
 # onset is walked back from there as in find_motion(). The rate is centred,
 # so the detector looks `motion_rate_s` (0.12 s) ahead.
 fit_onset_detector <- function(x, min_move = 12) {
+  spacing <- recorded_spacing(x)
   noise <- vapply(seq_along(x$dofs), function(j) {
-    stats::median(vapply(x$recordings, function(r) channel_noise(r[, j, drop = FALSE]), numeric(1)))
+    stats::median(unlist(Map(function(r, s) channel_noise(r[, j, drop = FALSE], s), x$recordings, spacing)))
   }, numeric(1))
   moving <- vapply(x$recordings, function(r) {
     sig <- motion_signals(r, x$rate, noise)

@@ -18,14 +18,11 @@
 # Needs /work/shared/data/flexglove (or $HANDMOTION_SHARED/data/flexglove); skips that part without it.
 
 source("bench/_common.R")
+# plain_onset() and noise_channels(): the tests' own, so that the bench and
+# tests/testthat/test-segment*.R plant the same channels and compare with the
+# same threshold
+source("tests/testthat/helper-motion.R")
 cat(sprintf("%s; load average %s on %d cores\n\n", bench_build, load_avg(), parallel::detectCores()))
-
-plain_onset <- function(X, share = 0.2) {
-  base <- apply(X[1:3, , drop = FALSE], 2, stats::median)
-  rng <- pmax(apply(X, 2, function(v) diff(range(v))), 1)
-  w <- which(rowSums(abs(sweep(X, 2, base)) > share * rng) > 0)[1]
-  if (is.na(w)) nrow(X) else w
-}
 timed <- function(expr) {
   t <- system.time(value <- force(expr))
   list(value = value, elapsed = t[["elapsed"]], cpu = t[["user.self"]] + t[["sys.self"]])
@@ -79,23 +76,10 @@ if (dir.exists(fg)) {
 objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)
 raw <- simulate_grasps(subjects = 1, grasps = objects[seq_len(bq(6, 2))], objects = 1, trials = bq(28, 6),
                        rate = 100, glove = "resistive", rest = 1.4, hold = 1, overlong = FALSE, seed = 3)
+# the planted channels of the tests, with four pressure pads that rise at
+# contact, 0.1 s before the motion ends, and a spike every 50 frames
 planted <- withr::with_seed(40, Map(function(r, e) {
-  n <- nrow(r)
-  spikes <- 300 + round(stats::rnorm(n))
-  hit <- sample(n, max(2L, n %/% 50))
-  spikes[hit] <- spikes[hit] + 400
-  near <- rep(200, n)
-  near[sample(n, 3)] <- 201
-  # pressure pads: zero (with noise) until contact, 0.1 s before the motion ends
-  pads <- vapply(1:4, function(p) {
-    v <- pmax(0, round(stats::rnorm(n, 0, 0.7)))
-    at <- max(1L, e - 10L):n
-    v[at] <- v[at] + round(stats::runif(1, 100, 400) * (1 - exp(-seq_along(at) / 8)))
-    v
-  }, numeric(n))
-  colnames(pads) <- paste0("pad", 1:4)
-  cbind(r, jitter1 = round(500 + stats::rnorm(n, 0, 3)), jitter2 = 400 + stats::rnorm(n, 0, 10),
-        spikes = spikes, near = near, pads)
+  cbind(r, noise_channels(nrow(r), contact = max(1L, e - 10L), pads = 4L, spike_every = 50L))
 }, raw$recordings, raw$meta$motion_end))
 wide <- grasps(planted, meta = raw$meta, rate = 100, unit = "raw")
 run <- timed(find_motion(wide))

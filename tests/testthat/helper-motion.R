@@ -42,31 +42,73 @@ flexglove_marked <- function(file = "flexglove-motion.csv") {
        marks = marks)
 }
 
-# The same recordings with planted channels that carry no motion: white noise
-# (`jitter1` in counts, `jitter2` unrounded), one-frame spikes of 400 counts
-# (`spikes`), a channel that changes by one count three times (`near`) and,
-# with `pad = TRUE`, a pressure pad: noise at zero until `contact` (a frame
-# per recording), then a rise to 300 counts.
+# Channels that carry no motion, planted beside a recording of `n` frames
+# (shared by the tests and bench/bench-segment.R, which sources this file):
+# white noise (`jitter1` in counts, `jitter2` unrounded), one-frame spikes
+# of 400 counts (`spikes`, one every `spike_every` frames), a channel that
+# changes by one count three times (`near`) and, with `contact` (a frame),
+# `pads` pressure pads: noise at zero until contact, then a rise to 300
+# counts.
+noise_channels <- function(n, contact = NULL, pads = 1L, spike_every = 30L) {
+  spikes <- 300 + round(stats::rnorm(n))
+  hit <- sample(n, max(2L, n %/% spike_every))
+  spikes[hit] <- spikes[hit] + 400
+  near <- rep(200, n)
+  near[sample(n, 3)] <- 201
+  out <- cbind(jitter1 = round(500 + stats::rnorm(n, 0, 3)), jitter2 = 400 + stats::rnorm(n, 0, 10),
+               spikes = spikes, near = near)
+  if (is.null(contact)) return(out)
+  pad <- vapply(seq_len(pads), function(k) {
+    v <- pmax(0, round(stats::rnorm(n, 0, 0.7)))
+    at <- contact:n
+    v[at] <- v[at] + round(300 * (1 - exp(-seq_along(at) / 3)))
+    v
+  }, numeric(n))
+  colnames(pad) <- if (pads == 1L) "pad" else paste0("pad", seq_len(pads))
+  cbind(out, pad)
+}
+
+# The same recordings with the planted channels of noise_channels() (with
+# `contact`, a frame per recording: one pressure pad).
 with_noise_channels <- function(x, seed, contact = NULL) {
   recs <- withr::with_seed(seed, lapply(seq_along(x), function(i) {
     r <- x$recordings[[i]]
-    n <- nrow(r)
-    spikes <- 300 + round(stats::rnorm(n))
-    hit <- sample(n, max(2L, n %/% 30))
-    spikes[hit] <- spikes[hit] + 400
-    near <- rep(200, n)
-    near[sample(n, 3)] <- 201
-    out <- cbind(r, jitter1 = round(500 + stats::rnorm(n, 0, 3)), jitter2 = 400 + stats::rnorm(n, 0, 10),
-                 spikes = spikes, near = near)
-    if (!is.null(contact)) {
-      pad <- pmax(0, round(stats::rnorm(n, 0, 0.7)))
-      at <- contact[i]:n
-      pad[at] <- pad[at] + round(300 * (1 - exp(-seq_along(at) / 3)))
-      out <- cbind(out, pad = pad)
-    }
-    out
+    cbind(r, noise_channels(nrow(r), contact[i]))
   }))
   grasps(recs, meta = x$meta, rate = x$rate, unit = "raw")
+}
+
+# The hand-marked recordings read as users read them: their files with the
+# time column (the copy shipped in inst/extdata/flexglove), with the planted
+# channels of noise_channels() if `seed` is given (planted on the frames as
+# recorded, so they are resampled too), written to a temporary folder and
+# read back by read_glove(time = "time_ms"), which resamples them onto one
+# 33.3 Hz grid. The marks move onto the grid by their time stamps (grid
+# frames, fractional): list(g, marks).
+flexglove_marked_resampled <- function(file = "flexglove-motion.csv", seed = NULL) {
+  src <- system.file("extdata", "flexglove", package = "handmotion")
+  testthat::skip_if_not(dir.exists(src), "inst/extdata/flexglove is not installed")
+  marks <- utils::read.csv(test_path("fixtures", file), comment.char = "#", stringsAsFactors = FALSE)
+  tmp <- withr::local_tempdir(.local_envir = parent.frame())
+  recs <- lapply(marks$file, function(f) as.matrix(utils::read.csv(file.path(src, f))))
+  if (!is.null(seed)) {
+    recs <- withr::with_seed(seed, lapply(recs, function(r) cbind(r, noise_channels(nrow(r)))))
+  }
+  for (i in seq_along(recs)) {
+    dir.create(file.path(tmp, dirname(marks$file[i])), showWarnings = FALSE, recursive = TRUE)
+    utils::write.csv(recs[[i]], file.path(tmp, marks$file[i]), row.names = FALSE)
+  }
+  profile <- glove_profile(data.frame(channel = colnames(recs[[1]])[-1]), name = "flexglove+planted",
+                           unit = "raw")
+  g <- suppressMessages(read_glove(tmp, glove = profile, time = "time_ms", recursive = TRUE))
+  # ids are the relative paths where base names repeat, else the base names
+  id <- sub("[.]csv$", "", marks$file)
+  if (!all(id %in% g$meta$id)) id <- basename(id)
+  g <- g[match(id, g$meta$id)]
+  on_grid <- function(r, frame) 1 + (r[frame, "time_ms"] - r[1, "time_ms"]) / 1000 * g$rate
+  marks$onset <- mapply(on_grid, recs, marks$onset)
+  marks$end <- mapply(on_grid, recs, marks$end)
+  list(g = g, marks = marks)
 }
 
 # The plain threshold the real-sensor checks compare with: the first frame

@@ -20,6 +20,39 @@ test_that("flexglove: the hand-marked onsets within 3 frames mean absolute error
   expect_lt(mean(abs(find_motion(ho$g)$start - ho$marks$onset)), 3)
 })
 
+test_that("flexglove read with its time stamps (resampled to 33.3 Hz): onsets within 3 frames", {
+  # the path users take: read_glove(time = "time_ms") resamples the frames
+  # (27-32 ms apart) onto one grid by linear interpolation, which shrinks
+  # the second differences the noise is read from; the noise is read over
+  # the recorded spacing (recorded_rate), so the grid finds the same onsets.
+  # Marks moved onto the grid by their time stamps. Measured 2.88 and 2.68
+  # frames, ends 4.85 (with the noise read on the grid as it is: 3.27, 2.67
+  # and 4.11; as recorded 2.90, 2.25 and 4.81).
+  fx <- flexglove_marked_resampled()
+  expect_true(all(fx$g$meta$recorded_rate > 30 & fx$g$meta$recorded_rate < 40))
+  m <- find_motion(fx$g)
+  expect_true(all(m$found))
+  expect_lt(mean(abs(m$start - fx$marks$onset)), 3)
+  expect_lt(mean(abs(m$end - fx$marks$end)), 6)
+  plain <- vapply(fx$g$recordings, plain_onset, numeric(1))
+  expect_lt(abs(stats::median(m$rest) - stats::median(plain - 1)) / fx$g$rate, 0.3)
+  ho <- flexglove_marked_resampled("flexglove-motion-heldout.csv")
+  expect_lt(mean(abs(find_motion(ho$g)$start - ho$marks$onset)), 3)
+  # channels planted before resampling (interpolated with the rest): white
+  # noise and a channel that changes by one count three times never start
+  # a motion (the latter did, with a noise of 1e-14, before the quantisation
+  # floor was read on the values as recorded). Spikes are not checked here:
+  # interpolation spreads a spike of 2 samples over 3 or 4 grid frames,
+  # which the 3-frame sustain lets through (2 to 6 of 80 recordings led by
+  # them, where they also move some onsets by a frame; open, see issue 40)
+  noisy <- flexglove_marked_resampled(seed = 7)
+  m1 <- find_motion(noisy$g)
+  expect_false(any(m1$lead %in% c("jitter1", "jitter2", "near")))
+  led <- !m1$lead %in% "spikes"
+  expect_lte(max(abs(m1$start[led] - m$start[led])), 1)
+  expect_lt(mean(abs(m1$start - noisy$marks$onset)), 3.5)
+})
+
 test_that("channels with noise but no motion never start a motion (real recordings)", {
   fx <- flexglove_marked()
   m0 <- find_motion(fx$g)
