@@ -11,15 +11,18 @@
 # other jobs want the cores, which matters for the steps on two workers.
 
 # The calibration's CPU seconds (the two timed rounds below, installed -O2
-# build) on the reference machine of report_step_model, quiet. Measured on
-# that machine at load 17-19 (2 cores) with fit_grasp_models() on the same
-# data: 0.33-0.61 s, median 0.37 s, while fit_grasp_models() on the default
-# data took 17.4 s of CPU in the same process where issue 42 measured 8 s
-# quiet: CPU time itself grows 2.2 times under such a load (the cores'
-# caches and time shared), so the quiet figure is 0.37 / 2.2 = 0.17 s; the
-# two types fitted one by one take 0.86 of that (median of 4 rounds side by
-# side at load 14): 0.15 s.
-pace_reference_cpu <- 0.15
+# build) that go with report_step_model's `cpu` column: measured in one
+# process beside the report's first four steps (simulate, fit the 33 models
+# on the 2-worker multicore plan, classify, fit last-frame PCA; the default
+# design), so that the load of other jobs, which inflates CPU time, weighs
+# on both alike. At load 10 on the 2-core machine (issue 42) six rounds took
+# 0.24-0.37 s, median 0.31 s, and the four steps 16.3 s of CPU where the
+# model says 21.2 s: the model's seconds go with 0.31 x 21.2 / 16.3 = 0.40 s.
+# (The earlier 0.15 s was a quiet figure inferred from a busy one, 0.37 s
+# divided by a guessed 2.2 for the load; with it the first estimate was two
+# to five times the time taken: 4.9 min said for a run of 2.4 min, 75 s for
+# 14 s, the README's quick design in the site's reference.)
+pace_reference_cpu <- 0.40
 
 # The pace now: `cpu` and `elapsed` seconds of the calibration, `speed`
 # (reference CPU / CPU: above 1 a faster core), `share` (CPU / elapsed:
