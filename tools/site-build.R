@@ -12,20 +12,33 @@ pkg <- pkgdown::as_pkgdown(".")
 pkgdown::init_site(pkg)
 pkgdown::build_home(pkg, preview = FALSE)
 
-# Jobs, the longest first (measured CPU seconds on the 2-core machine:
-# the reference's examples ~35, recognition ~40, natural grasps ~26,
-# reproduce-thesis ~16, own glove ~13, handover ~12, the rest a few each).
-order <- c("recognition", "reference", "real-recordings", "natural-grasps", "reproduce-thesis", "own-glove", "handover")
+# Jobs, the longest first, so that two processes end together. The
+# reference is two jobs (pkgdown::build_reference(topics =), each half of
+# the help pages with its examples: one job of all 74 was the longest of
+# the build). CPU seconds of each job (this process's and its children's:
+# the R processes pkgdown renders each article in, the future workers) are
+# printed beside its elapsed time, so a slow build says whether the work
+# grew or the machine was busy.
+topics <- pkg$topics$name
+ref_jobs <- list(`reference (1/2)` = topics[c(TRUE, FALSE)], `reference (2/2)` = topics[c(FALSE, TRUE)])
+# (CPU seconds measured at load 6-13 with the sequential plan, or estimated
+# from the multicore figures at that plan's measured cost: real recordings
+# ~70, own glove ~60, recognition ~50, reproduce-thesis ~50, natural grasps
+# ~45, each half of the reference ~35, the other four 10-20 each)
+order <- c("real-recordings", "own-glove", "recognition", "reproduce-thesis", "natural-grasps",
+           "reference (1/2)", "reference (2/2)", "getting-started", "handover")
 articles <- as.character(pkg$vignettes$name)
-jobs <- c(intersect(order, c("reference", articles)), setdiff(articles, order))
+jobs <- c(intersect(order, c(names(ref_jobs), articles)), setdiff(articles, order))
+cpu_now <- function() sum(proc.time()[c("user.self", "sys.self", "user.child", "sys.child")], na.rm = TRUE)
 run_job <- function(job) {
-  started <- proc.time()[["elapsed"]]
-  if (job == "reference") {
-    pkgdown::build_reference(pkg, lazy = FALSE, examples = TRUE, devel = FALSE, preview = FALSE)
+  started <- c(cpu = cpu_now(), elapsed = proc.time()[["elapsed"]])
+  if (job %in% names(ref_jobs)) {
+    pkgdown::build_reference(pkg, lazy = FALSE, examples = TRUE, devel = FALSE, preview = FALSE,
+                             topics = ref_jobs[[job]])
   } else {
     pkgdown::build_article(job, pkg, lazy = FALSE)
   }
-  proc.time()[["elapsed"]] - started
+  c(cpu = cpu_now(), elapsed = proc.time()[["elapsed"]]) - started
 }
 took <- parallel::mclapply(jobs, function(job) {
   tryCatch(run_job(job), error = function(e) e)
@@ -35,7 +48,12 @@ if (any(failed)) {
   stop("site: building ", paste(jobs[failed], collapse = ", "), " failed: ",
        paste(vapply(took[failed], conditionMessage, character(1)), collapse = "; "), call. = FALSE)
 }
-message(paste(sprintf("site: %s %.0f s", jobs, unlist(took)), collapse = "\n"))
+took <- do.call(rbind, took)
+load <- tryCatch(scan("/proc/loadavg", n = 1L, quiet = TRUE), error = function(e) NA_real_)
+message(paste(c(sprintf("site: %-26s %6s %6s", "job", "elapsed", "CPU"),
+                sprintf("site: %-26s %5.0f s %4.0f s", jobs, took[, "elapsed"], took[, "cpu"]),
+                sprintf("site: %-26s %5s   %4.0f s (load average now %.1f)", "all jobs", "", sum(took[, "cpu"]), load)),
+              collapse = "\n"))
 pkgdown::build_articles_index(pkg)
 pkgdown::build_news(pkg, preview = FALSE)
 pkgdown:::build_sitemap(pkg)   # (not exported; build_site() calls it)
