@@ -11,6 +11,7 @@
 #include <stdio.h>
 #include <string.h>
 #include <limits.h>
+#include "named-list.h"
 
 SEXP hm_plain_text(SEXP files, SEXP sizes) {
   R_xlen_t n = XLENGTH(files);
@@ -51,13 +52,10 @@ SEXP hm_plain_text(SEXP files, SEXP sizes) {
     if (b[want - 1] != '\n') { buf[used++] = '\n'; lines++; }
     REAL(n_lines)[i] = lines;
   }
-  SEXP out = PROTECT(allocVector(VECSXP, 2));
-  SET_VECTOR_ELT(out, 0, ScalarString(mkCharLenCE(buf, (int) used, CE_NATIVE)));
-  SET_VECTOR_ELT(out, 1, n_lines);
-  SEXP nm = PROTECT(allocVector(STRSXP, 2));
-  SET_STRING_ELT(nm, 0, mkChar("text"));
-  SET_STRING_ELT(nm, 1, mkChar("n_lines"));
-  setAttrib(out, R_NamesSymbol, nm);
-  UNPROTECT(3);
+  SEXP text = PROTECT(ScalarString(mkCharLenCE(buf, (int) used, CE_NATIVE)));
+  const char *names[] = {"text", "n_lines"};
+  const SEXP values[] = {text, n_lines};
+  SEXP out = hm_named_list(2, names, values);
+  UNPROTECT(2);
   return out;
 }

@@ -16,6 +16,7 @@
 #include <Rinternals.h>
 #include <math.h>
 #include <stdlib.h>
+#include "named-list.h"
 
 static void need_real(SEXP x, R_xlen_t len, const char *what) {
   if (TYPEOF(x) != REALSXP || XLENGTH(x) != len)
@@ -159,14 +160,10 @@ SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SE
       for (int c = 0; c < k; c++) S[i + n * (j + (R_xlen_t) p * c)] = a[c];
     }
   }
-  SEXP out = PROTECT(allocVector(VECSXP, 2));
-  SET_VECTOR_ELT(out, 0, scores);
-  SET_VECTOR_ELT(out, 1, resid);
-  SEXP nms = PROTECT(allocVector(STRSXP, 2));
-  SET_STRING_ELT(nms, 0, mkChar("scores"));
-  SET_STRING_ELT(nms, 1, mkChar("residual"));
-  setAttrib(out, R_NamesSymbol, nms);
-  UNPROTECT(4);
+  const char *out_names[] = {"scores", "residual"};
+  const SEXP out_values[] = {scores, resid};
+  SEXP out = hm_named_list(2, out_names, out_values);
+  UNPROTECT(2);
   return out;
 }
 
@@ -261,17 +258,9 @@ SEXP hm_project_warped(SEXP recs, SEXP cols, SEXP u, SEXP mean, SEXP comps, SEXP
     }
     D[i] = sqrt((double) acc);
   }
-  SEXP out = PROTECT(allocVector(VECSXP, 4));
-  SET_VECTOR_ELT(out, 0, dist);
-  SET_VECTOR_ELT(out, 1, scores);
-  SET_VECTOR_ELT(out, 2, resid);
-  SET_VECTOR_ELT(out, 3, warped);
-  SEXP nms = PROTECT(allocVector(STRSXP, 4));
-  SET_STRING_ELT(nms, 0, mkChar("distance"));
-  SET_STRING_ELT(nms, 1, mkChar("scores"));
-  SET_STRING_ELT(nms, 2, mkChar("residual"));
-  SET_STRING_ELT(nms, 3, mkChar("warped"));
-  setAttrib(out, R_NamesSymbol, nms);
-  UNPROTECT(6);
+  const char *names[] = {"distance", "scores", "residual", "warped"};
+  const SEXP values[] = {dist, scores, resid, warped};
+  SEXP out = hm_named_list(4, names, values);
+  UNPROTECT(4);
   return out;
 }
