@@ -360,6 +360,10 @@ limit_share <- function(x, limits) {
 # the statistic agrees to rounding and the p-value is the same up to
 # rounding ties.
 mmd_test <- function(X, Y, bandwidth, permutations = 200L) {
+  # a sample of one recording has no within-sample pair: no statistic (the
+  # former R computation gave NaN and NA here; a type's held-out fold of one
+  # recording on a small real set comes to this)
+  if (nrow(X) < 2L || nrow(Y) < 2L) return(list(mmd = NaN, p = NA_real_))
   K <- exp(-squared_distances(rbind(X, Y)) / (2 * bandwidth^2))
   stat <- .Call(hm_mmd_permutations, K, nrow(X), as.integer(permutations))
   obs <- stat[1L]

@@ -93,6 +93,10 @@ test_that("the MMD test by quadratic forms equals the former permutation-by-inde
   # split does (the same terms in the same order)
   same <- withr::with_seed(2, mmd_test(X[1:2, ], Y[1:2, ], bw, permutations = 50))
   expect_equal(same$p, withr::with_seed(2, mmd_test_reference(X[1:2, ], Y[1:2, ], bw, permutations = 50))$p)
+  # a sample of one recording has no statistic, as before (NaN, NA), not an error
+  one <- mmd_test(X[1, , drop = FALSE], Y, bw)
+  expect_true(is.nan(one$mmd) && is.na(one$p))
+  expect_true(is.nan(withr::with_seed(2, mmd_test_reference(X[1, , drop = FALSE], Y, bw))$mmd))
 })
 
 test_that("evaluate_generation() flags independent DoFs and returns a tidy table", {
