@@ -13,7 +13,8 @@
 #    second difference (robust to the motion, which is smooth, and to spikes);
 #    floored at half the smallest step between frames (quantisation: a
 #    channel in counts that never changes has noise 0.5, not 0).
-#  * smoothed channel: running median of 3 frames (removes one-frame spikes).
+#  * smoothed channel: running median of 3 frames with Tukey's end rule
+#    (stats::runmed(v, 3, endrule = "median"); removes one-frame spikes).
 #  * departure: the smoothed channel minus its rest level (the median of the
 #    first `motion_rest_s` seconds), in noise sds; the largest absolute value
 #    it keeps for `motion_sustain` frames is how far the channel moves
@@ -47,14 +48,31 @@ motion_sustain <- 3L         # a departure counts once it lasts 3 frames (spikes
 # frame (resampled_mad()). The quantisation
 # floor too: see quantum_floor().
 channel_noise <- function(X, spacing = NA_real_) {
+  X <- as_double_matrix(X)
+  noise_from_mad(X, .Call(hm_motion_base, X, 0L, noise_lag(spacing))$mad, spacing)
+}
+
+# Recorded frames between the points of a second difference: 1 as recorded,
+# the recorded spacing on a resampled grid.
+noise_lag <- function(spacing) if (is.finite(spacing)) max(1L, as.integer(round(1 / spacing))) else 1L
+
+# The noise sd per column from the MAD of its second differences (computed in
+# src/motion-signals.c; Inf for a channel too short to have one), scaled and
+# floored as above.
+noise_from_mad <- function(X, mad, spacing) {
   resampled <- is.finite(spacing)
-  lag <- if (resampled) max(1L, as.integer(round(1 / spacing))) else 1L
-  scale <- if (resampled) resampled_mad(spacing, lag) else 1
-  apply(X, 2, function(v) {
-    v <- v[is.finite(v)]
-    if (length(v) < 2L * lag + 2L) return(Inf)
-    max(stats::mad(diff(v, lag = lag, differences = 2)) / sqrt(6) / scale, quantum_floor(v, resampled))
-  })
+  scale <- if (resampled) resampled_mad(spacing, noise_lag(spacing)) else 1
+  floor <- vapply(seq_len(ncol(X)), function(j) {
+    v <- X[, j]
+    quantum_floor(v[is.finite(v)], resampled)
+  }, numeric(1))
+  stats::setNames(pmax(mad / sqrt(6) / scale, floor), colnames(X))
+}
+
+as_double_matrix <- function(X) {
+  X <- as.matrix(X)
+  if (!is.double(X)) storage.mode(X) <- "double"
+  X
 }
 
 # Half the smallest step between a channel's values (0.5 for a channel that
@@ -115,13 +133,6 @@ recorded_spacing <- function(x) {
   as.numeric(r) / x$rate
 }
 
-# Running median of 3 frames per column (a recording of 3 frames or fewer as is).
-smooth_channels <- function(X) {
-  if (nrow(X) <= 3L) return(X)
-  S <- apply(X, 2, function(v) as.numeric(stats::runmed(v, 3L, endrule = "median")))
-  matrix(S, nrow(X), dimnames = dimnames(X))
-}
-
 # Frames of the rest window and of the rate's half-width at `rate` Hz.
 rest_frames <- function(rate) max(3L, round(motion_rest_s * rate))
 rate_lag <- function(rate) max(1L, round(motion_rate_s * rate))
@@ -140,13 +151,16 @@ channel_rate <- function(S, lag) {
 # the rate's noise sd. `noise` may be given (a fitted detector's); `spacing`
 # as for channel_noise().
 motion_signals <- function(rec, rate, noise = NULL, spacing = NA_real_) {
-  rec <- as.matrix(rec)
-  S <- smooth_channels(rec)
-  if (is.null(noise)) noise <- channel_noise(rec, spacing)
-  rest <- apply(S[seq_len(min(rest_frames(rate), nrow(S))), , drop = FALSE], 2, stats::median)
+  rec <- as_double_matrix(rec)
+  # the running median of 3 frames (Tukey's end rule), the rest levels and
+  # the noise's MAD, in one compiled pass (src/motion-signals.c)
+  base <- .Call(hm_motion_base, rec, rest_frames(rate), noise_lag(spacing))
+  S <- base$S
+  if (is.null(noise)) noise <- noise_from_mad(rec, base$mad, spacing)
+  n <- nrow(S)
   lag <- rate_lag(rate)
-  D <- sweep(sweep(S, 2, rest), 2, noise, "/")
-  R <- sweep(channel_rate(S, lag), 2, noise * sqrt(2) / (2 * lag), "/")
+  D <- (S - rep(base$rest, each = n)) / rep(noise, each = n)
+  R <- channel_rate(S, lag) / rep(noise * sqrt(2) / (2 * lag), each = n)
   held <- sustained(abs(D))
   list(S = S, noise = noise, D = D, held = held, move = apply(held, 2, max), lag = lag, R = R,
        peak_rate = apply(abs(R), 2, max))

@@ -224,9 +224,9 @@ still_phases <- function(x, motion) {
 # so the detector looks `motion_rate_s` (0.12 s) ahead.
 fit_onset_detector <- function(x, min_move = 12) {
   spacing <- recorded_spacing(x)
-  noise <- vapply(seq_along(x$dofs), function(j) {
-    stats::median(unlist(Map(function(r, s) channel_noise(r[, j, drop = FALSE], s), x$recordings, spacing)))
-  }, numeric(1))
+  per_recording <- matrix(unlist(Map(channel_noise, x$recordings, spacing), use.names = FALSE),
+                          nrow = length(x$dofs))
+  noise <- apply(per_recording, 1, stats::median)
   moving <- vapply(x$recordings, function(r) {
     sig <- motion_signals(r, x$rate, noise)
     seq_along(x$dofs) %in% moving_channels(sig$move, sig$peak_rate, min_move)

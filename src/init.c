@@ -26,6 +26,7 @@ SEXP hm_lda_w2(SEXP F, SEXP rows, SEXP cls, SEXP means, SEXP inv_s); /* lda-mome
 SEXP hm_mmd_permutations(SEXP K, SEXP n, SEXP perms); /* mmd-permutations.c */
 SEXP hm_channel_ranges(SEXP recs, SEXP p); /* channel-ranges.c */
 SEXP hm_plain_text(SEXP files, SEXP sizes); /* plain-text.c */
+SEXP hm_motion_base(SEXP X, SEXP rest_n, SEXP lag); /* motion-signals.c */
 
 static const R_CallMethodDef call_methods[] = {
   {"hm_dtw_pair", (DL_FUNC) &hm_dtw_pair, 3}, {"hm_dtw_batch", (DL_FUNC) &hm_dtw_batch, 4},
@@ -43,6 +44,7 @@ static const R_CallMethodDef call_methods[] = {
   {"hm_mmd_permutations", (DL_FUNC) &hm_mmd_permutations, 3},
   {"hm_channel_ranges", (DL_FUNC) &hm_channel_ranges, 2},
   {"hm_plain_text", (DL_FUNC) &hm_plain_text, 2},
+  {"hm_motion_base", (DL_FUNC) &hm_motion_base, 3},
   {NULL, NULL, 0}
 };
 
