@@ -160,7 +160,7 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
       p <- hm_progressor(length(todo))
       # (a top-level function and only each type's own data go to the workers)
       future.apply::future_mapply(
-        fit_one_type, parts[todo], (paths %||% rep(NA_character_, length(types)))[todo],
+        fit_one_type, lapply(parts[todo], pack_for_worker), (paths %||% rep(NA_character_, length(types)))[todo],
         MoreArgs = list(args = args, progress = p), SIMPLIFY = FALSE, USE.NAMES = FALSE,
         future.seed = if (is.null(streams)) TRUE else streams[todo], future.scheduling = Inf)
     })
@@ -203,6 +203,7 @@ type_work <- function(parts) {
 # One type's fit for a worker. A top-level function, so the closure shipped to
 # workers does not drag the caller's frame (the whole data set) along.
 fit_one_type <- function(part, save_to, args, progress) {
+  part <- unpack_on_worker(part)
   # (degenerate data is recorded in each model and said once for the set by
   # fit_grasp_models(), not once per type)
   # (seed = NULL: the type's own stream, set by future.seed, not fit_grasp_model()'s default)

@@ -1,0 +1,22 @@
+# Recordings packed for a future's worker (R/transport.R) come back identical.
+
+test_that("a packed set unpacks to the identical set, and odd sets travel as they are", {
+  g <- simulate_grasps(subjects = 2, grasps = c("Tripod", "Lateral"), seed = 3)
+  future::plan(future::multisession, workers = 2)
+  on.exit(future::plan(future::sequential), add = TRUE)
+  p <- pack_for_worker(g)
+  expect_s3_class(p, "handmotion_packed")
+  expect_lt(length(unclass(p)$shell$recordings), 1)
+  expect_identical(unpack_on_worker(p), g)
+  # a recording with row names is not plain: the set goes whole
+  odd <- g
+  rownames(odd$recordings[[2]]) <- seq_len(nrow(odd$recordings[[2]]))
+  expect_identical(pack_for_worker(odd), odd)
+  expect_identical(unpack_on_worker(odd), odd)
+})
+
+test_that("under a sequential plan nothing is packed", {
+  future::plan(future::sequential)
+  g <- simulate_grasps(subjects = 1, grasps = "Tripod", seed = 3)
+  expect_identical(pack_for_worker(g), g)
+})
