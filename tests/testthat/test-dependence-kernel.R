@@ -86,3 +86,20 @@ test_that("a kernel model without its kernel density is a classed error", {
   m$dependence$kernel$root <- m$dependence$kernel$root[-1, ]
   expect_error(generate(m, n = 2), class = "handmotion_error_bad_model")
 })
+
+test_that("the compiled leave-one-out sums equal the R expression they replaced", {
+  # the definition: per row the log-sum-exp of -D2 / (2 h^2), the diagonal out
+  ref <- function(D2, grid) sapply(grid, function(h) {
+    A <- -D2 / (2 * h^2)
+    m <- apply(A, 1, max)
+    m + log(rowSums(exp(A - m)))
+  })
+  set.seed(8)
+  for (n in c(3L, 40L, 250L)) {
+    Y <- matrix(rnorm(n * 6), n)
+    sq <- rowSums(Y^2)
+    D2 <- pmax(outer(sq, sq, `+`) - 2 * tcrossprod(Y), 0)
+    diag(D2) <- Inf
+    expect_identical(.Call(hm_kernel_loo_lse, D2, kernel_bandwidth_grid), ref(D2, kernel_bandwidth_grid))
+  }
+})
