@@ -207,7 +207,7 @@ compare_marker_sets <- function(reference, test, sets = NULL, search = TRUE, ...
     s <- sets[[nm]]
     if (!is.list(s)) s <- list(markers = s, method = "pca")
     if (is.null(s$method)) s$method <- "pca"
-    model <- fit_handover(reference, s$markers, method = s$method, ...)
+    model <- fit_handover(reference, markers = s$markers, method = s$method, ...)
     rec <- stats::predict(model, test)
     e <- handover_error(test, rec, by = "recording")
     data.frame(set = nm, method = s$method, n_markers = length(s$markers),
@@ -272,7 +272,7 @@ handover_pca_error <- function(reference, data = NULL, call = rlang::caller_env(
 #' @noRd
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:3, objects = 1, trials = 1)
-#' fit <- fit_handover(g, markers = 3)
+#' fit <- fit_handover(g, n_markers = 3)
 #' str(handover_scores(fit, g[1]))
 handover_scores <- function(model, x) {
   call <- rlang::caller_env()
