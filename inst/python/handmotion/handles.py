@@ -4,7 +4,7 @@ import numpy as np
 
 from ._bridge import bridge, call, r, r_to_py
 from .errors import BadInputError
-from .grasps import as_grasps as _as_grasps
+from .grasps import _as_grasps
 
 
 class RHandle:
@@ -89,9 +89,9 @@ class GraspModels(Classifier):
             raise BadInputError(f"no model for grasp type {grasp!r}; have {self.grasp_types()}")
         return _labelled_matrix(bridge("dependence_matrix")(self.robj.rx2(str(grasp))))
 
-    def project(self, x):
-        """The recordings of ``x`` projected onto each type's model: :func:`handmotion.project`."""
-        return project(self, x)
+    def project(self, new_data):
+        """The recordings of ``new_data`` projected onto each type's model: :func:`handmotion.project`."""
+        return project(self, new_data)
 
 
 class GraspModel(RHandle):
@@ -103,9 +103,9 @@ class GraspModel(RHandle):
         """R's ``summary()`` of the model as a DataFrame."""
         return r_to_py(call(r().r["as.data.frame"], call(r().r["summary"], self.robj)))
 
-    def project(self, x):
-        """The recordings of ``x`` projected onto this model: :func:`project`."""
-        return project(self, x)
+    def project(self, new_data):
+        """The recordings of ``new_data`` projected onto this model: :func:`project`."""
+        return project(self, new_data)
 
 
 class Skeleton(RHandle):
@@ -136,17 +136,17 @@ def _projection(p):
             "residual": r_to_py(p.rx2("residual"))}
 
 
-def project(model, x):
-    """Project the recordings of ``x`` onto a model (R's ``project()``): for a
+def project(object, new_data):
+    """Project the recordings of ``new_data`` onto a model (R's ``project(object, new_data)``): for a
     :class:`GraspModel` one projection, for a :class:`GraspModels` a dict ``{grasp type:
     projection}`` (failed types have none). A projection is a dict with ``ids`` (the
     recordings), ``distance`` (numpy, one per recording: the thesis' eq. 4.4 over the whole
     hand), ``scores`` (numpy, recordings x DoF x FPC) and ``residual`` (numpy, recordings x
     DoF residual norms)."""
-    if not isinstance(model, (GraspModel, GraspModels)):
-        raise BadInputError("model must be a GraspModel or GraspModels from fit_grasp_model(s)()")
-    res = call("project", model, _as_grasps(x), details=False)
-    if isinstance(model, GraspModel):
+    if not isinstance(object, (GraspModel, GraspModels)):
+        raise BadInputError("object must be a GraspModel or GraspModels from fit_grasp_model(s)()")
+    res = call("project", object, _as_grasps(new_data, "new_data"), details=False)
+    if isinstance(object, GraspModel):
         return _projection(res)
     return {str(name): _projection(p) for name, p in zip(r().r["names"](res), res)}
 
