@@ -67,10 +67,14 @@ def test_every_wrapper_has_r_argument_names_in_r_order(hm, ro):
     assert problems == {}
 
 
-@pytest.mark.parametrize("method", ["project"])
-def test_handle_methods_name_r_arguments(hm, ro, method):
-    # a handle's method is R's verb with the handle as its first argument
-    r_lists = r_formals(ro, method)
-    for cls in (hm.GraspModel, hm.GraspModels):
-        params = python_params(getattr(cls, method))[1:]
-        assert signature_problems(params, [fs[1:] for fs in r_lists]) == []
+@pytest.mark.parametrize("handle, method, r_name", [
+    ("GraspModel", "project", "project"), ("GraspModels", "project", "project"),
+    ("GraspModels", "predict", "predict.grasp_classifier"),
+    ("GraspClassifier", "predict", "predict.grasp_classifier"),
+    ("GraspRecognizer", "predict", "predict.grasp_recognizer"),
+    ("HandoverModel", "predict", "predict.handover_model")])
+def test_handle_methods_name_r_arguments(hm, ro, handle, method, r_name):
+    # a handle's method is R's verb (or S3 method) with the handle as its first argument
+    r_lists = [fs[1:] for fs in r_formals(ro, r_name)]
+    params = python_params(getattr(getattr(hm, handle), method))[1:]
+    assert signature_problems(params, r_lists) == []
