@@ -11,10 +11,7 @@ search_markers <- function(reference, n = 6, holdout = "grasp", exhaustive = FAL
                            skeleton = hand_skeleton(), ..., call = rlang::caller_env()) {
   check_grasps(reference, "x", call = call)
   cand <- hand_marker_set()$marker[hand_marker_set()$segment == "hand"]
-  if (!is.numeric(n) || length(n) != 1L || is.na(n) || n < 1 || n > length(cand) || n != round(n)) {
-    hm_abort("{.arg n} must be a whole number from 1 to {length(cand)}, not {.val {format(n)}}.",
-             "bad_markers", argument = "n", call = call)
-  }
+  check_whole(n, "n", max = length(cand), class = "bad_markers", call = call)  # (n kept as given: it is the log's step)
   max_frames <- check_whole(max_frames, "max_frames", call = call)
   seed <- check_seed(seed, call = call)
   if (!holdout %in% names(reference$meta)) {

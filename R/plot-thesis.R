@@ -44,11 +44,8 @@ plot_frame_strip <- function(x, recording = 1L, n_frames = 6L, skeleton = hand_s
     hm_abort("{.arg x} must be a {.cls grasps} object or a list of them, not {.obj_type_friendly {x}}.",
              "bad_input", argument = "x", call = call)
   }
-  if (!is.numeric(n_frames) || length(n_frames) != 1L || is.na(n_frames) || n_frames < 2 ||
-      n_frames != round(n_frames)) {
-    hm_abort("{.arg n_frames} must be one whole number of at least 2, not {.val {format(n_frames)}}.",
-             "bad_input", argument = "n_frames", call = call)
-  }
+  # (a strip shows at least its first and last frame)
+  check_whole(n_frames, "n_frames", min = 2, call = call)
   if (is.null(names(sets))) names(sets) <- if (length(sets) == 1L) "" else paste("set", seq_along(sets))
   recording <- rep_len(as.list(recording), length(sets))
   fractions <- seq(0, 1, length.out = n_frames)
