@@ -222,6 +222,8 @@ simulate.grasp_model <- function(object, nsim = 1, seed = 1, ...) {
 #' @rdname simulate.grasp_model
 #' @export
 simulate.grasp_models <- function(object, nsim = 1, seed = 1, ...) {
+  # (through `...` an old `grasp =` would reach `grasps` by partial matching)
+  check_renamed_args(...names(), "simulate", own = names(formals(generate.grasp_models)))
   generate.grasp_models(object, n = nsim, seed = seed, ...)
 }
 

@@ -63,6 +63,7 @@ test_that("one word, one meaning: each old argument name is a classed error nami
   # grasp -> grasps (selecting types); `grasp =` would reach `grasps` by partial matching
   expect_error(generate(ms, grasp = 17, n = 1), "grasps", class = "handmotion_error_bad_input")
   expect_error(generate(ms[[1]], grasp = 17, n = 1), "grasps", class = "handmotion_error_bad_input")
+  expect_error(simulate(ms, grasp = 17), "grasps", class = "handmotion_error_bad_input")
   expect_error(ggplot2::autoplot(g, type = "frame_counts", grasp = 17), "grasps",
                class = "handmotion_error_bad_input")
   expect_identical(generate(ms, grasps = 31, n = 2, seed = 3), generate(ms, grasps = "Ring", n = 2, seed = 3))
