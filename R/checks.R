@@ -153,13 +153,29 @@ check_dots_for <- function(dots, fun, fun_name, exclude = character(), call = rl
 
 # A renamed argument given to a verb by its old name is an error that says
 # the new one, instead of R's "unused argument" or, worse, a partial match
-# (fit_grasp_model(k = 2) of development versions would set `keep_data`).
-check_renamed_args <- function(given, fun_name, call = rlang::caller_env()) {
-  old <- intersect(given, names(renamed_arguments))
+# (fit_grasp_model(k = 2) of development versions would set `keep_data`,
+# generate(models, grasp = ) would set `grasps`). `own` are the verb's own
+# arguments: an old name that is still right for this verb (`grasp` of
+# fit_grasp_model(), `markers` of forward_kinematics()) is not an error.
+check_renamed_args <- function(given, fun_name, own = character(), call = rlang::caller_env()) {
+  old <- setdiff(intersect(given, names(renamed_arguments)), own)
   if (length(old) == 0L) return(invisible())
   hm_abort(c("{.fn {fun_name}} has no argument{?s} {.val {old}}.", renamed_argument_hints(old),
              i = "See {.help [{.fn {fun_name}}](handmotion::{fun_name})}."),
            "bad_input", argument = old[1], call = call)
+}
+
+# `...` of a verb that takes no further arguments, there only so that an old
+# argument name is a classed error naming the new one (not R's "unused
+# argument"): any name given there is refused.
+check_no_dots <- function(dots, fun_name, call = rlang::caller_env()) {
+  if (length(dots) == 0L) return(invisible())
+  given <- rlang::names2(dots)
+  check_renamed_args(given, fun_name, call = call)
+  shown <- ifelse(nzchar(given), given, "<unnamed>")
+  hm_abort(c("{.fn {fun_name}} has no argument{?s} {.val {shown}}.",
+             i = "See {.help [{.fn {fun_name}}](handmotion::{fun_name})}."),
+           "bad_input", argument = "...", call = call)
 }
 
 # Arguments renamed before the first release (see ?handmotion-renamed), by
@@ -168,7 +184,14 @@ check_renamed_args <- function(given, fun_name, call = rlang::caller_env()) {
 renamed_arguments <- c(
   k = paste("{.arg k} was renamed by what it counts: {.arg mixture_components} (fit_grasp_model(),",
             "fit_grasp_models()), {.arg ncomp} (last-frame PCs) or {.arg neighbours} (fit_handover())."),
-  newdata = "{.arg newdata} is {.arg new_data}, as in every {.fn predict} method and {.fn autoplot} of a model."
+  newdata = "{.arg newdata} is {.arg new_data}, as in every {.fn predict} method and {.fn autoplot} of a model.",
+  grasp = paste("{.arg grasp} (the grasp types to select) is {.arg grasps}, as in {.fn fit_grasp_models}",
+                "and {.fn simulate_grasps}."),
+  overlong = paste("{.arg overlong} of {.fn simulate_grasps} (plant over-long recordings?) is",
+                   "{.arg plant_overlong}; {.arg overlong} is the over-long rule of {.fn fit_grasp_model}."),
+  markers = paste("{.arg markers} of {.fn fit_handover} is a marker set (names); a number of markers",
+                  "to select is {.arg n_markers}."),
+  loso_folds = "{.arg loso_folds} is {.arg folds} ({.code NULL}: one fold per subject), as in {.fn evaluate_loso}."
 )
 
 renamed_argument_hints <- function(nms) {
@@ -177,7 +200,7 @@ renamed_argument_hints <- function(nms) {
 }
 
 # Class labels asked for by name (or, for Feix-labelled data, by id):
-# `grasps = ` of a fit, `grasp = ` of generate(). `levels` are the labels the
+# `grasps = ` of a fit, of generate() and of autoplot(). `levels` are the labels the
 # data or models have; see resolve_labels().
 check_grasp_selection <- function(grasps, arg, levels = NULL, call = rlang::caller_env()) {
   resolve_labels(grasps, levels, arg, call = call)

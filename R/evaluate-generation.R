@@ -58,30 +58,35 @@
 #' give the median over types (pooled shares for `recognised` and
 #' `outside_limits`).
 #'
-#' **Folds.** Given recordings instead of models (`models` a [grasps()]
-#' set, `held_out` and `training` left out), the evaluation makes its own
-#' held-out folds as [evaluate_loso()] does (by subject with two or more
-#' subjects, else stratified by recording; `split`, `folds`, `seed`), fits
-#' each model of `fit` on each fold's training recordings, measures against
-#' its held-out ones, and averages every measure over the folds.
+#' **Folds.** Given `recordings` instead of `models` (and no `held_out`
+#' or `training`), the evaluation makes its own held-out folds as
+#' [evaluate_loso()] does (by subject with two or more subjects, else
+#' stratified by recording; `split`, `folds`, `seed`), fits each model of
+#' `fit` on each fold's training recordings, measures against its held-out
+#' ones, and averages every measure over the folds.
 #'
 #' A progress bar (one step per grasp type, through `progressr`) appears
 #' after 2 s (in interactive sessions, or when you set progressr's handlers
 #' or `progressr.enable`); `options(handmotion.progress = FALSE)` turns it off.
 #'
 #' @param models A `grasp_models` set ([fit_grasp_models()]) or a named list
-#'   of them to compare (e.g. `list(thesis = m1, copula = m2)`); or a
-#'   [grasps()] set of recordings to evaluate by folds (see Folds).
+#'   of them to compare (e.g. `list(thesis = m1, copula = m2)`), with
+#'   `held_out` and `training`; `NULL` with `recordings`.
 #' @param held_out A [grasps()] object of held-out recordings of the modelled
 #'   types.
 #' @param training A [grasps()] object of the recordings the models were
 #'   fitted on (the baseline's real recordings and the classifier's training
 #'   data).
+#' @param recordings Instead of `models`, `held_out` and `training`: a
+#'   [grasps()] set of recordings to evaluate by folds (see Folds).
 #' @param fit With folds: a named list of argument lists for
 #'   [fit_grasp_models()], one per model compared (default: the thesis'
 #'   independent model, the copula model and the kernel model).
-#' @param split,folds With folds: as in [evaluate_loso()]; `folds` defaults to
-#'   5 (groups of subjects, or folds of recordings).
+#' @param split,folds With folds: as in [evaluate_loso()]: `folds = NULL`
+#'   (default) is one fold per subject (5 folds by recording with one
+#'   subject), a number `n` is `n` groups of subjects (or folds of
+#'   recordings). Each fold fits every model of `fit`, so fewer folds
+#'   (`folds = 2`) are much cheaper.
 #' @param n Generated grasps (and training recordings) per type and
 #'   repetition; by default the number of held-out recordings of each type.
 #' @param reps Repetitions averaged.
@@ -108,15 +113,27 @@
 #' ev <- evaluate_generation(m, test, train, reps = 2)
 #' ev
 #' # by folds, from the recordings
-#' evaluate_generation(g, folds = 2, reps = 1, fit = list(copula = list(dependence = "copula")))
-evaluate_generation <- function(models, held_out = NULL, training = NULL, n = NULL, reps = 5,
+#' evaluate_generation(recordings = g, folds = 2, reps = 1, fit = list(copula = list(dependence = "copula")))
+evaluate_generation <- function(models = NULL, held_out = NULL, training = NULL, n = NULL, reps = 5,
                                 overlong = c(iqr_mult = 3, median_mult = 1.5), seed = 1,
                                 fit = list(thesis = list(), copula = list(dependence = "copula"),
                                            kernel = list(dependence = "kernel")),
-                                split = c("auto", "subject", "recording"), folds = 5) {
+                                split = c("auto", "subject", "recording"), folds = NULL, recordings = NULL) {
   call <- rlang::caller_env()
+  # two modes, two arguments: model sets with their held-out and training
+  # recordings, or recordings alone (folds)
   if (inherits(models, "grasps")) {
-    return(evaluate_generation_folds(models, fit, split, folds, n, reps, overlong, seed, call))
+    hm_abort(c("{.arg models} must be model sets, not a {.cls grasps} set of recordings.",
+               i = "To evaluate recordings by folds, give them as {.arg recordings}."),
+             "bad_input", argument = "models", call = call)
+  }
+  if (!is.null(recordings)) {
+    if (!is.null(models) || !is.null(held_out) || !is.null(training)) {
+      hm_abort("Give either {.arg recordings} (folds) or {.arg models} with {.arg held_out} and {.arg training}, not both.",
+               "bad_input", argument = "recordings", call = call)
+    }
+    check_grasps(recordings, arg = "recordings", call = call)
+    return(evaluate_generation_folds(recordings, fit, split, folds, n, reps, overlong, seed, call))
   }
   sets <- if (inherits(models, "grasp_models")) stats::setNames(list(models), model_set_name(models)) else models
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasp_models")) ||

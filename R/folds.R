@@ -44,12 +44,8 @@ make_folds <- function(x, split = c("auto", "subject", "recording"), folds = NUL
               else sprintf("leave-group-out (%d folds of subjects)", length(groups))
     return(structure(out, scheme = scheme, split = "subject"))
   }
-  k <- folds %||% 5L
-  n <- length(x)
-  if (!is.numeric(k) || length(k) != 1L || is.na(k) || k != round(k) || k < 2 || k > n) {
-    hm_abort("{.arg folds} must be a whole number from 2 to {n} (folds of recordings), not {.val {format(k)}}.",
-             "bad_input", argument = "folds", call = call)
-  }
+  # (folds of recordings: at least two, at most one recording each)
+  k <- check_whole(folds %||% 5L, "folds", min = 2, max = length(x), call = call)
   fold <- stratified_fold_ids(x$meta$grasp, k, seed)
   out <- lapply(seq_len(k), function(f) fold == f)
   names(out) <- paste("fold", seq_len(k))
@@ -81,11 +77,8 @@ stratified_fold_ids <- function(labels, k, seed) {
 # groups of near-equal size.
 subject_folds <- function(subjects, folds, seed, call = rlang::caller_env()) {
   if (is.null(folds)) return(as.list(subjects))
-  if (!is.numeric(folds) || length(folds) != 1L || is.na(folds) || folds != round(folds) ||
-      folds < 1 || folds > length(subjects)) {
-    hm_abort("{.arg folds} must be a whole number from 1 to {length(subjects)} (the number of subjects held out), not {.val {format(folds)}}.",
-             "bad_input", argument = "folds", call = call)
-  }
+  # (groups of subjects: at most one subject each)
+  folds <- check_whole(folds, "folds", max = length(subjects), call = call)
   shuffled <- with_seed(seed, sample(subjects))
   unname(split(shuffled, rep_len(seq_len(folds), length(shuffled))))
 }

@@ -86,7 +86,7 @@ generics::generate
 #' @param x A `grasp_model` ([fit_grasp_model()]) or `grasp_models`
 #'   ([fit_grasp_models()]).
 #' @param n Number of grasps to generate (per grasp type for a model set).
-#' @param grasp For a model set: the grasp types to generate (names or ids
+#' @param grasps For a model set: the grasp types to generate (names or ids
 #'   1-33); all fitted types by default.
 #' @param seed Seed of the draws (default 1: like every handmotion verb
 #'   that draws random numbers, a call repeats itself); the global RNG is
@@ -131,13 +131,15 @@ generate.grasp_model <- function(x, n = 1, seed = 1, warp = TRUE, limits = NULL,
 
 #' @rdname generate.grasp_model
 #' @export
-generate.grasp_models <- function(x, n = 1, grasp = NULL, seed = 1, warp = TRUE,
+generate.grasp_models <- function(x, n = 1, grasps = NULL, seed = 1, warp = TRUE,
                                   limits = NULL, chunk = 10000, callback = NULL, phases = TRUE, ...) {
   call <- rlang::caller_env()
+  # (the old `grasp = ` would otherwise reach `grasps` by partial matching)
+  check_renamed_args(names(sys.call()), "generate", own = names(formals(generate.grasp_models)), call = call)
   check_dots_for(list(...), generate.grasp_models, "generate", call = call)
   phases <- check_flag(phases, "phases", call = call)
   check_grasp_models(x, "x", "generate", each = FALSE, call = call)  # (each model: validate_sampler())
-  generate_models(select_models(x, grasp, call), n, seed, warp, limits, chunk, callback, call = call,
+  generate_models(select_models(x, grasps, call), n, seed, warp, limits, chunk, callback, call = call,
                   phases = phases)
 }
 
@@ -204,7 +206,7 @@ generate_models <- function(models, n, seed, warp, limits, chunk, callback, call
 #' @param nsim Number of grasps (per type for a model set).
 #' @param seed Seed of the draws (default 1, as in [generate()]; `NULL`
 #'   uses the current RNG stream); the global RNG is restored afterwards.
-#' @param ... Passed to [generate.grasp_model()] (e.g. `warp`, or `grasp` for
+#' @param ... Passed to [generate.grasp_model()] (e.g. `warp`, or `grasps` for
 #'   a model set).
 #' @return A [grasps()] object.
 #' @importFrom stats simulate
@@ -220,6 +222,8 @@ simulate.grasp_model <- function(object, nsim = 1, seed = 1, ...) {
 #' @rdname simulate.grasp_model
 #' @export
 simulate.grasp_models <- function(object, nsim = 1, seed = 1, ...) {
+  # (through `...` an old `grasp =` would reach `grasps` by partial matching)
+  check_renamed_args(...names(), "simulate", own = names(formals(generate.grasp_models)))
   generate.grasp_models(object, n = nsim, seed = seed, ...)
 }
 

@@ -237,7 +237,7 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, mi
                             residuals = NULL, degenerate_warps = c("constrain", "drop")) {
   call <- rlang::caller_env()
   # (an old `k = 2` would otherwise be taken for `keep_data` by partial matching)
-  check_renamed_args(names(sys.call()), "fit_grasp_model", call = call)
+  check_renamed_args(names(sys.call()), "fit_grasp_model", own = names(formals(fit_grasp_model)), call = call)
   check_grasps(x, call = call)
   dependence <- check_choice(dependence, arg = "dependence", call = call)
   # what NULL means depends on the model (see model_defaults)

@@ -18,7 +18,7 @@
 #' `grasp_model_failed`, with the error's message and class), like a null
 #' model in a fable, instead of stopping the others: `print()` and `summary()`
 #' list it, [generate()], `predict()` and [classify()] skip it (saying so), and asking for
-#' it by name (`generate(ms, grasp = )`) is an error of class
+#' it by name (`generate(ms, grasps = )`) is an error of class
 #' `handmotion_error_model_failed`. A bad argument or recording
 #' (`handmotion_error_bad_input`) stops the call.
 #'
@@ -379,9 +379,9 @@ check_types_present <- function(x, types, arg, call) {
 # Fitted models chosen by grasp name or id, for generate(): every fitted one
 # by default (a warning names the failed types), an error for a failed type
 # asked for by name.
-select_models <- function(x, grasp, call) {
+select_models <- function(x, grasps, call) {
   failed <- failed_types(x)
-  if (is.null(grasp)) {
+  if (is.null(grasps)) {
     if (nrow(failed)) {
       hm_warn(c("Skipping the grasp type{?s} whose model failed: {.val {failed$grasp}}.",
                 i = "See {.code print()} of the model set for the reasons."), "model_failed",
@@ -389,12 +389,12 @@ select_models <- function(x, grasp, call) {
     }
     return(fitted_models(x))
   }
-  keep <- check_grasp_selection(grasp, "grasp", levels = model_set_levels(x), call = call)
-  check_types_present(x, keep, "grasp", call)
+  keep <- check_grasp_selection(grasps, "grasps", levels = model_set_levels(x), call = call)
+  check_types_present(x, keep, "grasps", call)
   bad <- failed[failed$grasp %in% keep, , drop = FALSE]
   if (nrow(bad)) {
     hm_abort(c("The model of {.val {bad$grasp}} could not be fitted, so it cannot generate.",
-               x = "{bad$message}"), "model_failed", argument = "grasp", grasp = bad$grasp, call = call)
+               x = "{bad$message}"), "model_failed", argument = "grasps", grasp = bad$grasp, call = call)
   }
   fitted_models(x)[keep]
 }

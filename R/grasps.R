@@ -559,7 +559,7 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
 #'   index or an id (recycled over the sets).
 #' @param n_frames For `"strip"`: number of frames drawn per recording (at
 #'   least 2).
-#' @param grasp For `"frame_counts"`: grasp types to show (names or ids
+#' @param grasps For `"frame_counts"`: grasp types to show (names or ids
 #'   1-33); all labelled types by default.
 #' @param overlong For `"frame_counts"`: the over-long rule, as in
 #'   [fit_grasp_model()].
@@ -589,11 +589,15 @@ as.data.frame.grasps <- function(x, row.names = NULL, optional = FALSE, ...) {
 autoplot.grasps <- function(object, type = c("curves", "poses", "hand", "strip", "frame_counts"),
                             colour = "grasp", dofs = NULL, max_recordings = 200,
                             compare = NULL, label = NULL, frame = "last", by = "grasp", per_group = 1L,
-                            ncol = NULL, recording = 1L, n_frames = 6L, grasp = NULL,
+                            ncol = NULL, recording = 1L, n_frames = 6L, grasps = NULL,
                             overlong = c(iqr_mult = 3, median_mult = 1.5), binwidth = 1,
                             skeleton = hand_skeleton(), view = "oblique", hand_colour = c("skin", "fingers"),
                             ...) {
   call <- rlang::caller_env()
+  # (the old `grasp = ` would otherwise reach `grasps` by partial matching;
+  # `markers` of forward_kinematics() may come through `...`)
+  check_renamed_args(names(sys.call()), "autoplot.grasps",
+                     own = c(names(formals(autoplot.grasps)), names(formals(forward_kinematics))), call = call)
   type <- check_choice(type, arg = "type", call = rlang::current_env())
   hand_colour <- check_choice(hand_colour, arg = "hand_colour", call = rlang::current_env())
   check_grasps(object, "object", call = call)
@@ -616,7 +620,7 @@ autoplot.grasps <- function(object, type = c("curves", "poses", "hand", "strip",
                               view = view, hand_colour = hand_colour),
     strip = plot_frame_strip(sets(), recording = recording, n_frames = n_frames, skeleton = skeleton,
                              view = view, hand_colour = hand_colour, ..., call = call),
-    frame_counts = plot_frame_counts(object, grasp = grasp, rule = as_overlong_rule(overlong, call = call),
+    frame_counts = plot_frame_counts(object, grasps = grasps, rule = as_overlong_rule(overlong, call = call),
                                      binwidth = binwidth, call = call))
 }
 

@@ -11,10 +11,7 @@ search_markers <- function(reference, n = 6, holdout = "grasp", exhaustive = FAL
                            skeleton = hand_skeleton(), ..., call = rlang::caller_env()) {
   check_grasps(reference, "x", call = call)
   cand <- hand_marker_set()$marker[hand_marker_set()$segment == "hand"]
-  if (!is.numeric(n) || length(n) != 1L || is.na(n) || n < 1 || n > length(cand) || n != round(n)) {
-    hm_abort("{.arg n} must be a whole number from 1 to {length(cand)}, not {.val {format(n)}}.",
-             "bad_markers", argument = "n", call = call)
-  }
+  check_whole(n, "n", max = length(cand), class = "bad_markers", call = call)  # (n kept as given: it is the log's step)
   max_frames <- check_whole(max_frames, "max_frames", call = call)
   seed <- check_seed(seed, call = call)
   if (!holdout %in% names(reference$meta)) {
@@ -207,7 +204,7 @@ compare_marker_sets <- function(reference, test, sets = NULL, search = TRUE, ...
     s <- sets[[nm]]
     if (!is.list(s)) s <- list(markers = s, method = "pca")
     if (is.null(s$method)) s$method <- "pca"
-    model <- fit_handover(reference, s$markers, method = s$method, ...)
+    model <- fit_handover(reference, markers = s$markers, method = s$method, ...)
     rec <- stats::predict(model, test)
     e <- handover_error(test, rec, by = "recording")
     data.frame(set = nm, method = s$method, n_markers = length(s$markers),
@@ -272,7 +269,7 @@ handover_pca_error <- function(reference, data = NULL, call = rlang::caller_env(
 #' @noRd
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:3, objects = 1, trials = 1)
-#' fit <- fit_handover(g, markers = 3)
+#' fit <- fit_handover(g, n_markers = 3)
 #' str(handover_scores(fit, g[1]))
 handover_scores <- function(model, x) {
   call <- rlang::caller_env()

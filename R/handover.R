@@ -42,8 +42,12 @@
 #'
 #' @param reference A [grasps()] object recorded with the full marker set
 #'   (joint angles; markers are computed by [forward_kinematics()]).
-#' @param markers Marker names (see [select_markers()]), or a number `n` to
-#'   use `select_markers(reference, n)`.
+#' @param markers Marker names (see [select_markers()]), a marker set as in
+#'   [forward_kinematics()] and [hand_3d()]; `NULL` (default) for the
+#'   `n_markers` best ranked on `reference` (`select_markers(reference,
+#'   n_markers)`).
+#' @param n_markers With `markers = NULL`: how many markers to select
+#'   (default 6). A count is never given through `markers`.
 #' @param ncomp Number of principal components regressed and back-projected;
 #'   `NULL` for all (one per DoF).
 #' @param neighbours Number of nearest reference frames per regression
@@ -69,7 +73,7 @@
 #' fit
 #' rec <- predict(fit, ref[1])
 #' handover_error(ref[1], rec)
-fit_handover <- function(reference, markers = 6, ncomp = NULL, neighbours = 256, smooth = TRUE,
+fit_handover <- function(reference, markers = NULL, n_markers = 6, ncomp = NULL, neighbours = 256, smooth = TRUE,
                          filter_size = NULL, method = c("pca", "direct"), ridge = 1e-3,
                          eps = 1e-6, skeleton = hand_skeleton(), ...) {
   call <- rlang::caller_env()
@@ -77,13 +81,16 @@ fit_handover <- function(reference, markers = 6, ncomp = NULL, neighbours = 256,
   check_grasps(reference, "reference", call = call)
   check_dots_for(list(...), forward_kinematics, "forward_kinematics", exclude = c("x", "skeleton"),
                  call = call)
+  # (a count through `markers` was the old meaning: say where it went)
+  if (is.numeric(markers)) {
+    hm_abort(c("{.arg markers} must be marker names, not {describe_value(markers)}.",
+               renamed_argument_hints("markers")), "bad_markers", argument = "markers", call = call)
+  }
+  n_hand <- sum(hand_marker_set()$segment == "hand")
+  n_markers <- check_whole(n_markers, "n_markers", max = n_hand, class = "bad_markers", call = call)
   all_markers <- markers_from_angles(reference, skeleton = skeleton, ...)
   ref_all <- do.call(rbind, all_markers)
-  if (is.numeric(markers) && length(markers) == 1L) {
-    n_hand <- sum(hand_marker_set()$segment == "hand")
-    n <- check_whole(markers, "markers", max = n_hand, class = "bad_markers", call = call)
-    markers <- rank_markers(ref_all, call = call)$marker[seq_len(n)]
-  }
+  if (is.null(markers)) markers <- rank_markers(ref_all, call = call)$marker[seq_len(n_markers)]
   check_marker_names(markers, call = call)
   markers <- as.vector(markers)  # a select_markers() result's ranking or search stays there
   hand <- hand_marker_set()$marker[hand_marker_set()$segment == "hand"]

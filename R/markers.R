@@ -369,10 +369,7 @@ select_markers <- function(x = NULL, n = 6, method = c("ranked", "handpicked", "
   call <- rlang::caller_env()
   method <- check_choice(method, arg = "method", call = rlang::current_env())
   n_max <- sum(hand_marker_set()$segment == "hand")
-  if (!is.numeric(n) || length(n) != 1L || is.na(n) || n < 1 || n > n_max || n != round(n)) {
-    hm_abort("{.arg n} must be a whole number from 1 to {n_max}, not {.val {format(n)}}.",
-             "bad_markers", argument = "n", call = call)
-  }
+  check_whole(n, "n", max = n_max, class = "bad_markers", call = call)  # (n kept as given, as search_markers() logs it)
   switch(method,
     handpicked = {
       if (n != 6) {

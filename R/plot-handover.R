@@ -115,7 +115,7 @@ autoplot.handover_comparison <- function(object, ...) {
 #' @method autoplot handover_model
 #' @examples
 #' g <- simulate_grasps(subjects = 2, grasps = 1:3, objects = 1, trials = 1)
-#' fit <- fit_handover(g[-1], markers = 3)
+#' fit <- fit_handover(g[-1], n_markers = 3)
 #' ggplot2::autoplot(fit, g[1], list(`3 markers` = predict(fit, g[1])))
 autoplot.handover_model <- function(object, truth, reconstructions, recording = 1, components = 1:4, ...) {
   model <- object

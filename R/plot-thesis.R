@@ -7,11 +7,11 @@
 
 # Frame counts per grasp type with the over-long recordings marked (the left
 # half of Figure 5.1); autoplot(<grasps>, type = "frame_counts").
-plot_frame_counts <- function(x, grasp = NULL, rule = overlong_rule(), binwidth = 1,
+plot_frame_counts <- function(x, grasps = NULL, rule = overlong_rule(), binwidth = 1,
                               call = rlang::caller_env()) {
   check_grasps(x, call = call)
   binwidth <- check_number(binwidth, "binwidth", min = 0, min_open = TRUE, call = call)
-  types <- thesis_plot_types(x, grasp, call)
+  types <- thesis_plot_types(x, grasps, call)
   parts <- lapply(types, function(type) {
     m <- x$meta[!is.na(x$meta$grasp) & as.character(x$meta$grasp) == type, , drop = FALSE]
     long <- find_overlong(m$n_frames, rule = rule)
@@ -44,11 +44,8 @@ plot_frame_strip <- function(x, recording = 1L, n_frames = 6L, skeleton = hand_s
     hm_abort("{.arg x} must be a {.cls grasps} object or a list of them, not {.obj_type_friendly {x}}.",
              "bad_input", argument = "x", call = call)
   }
-  if (!is.numeric(n_frames) || length(n_frames) != 1L || is.na(n_frames) || n_frames < 2 ||
-      n_frames != round(n_frames)) {
-    hm_abort("{.arg n_frames} must be one whole number of at least 2, not {.val {format(n_frames)}}.",
-             "bad_input", argument = "n_frames", call = call)
-  }
+  # (a strip shows at least its first and last frame)
+  check_whole(n_frames, "n_frames", min = 2, call = call)
   if (is.null(names(sets))) names(sets) <- if (length(sets) == 1L) "" else paste("set", seq_along(sets))
   recording <- rep_len(as.list(recording), length(sets))
   fractions <- seq(0, 1, length.out = n_frames)
@@ -103,19 +100,19 @@ strip_recording_index <- function(g, which, set, call) {
 }
 
 # Grasp types to draw: the requested ones (present in x) or every labelled one.
-thesis_plot_types <- function(x, grasp, call) {
+thesis_plot_types <- function(x, grasps, call) {
   present <- levels(droplevels(x$meta$grasp))
-  if (is.null(grasp)) {
+  if (is.null(grasps)) {
     if (!length(present)) {
       hm_abort("{.arg x} has no labelled recordings.", "no_labels", argument = "x", call = call)
     }
     return(present)
   }
-  types <- resolve_labels(grasp, levels(x$meta$grasp), "grasp", call = call)
+  types <- resolve_labels(grasps, levels(x$meta$grasp), "grasps", call = call)
   absent <- setdiff(types, present)
   if (length(absent)) {
     hm_abort("No recordings of grasp type{?s} {.val {absent}} in {.arg x}.", "too_few_recordings",
-             argument = "grasp", call = call)
+             argument = "grasps", call = call)
   }
   types
 }

@@ -45,6 +45,11 @@
 #' | class `grasp_classifier` of the discriminant (`fit_grasp_classifier(method = "discriminant")`) | `grasp_discriminant`; `grasp_classifier` is now the parent class of every fitted classifier ([summary.grasp_classifier()]); a discriminant saved by an earlier version is refused with a classed error saying to refit it |
 #' | columns `metric`, `estimate` of `summary()` of a confusion matrix; `metric` of an evaluation's | `.metric`, `.estimate` (yardstick's names) |
 #' | column `class` of `summary()` of a `fit_grasp_classifier()` or `fit_grasp_recognizer()` result | `grasp`, after `grasp_id`, as in every classifier's summary |
+#' | argument `grasp` of `generate()` of a model set and of `autoplot(x, type = "frame_counts")` (types to select) | `grasps`, as in [fit_grasp_models()], [simulate_grasps()], [reproduce_thesis()] (`fit_grasp_model(grasp = )`, the one type's label, stays) |
+#' | argument `overlong` of `simulate_grasps()` (a flag) | `plant_overlong`; `overlong` is the over-long rule of [fit_grasp_model()] and [evaluate_generation()] |
+#' | `fit_handover(x, markers = n)` (a count) | `fit_handover(x, n_markers = n)`; `markers` is a marker set, as in [forward_kinematics()] and [hand_3d()] |
+#' | argument `loso_folds` of `reproduce_thesis()` | `folds`; `folds = NULL` is one fold per subject in every verb that has it |
+#' | `evaluate_generation(recordings_set, folds = )` (the first argument switching to folds) | `evaluate_generation(recordings = , folds = )`; `models` takes model sets only |
 #' | `rank_markers(x, weighting = )` | `attr(`[select_markers()]`(x, n, weighting = ), "ranking")`; `select_markers(x, n)` takes the top `n` |
 #' | `compare_marker_sets(reference, test, sets = )` | [handover_error()]`(test, by = "markers", reference = reference, sets = )` |
 #' | `reconstruct(model, query)` | `predict(model, query)` ([predict.handover_model()]) |

@@ -85,7 +85,7 @@ report_step_costs <- function(settings, workers = 1L, pace = NULL) {
   S <- settings$subjects
   T <- length(settings$grasps)
   N <- S * T * 9                      # simulate_grasps(): 3 objects x 3 trials
-  F <- if (is.null(settings$loso_folds)) S else settings$loso_folds
+  F <- if (is.null(settings$folds)) S else settings$folds
   units <- c(const = 1, N = N / 8910, T = T / 33, NT = N * T / (8910 * 33),
              NF = N * (F - 1) / (8910 * 29))
   # (the fixed part does not shrink with the design: see `fixed`)
@@ -155,7 +155,7 @@ report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
       if (is.function(trace)) trace(now() - start, sum(cost), "begin")
       say(sprintf("handmotion: reproducing the thesis' chapter 5 (%d subjects x %d grasp types, %s) on %d worker%s",
                   settings$subjects, length(settings$grasps),
-                  if (is.null(settings$loso_folds)) "leave-one-subject-out" else paste(settings$loso_folds, "folds"),
+                  if (is.null(settings$folds)) "leave-one-subject-out" else paste(settings$folds, "folds"),
                   workers, if (workers == 1L) "" else "s"))
       say(sprintf("  (about %s by the design at this machine's pace%s; the estimate follows the measured pace)",
                   clock_text(sum(cost)), if (is.null(p)) "" else paste0(": ", pace_text(p))))

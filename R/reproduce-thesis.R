@@ -33,7 +33,7 @@
 #'
 #' The held-out evaluations refit every model once per fold. By default that
 #' is the full leave-one-subject-out (30 refits of the 33 models per
-#' classifier); `loso_folds = k` splits the subjects at random into `k`
+#' classifier); `folds = k` splits the subjects at random into `k`
 #' groups instead, for a quicker look.
 #'
 #' **Time.** On one R process the full design needs about five minutes of
@@ -72,14 +72,17 @@
 #'   its `tables/` and `figures/`; created if needed.
 #' @param subjects Number of simulated subjects (30 as in HUST).
 #' @param seed Seed of the simulation, the fits and the folds.
-#' @param loso_folds `NULL` (default) for leave-one-subject-out, or a number
-#'   of groups of subjects for a quicker held-out evaluation.
+#' @param folds `NULL` (default) for leave-one-subject-out, or a number
+#'   of groups of subjects for a quicker held-out evaluation (as `folds` of
+#'   [evaluate_loso()]).
 #' @param grasps Grasp types to include (Feix ids or names), all 33 by default.
 #'   At least two are needed for classification.
 #' @param overwrite Replace an existing report? As every writer of the
 #'   package, by default an existing `reproduce-thesis.html` (or tables and
 #'   figures of an earlier report) in `output_dir` is an error of class
 #'   `handmotion_error_file_exists`, raised before anything is computed.
+#' @param ... Unused: an argument of an earlier version (`loso_folds`) is an
+#'   error naming its new name.
 #' @param quiet Render without knitr's progress output.
 #' @param progress Print a line per step with the time left (see
 #'   **Progress**).
@@ -92,14 +95,15 @@
 #' # shows the report of a larger one)
 #' if (rmarkdown::pandoc_available()) {
 #'   out <- reproduce_thesis(tempfile("report"), subjects = 2, grasps = c(17, 25),
-#'                           loso_folds = 2)
+#'                           folds = 2)
 #'   list.files(dirname(out), recursive = TRUE)
 #' }
 #' }
-reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, loso_folds = NULL,
-                             grasps = 1:33, quiet = TRUE, progress = TRUE, overwrite = FALSE) {
+reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, folds = NULL,
+                             grasps = 1:33, quiet = TRUE, progress = TRUE, overwrite = FALSE, ...) {
   call <- rlang::caller_env()
-  settings <- check_report_settings(list(subjects = subjects, seed = seed, loso_folds = loso_folds,
+  check_no_dots(list(...), "reproduce_thesis", call = call)
+  settings <- check_report_settings(list(subjects = subjects, seed = seed, folds = folds,
                                          grasps = grasps), call)
   check_flag(progress, "progress", call = call)
   if (!is.character(output_dir) || length(output_dir) != 1L || is.na(output_dir) || !nzchar(output_dir)) {
@@ -135,7 +139,7 @@ reproduce_thesis <- function(output_dir = "output", subjects = 30, seed = 1, los
   input <- file.path(work, "reproduce-thesis.Rmd")
   file.copy(template, input)
   params <- list(subjects = settings$subjects, seed = settings$seed,
-                 loso_folds = if (is.null(settings$loso_folds)) 0L else settings$loso_folds,
+                 folds = if (is.null(settings$folds)) 0L else settings$folds,
                  grasps = settings$grasps, output_dir = output_dir)
   show <- progress && progress_wanted()
   bar <- report_progress(show, trace = report_estimate_signal)
@@ -174,19 +178,19 @@ report_env <- function() new.env(parent = asNamespace("handmotion"))
 
 # The report's settings: from render() params (reproduce_thesis()) or, when
 # knitted without params (the vignette), from environment variables, else the
-# full default design. `loso_folds` 0 / "loso" means leave-one-subject-out.
+# full default design. `folds` 0 / "loso" means leave-one-subject-out.
 report_settings <- function(params = NULL) {
   env <- function(name) {
     v <- Sys.getenv(name)
     if (nzchar(v)) v else NULL
   }
-  s <- list(subjects = 30L, seed = 1L, loso_folds = NULL, grasps = 1:33, output_dir = NULL)
+  s <- list(subjects = 30L, seed = 1L, folds = NULL, grasps = 1:33, output_dir = NULL)
   if (is.null(params)) {
     if (!is.null(v <- env("HANDMOTION_REPORT_SUBJECTS"))) s$subjects <- as.numeric(v)
     if (!is.null(v <- env("HANDMOTION_REPORT_SEED"))) s$seed <- as.numeric(v)
     if (!is.null(v <- env("HANDMOTION_REPORT_GRASPS"))) s$grasps <- as.numeric(strsplit(v, "[, ]+")[[1]])
     if (!is.null(v <- env("HANDMOTION_REPORT_FOLDS"))) {
-      s$loso_folds <- if (tolower(v) %in% c("loso", "0", "null")) 0L else as.numeric(v)
+      s$folds <- if (tolower(v) %in% c("loso", "0", "null")) 0L else as.numeric(v)
     }
   } else {
     params <- as.list(params)
@@ -194,35 +198,26 @@ report_settings <- function(params = NULL) {
       if (!is.null(params[[nm]])) s[[nm]] <- params[[nm]]
     }
   }
-  if (identical(s$loso_folds, 0L) || identical(s$loso_folds, 0) || isTRUE(is.na(s$loso_folds))) {
-    s$loso_folds <- NULL
+  if (identical(s$folds, 0L) || identical(s$folds, 0) || isTRUE(is.na(s$folds))) {
+    s$folds <- NULL
   }
   out_dir <- s$output_dir
-  s <- check_report_settings(s[c("subjects", "seed", "loso_folds", "grasps")], rlang::caller_env())
+  s <- check_report_settings(s[c("subjects", "seed", "folds", "grasps")], rlang::caller_env())
   s$output_dir <- if (is.character(out_dir) && length(out_dir) == 1L && nzchar(out_dir)) out_dir else NULL
   s
 }
 
 check_report_settings <- function(s, call) {
-  whole <- function(x) is.numeric(x) && length(x) == 1L && is.finite(x) && x == round(x)
-  if (!whole(s$subjects) || s$subjects < 2) {
-    hm_abort("{.arg subjects} must be a whole number of at least 2 (the held-out evaluation needs two), not {.val {format(s$subjects)}}.",
-             "bad_input", argument = "subjects", call = call)
-  }
-  if (!whole(s$seed)) {
-    hm_abort("{.arg seed} must be one whole number, not {.val {format(s$seed)}}.", "bad_input",
-             argument = "seed", call = call)
-  }
-  if (!is.null(s$loso_folds) && (!whole(s$loso_folds) || s$loso_folds < 2 || s$loso_folds > s$subjects)) {
-    hm_abort("{.arg loso_folds} must be {.code NULL} (leave-one-subject-out) or a whole number from 2 to {.arg subjects} ({s$subjects}), not {.val {format(s$loso_folds)}}.",
-             "bad_input", argument = "loso_folds", call = call)
-  }
+  # (the held-out evaluation needs two subjects)
+  s$subjects <- check_whole(s$subjects, "subjects", min = 2, call = call)
+  s$seed <- check_whole(s$seed, "seed", min = -.Machine$integer.max, max = .Machine$integer.max, call = call)
+  # NULL: leave-one-subject-out, as `folds` of evaluate_loso()
+  s$folds <- check_whole(s$folds, "folds", min = 2, max = s$subjects, allow_null = TRUE, call = call)
   ids <- as.integer(as_feix_grasp(s$grasps, call = call))
   if (length(unique(ids)) < 2L) {
     hm_abort("{.arg grasps} must name at least two grasp types: classification needs two.",
              "bad_input", argument = "grasps", call = call)
   }
-  list(subjects = as.integer(s$subjects), seed = as.integer(s$seed),
-       loso_folds = if (is.null(s$loso_folds)) NULL else as.integer(s$loso_folds),
+  list(subjects = as.integer(s$subjects), seed = as.integer(s$seed), folds = s$folds,
        grasps = sort(unique(ids)))
 }

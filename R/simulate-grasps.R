@@ -33,7 +33,7 @@
 #' rescaled and rounded by largest remainders so that their mean is *exactly*
 #' the type's target (parameter `target_frames`, at 50 Hz; at other
 #' rates the target is scaled by `rate / 50` and the total rounded).
-#' With `overlong = TRUE` about `overlong_fraction` of each type's recordings
+#' With `plant_overlong = TRUE` about `overlong_fraction` of each type's recordings
 #' (10 of 270 by default) are 2-3 times the type's median length: a long
 #' hesitation before the reach or a long final hold. Far beyond the usual
 #' spread, they are caught by a fence such as
@@ -61,7 +61,11 @@
 #' @param trials Number of trials per subject and object.
 #' @param rate Sampling rate in Hz (at least 10).
 #' @param seed Random seed (a whole number).
-#' @param overlong Plant the over-long recordings (`TRUE`) or not.
+#' @param plant_overlong Plant the over-long recordings (`TRUE`) or not
+#'   (a flag; the rule that finds over-long recordings is the `overlong`
+#'   argument of [fit_grasp_model()]).
+#' @param ... Unused: an argument of an earlier version (`overlong`) is an
+#'   error naming its new name.
 #' @param params `NULL` for the calibrated defaults, or a named list of
 #'   simulator parameters to replace (see Simulator parameters).
 #' @param glove `NULL` (the HUST joint angles in degrees) or a
@@ -101,9 +105,10 @@
 #'                        rest = 1, hold = 1, stuck = "thumb_cross", seed = 1)
 #' raw
 simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 3, rate = 50, seed = 1,
-                            overlong = TRUE, params = NULL, glove = NULL, rest = 0, hold = 0,
-                            stuck = NULL, session_sd = 20) {
+                            plant_overlong = TRUE, params = NULL, glove = NULL, rest = 0, hold = 0,
+                            stuck = NULL, session_sd = 20, ...) {
   call <- rlang::caller_env()
+  check_no_dots(list(...), "simulate_grasps", call = call)
   subjects <- check_whole(subjects, "subjects", max = 1e5, call = call)
   objects <- check_whole(objects, "objects", max = 1e5, call = call)
   trials <- check_whole(trials, "trials", max = 1e5, call = call)
@@ -114,15 +119,9 @@ simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 
                i = "Shorter recordings cannot hold the rest, opening, closing and hold phases."),
              "bad_input", argument = "rate", call = call)
   }
-  if (!is.numeric(seed) || length(seed) != 1L || !is.finite(seed) || seed != round(seed) ||
-      abs(seed) >= .Machine$integer.max) {
-    hm_abort("{.arg seed} must be one whole number, not {.val {format(seed)}}.", "bad_input",
-             argument = "seed", call = call)
-  }
-  if (!is.logical(overlong) || length(overlong) != 1L || is.na(overlong)) {
-    hm_abort("{.arg overlong} must be {.code TRUE} or {.code FALSE}.", "bad_input",
-             argument = "overlong", call = call)
-  }
+  # (a simulation is always seeded: NULL is not the current stream here)
+  seed <- check_whole(seed, "seed", min = -.Machine$integer.max, max = .Machine$integer.max, call = call)
+  plant_overlong <- check_flag(plant_overlong, "plant_overlong", call = call)
   if (!is.null(params) && (!is.list(params) || (length(params) && is.null(names(params))))) {
     hm_abort("{.arg params} must be a named list of simulator parameters, not {.obj_type_friendly {params}}.",
              "bad_params", argument = "params", call = call)
@@ -138,7 +137,7 @@ simulate_grasps <- function(subjects = 30, grasps = 1:33, objects = 3, trials = 
   subj <- sim_subject_draws(streams[34L], subjects, ncol(params$loadings))
   design <- sim_design(subjects, objects, trials, params)
   parts <- lapply(types, function(g) {
-    with_sim_seed(streams[g], sim_one_type(g, design, subj, params, rate, overlong))
+    with_sim_seed(streams[g], sim_one_type(g, design, subj, params, rate, plant_overlong))
   })
   recs <- unlist(lapply(parts, `[[`, "recordings"), recursive = FALSE)
   meta <- do.call(rbind, lapply(parts, `[[`, "meta"))

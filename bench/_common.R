@@ -123,7 +123,7 @@ with_r_em <- function(expr) {
 wide_glove <- function(types, trials) {
   objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)[seq_len(types)]
   g <- simulate_grasps(subjects = 1, grasps = objects, objects = 1, trials = trials, rate = 100,
-                       glove = "resistive", rest = 1.4, hold = 1.6, overlong = FALSE, seed = 3)
+                       glove = "resistive", rest = 1.4, hold = 1.6, plant_overlong = FALSE, seed = 3)
   set.seed(4)
   recs <- lapply(g$recordings, function(x) {
     extra <- (x[, 1:8] + x[, 2:9]) / 2

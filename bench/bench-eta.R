@@ -11,7 +11,7 @@
 # subjects, 3 types, 2 folds; seconds: too short to say much)
 source("bench/_common.R")
 
-design <- if (bench_quick) list(subjects = 4, grasps = c(9, 17, 22), loso_folds = 2) else list()
+design <- if (bench_quick) list(subjects = 4, grasps = c(9, 17, 22), folds = 2) else list()
 if (future::supportsMulticore()) future::plan(future::multicore, workers = 2)
 log <- data.frame(t = numeric(), left = numeric())
 events <- data.frame(t = numeric(), left = numeric(), event = character(), cpu = numeric())
@@ -35,7 +35,7 @@ lines <- utils::capture.output(html <- withCallingHandlers(do.call(reproduce_the
 cpu <- proc.time() - cpu0
 load1 <- load_avg()
 # each step's time against the cost model (on 2 workers) it started from
-settings <- list(subjects = design$subjects %||% 30, grasps = design$grasps %||% 1:33, loso_folds = design$loso_folds)
+settings <- list(subjects = design$subjects %||% 30, grasps = design$grasps %||% 1:33, folds = design$folds)
 model <- report_step_costs(settings, workers = future::nbrOfWorkers())
 tim <- utils::read.csv(file.path(out, "tables", "timings.csv"))
 unlink(out, recursive = TRUE)

@@ -14,7 +14,7 @@ cat(sprintf("%s; load average %s on %d cores\n\n", bench_build, load_avg(), para
 objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)
 raw <- simulate_grasps(subjects = 1, grasps = objects[seq_len(bq(6, 2))], objects = 1, trials = bq(28, 6),
                        rate = 100, glove = "resistive", rest = 1, hold = 1, stuck = "thumb_cross",
-                       overlong = FALSE, seed = 3)
+                       plant_overlong = FALSE, seed = 3)
 time_it <- function(label, expr, target = NA) {
   t <- system.time(value <- force(expr))
   cat(sprintf("%-44s %6.2f s elapsed, %6.2f s CPU%s\n", label, t[["elapsed"]],

@@ -6,7 +6,7 @@
 source("bench/_common.R")
 
 g <- simulate_grasps(subjects = 10, grasps = bq(1:33, 1:3), objects = 1, trials = 1, seed = 11,
-                     overlong = FALSE)
+                     plant_overlong = FALSE)
 subj <- unique(g$meta$subject)
 ref <- g[g$meta$subject %in% subj[1:8]]
 test <- g[!g$meta$subject %in% subj[1:8]]
@@ -15,9 +15,9 @@ n_q <- sum(test$meta$n_frames)
 cat(sprintf("reference: %d frames in %d recordings; query: %d frames in %d recordings (unseen subjects)\n",
             n_ref, length(ref), n_q, length(test)))
 
-t_fit <- system.time(fit6 <- fit_handover(ref, markers = 6))[["elapsed"]]
+t_fit <- system.time(fit6 <- fit_handover(ref, n_markers = 6))[["elapsed"]]
 cat(sprintf("fit_handover (6 markers, incl. ranking and forward kinematics of the reference): %.2f s elapsed\n", t_fit))
-fit3 <- fit_handover(ref, markers = 3)
+fit3 <- fit_handover(ref, n_markers = 3)
 mk6 <- markers_from_angles(test, markers = fit6$markers)
 mk3 <- markers_from_angles(test, markers = fit3$markers)
 

@@ -176,7 +176,7 @@ for (k in seq_len(nrow(invariance))) {
 objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)
 raw <- simulate_grasps(subjects = 1, grasps = objects[seq_len(bq(6, 3))], objects = 1, trials = bq(28, 8),
                        rate = 100, glove = "resistive", rest = 1, hold = 1, stuck = "thumb_cross",
-                       overlong = FALSE, seed = 3)
+                       plant_overlong = FALSE, seed = 3)
 cat(sprintf("Simulated raw-count glove: %d recordings of %d channels, 5 folds by recording\n", length(raw), length(raw$dofs)))
 for (m in setdiff(names(methods), "fpca_residual")) {
   r <- timed(evaluate_loso(raw, method = m, in_sample = FALSE))

@@ -62,7 +62,7 @@ for (b in names(blocks)) {
   unlockBinding("generation_features", ns)
   assign("generation_features", features, ns)
   for (s in seeds) {
-    t <- system.time(ev <- suppressMessages(evaluate_generation(g, split = "subject", folds = 2, reps = reps,
+    t <- system.time(ev <- suppressMessages(evaluate_generation(recordings = g, split = "subject", folds = 2, reps = reps,
                                                                 seed = s)))
     ov <- ev[ev$grasp == "overall" & ev$metric == "mmd", ]
     rows[[length(rows) + 1L]] <- data.frame(block = b, seed = s, model = ov$model, ratio = ov$ratio)

@@ -78,7 +78,7 @@ report <- function(label, ev) {
 fit <- list(thesis = list(), copula = list(dependence = "copula"), kernel = list(dependence = "kernel"))
 cat(sprintf("flexglove: %d recordings, %d types, participants %s\n", length(flex),
             length(unique(flex$meta$grasp)), paste(unique(flex$meta$subject), collapse = ", ")))
-t <- system.time(ev <- evaluate_generation(flex, split = "subject", folds = 2, reps = reps, fit = fit))
+t <- system.time(ev <- evaluate_generation(recordings = flex, split = "subject", folds = 2, reps = reps, fit = fit))
 cat(sprintf("evaluate_generation(), participant folds, %d repetitions: %.1f s elapsed, %.1f s CPU\n",
             reps, t[["elapsed"]], cpu_of(t)))
 report("flexglove", ev)
@@ -93,9 +93,9 @@ for (nm in colnames(rc)) {
 objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)
 raw <- simulate_grasps(subjects = 1, grasps = objects[seq_len(bq(6, 2))], objects = 1, trials = bq(28, 8),
                        rate = 100, glove = "resistive", rest = 1, hold = 1, stuck = "thumb_cross",
-                       overlong = FALSE, seed = 3)
+                       plant_overlong = FALSE, seed = 3)
 cat(sprintf("\nsimulated raw-count glove: %d recordings of %d channels, 5 folds by recording\n",
             length(raw), length(raw$dofs)))
-t <- system.time(ev2 <- suppressWarnings(evaluate_generation(raw, folds = 5, reps = reps, fit = fit)))
+t <- system.time(ev2 <- suppressWarnings(evaluate_generation(recordings = raw, folds = 5, reps = reps, fit = fit)))
 cat(sprintf("evaluate_generation(): %.1f s elapsed\n", t[["elapsed"]]))
 report("simulated glove", ev2)

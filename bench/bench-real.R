@@ -130,7 +130,7 @@ report("LOPO accuracy, best classifier", best, "fraction", published = 0.80, goa
 report("  published CNN-BiLSTM (window-level, optimistic)", NA, "fraction", published = 0.695)
 
 # --- generation: generated against real grasps, by participant folds ------------
-gen <- timed(evaluate_generation(g, split = "subject", folds = 2, reps = bq(5, 2)))
+gen <- timed(evaluate_generation(recordings = g, split = "subject", folds = 2, reps = bq(5, 2)))
 ov <- gen$value[gen$value$grasp == "overall" & gen$value$metric == "mmd", ]
 for (k in seq_len(nrow(ov))) {
   report(sprintf("generated / real-vs-real MMD, %s", ov$model[k]), ov$ratio[k], "x",
@@ -146,7 +146,7 @@ for (method in c("fpca", "discriminant")) {
   report(sprintf("wide glove (simulated), 5 folds by recording, %s", method), ev$accuracy[["held_out"]],
          "fraction", goal = if (method == "fpca") 0.90 else 0.98)
 }
-wg <- evaluate_generation(wide, folds = 5, reps = bq(3, 1))
+wg <- evaluate_generation(recordings = wide, folds = 5, reps = bq(3, 1))
 for (k in which(wg$grasp == "overall" & wg$metric == "mmd")) {
   report(sprintf("wide glove (simulated), generated / real MMD, %s", wg$model[k]), wg$ratio[k], "x",
          goal = 1.5, better = "lower")

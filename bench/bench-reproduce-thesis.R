@@ -7,7 +7,7 @@
 source("bench/_common.R")
 # reproduce_thesis()'s arguments (the environment variables are read only by
 # the vignette, so setting them here ran the full design in quick mode)
-design <- if (bench_quick) list(subjects = 4, grasps = c(9, 17, 22), loso_folds = 2) else list()
+design <- if (bench_quick) list(subjects = 4, grasps = c(9, 17, 22), folds = 2) else list()
 args <- commandArgs(trailingOnly = TRUE)
 which <- if (length(args)) args[1] else if (bench_quick) "sequential" else "both"
 

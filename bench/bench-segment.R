@@ -75,7 +75,7 @@ if (dir.exists(fg)) {
 # --- a simulated wide glove with noise-only channels -------------------------
 objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)
 raw <- simulate_grasps(subjects = 1, grasps = objects[seq_len(bq(6, 2))], objects = 1, trials = bq(28, 6),
-                       rate = 100, glove = "resistive", rest = 1.4, hold = 1, overlong = FALSE, seed = 3)
+                       rate = 100, glove = "resistive", rest = 1.4, hold = 1, plant_overlong = FALSE, seed = 3)
 # the planted channels of the tests, with four pressure pads that rise at
 # contact, 0.1 s before the motion ends, and a spike every 50 frames
 planted <- withr::with_seed(40, Map(function(r, e) {

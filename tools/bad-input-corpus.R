@@ -46,7 +46,7 @@ corpus_fixtures <- function() {
     wf <- suppressWarnings(fit_grasp_classifier(g, method = "weighted_fpca"))
     lf <- suppressWarnings(fit_grasp_classifier(g, method = "last_frame"))
     rec <- suppressWarnings(fit_grasp_recognizer(g))
-    ho <- suppressWarnings(fit_handover(g, markers = 3))
+    ho <- suppressWarnings(fit_handover(g, n_markers = 3))
     q <- forward_kinematics(g[1], markers = ho$markers)[[1]]
     mk <- do.call(rbind, forward_kinematics(g[1:2], markers = TRUE))
     ang <- g$recordings[[1]]
@@ -117,7 +117,7 @@ corpus_cases <- function(e) {
     "classify" = quote(classify(ms, BAD)),
     "predict classifier" = quote(predict(clf, BAD)),
     "project" = quote(project(m, BAD)),
-    "fit_handover" = quote(fit_handover(BAD, markers = 3)),
+    "fit_handover" = quote(fit_handover(BAD, n_markers = 3)),
     "forward_kinematics" = quote(forward_kinematics(BAD)),
     "write_hust" = quote(write_hust(BAD, tempfile("w"))),
     "write_bvh" = quote(write_bvh(BAD, tempfile(fileext = ".bvh"))),
@@ -376,7 +376,7 @@ corpus_cases <- function(e) {
   }
   add("index", "fit_grasp_model: grasp = 2.5", quote(fit_grasp_model(g, grasp = 2.5)), "grasp")
   add("index", "fit_grasp_model: grasp = 99", quote(fit_grasp_model(g, grasp = 99)), c("grasp", "99"))
-  add("index", "generate: grasp = 2.5", quote(generate(ms, grasp = 2.5, n = 1)), "grasp")
+  add("index", "generate: grasps = 2.5", quote(generate(ms, grasps = 2.5, n = 1)), "grasps")
   add("index", "fit_grasp_models: grasps = -1", quote(fit_grasp_models(g, grasps = -1)), "grasps")
 
   # --- regular expressions and separators ------------------------------------
@@ -443,8 +443,8 @@ corpus_cases <- function(e) {
     "trim_motion: low" = list(quote(trim_motion(g, low = BAD)), "low"),
     "fit_grasp_recognizer: at" = list(quote(fit_grasp_recognizer(g, at = BAD)), "at"),
     "fit_grasp_recognizer: horizon" = list(quote(fit_grasp_recognizer(g, horizon = BAD)), "horizon"),
-    "fit_handover: ncomp" = list(quote(fit_handover(g, markers = 3, ncomp = BAD)), "ncomp"),
-    "fit_handover: filter_size" = list(quote(fit_handover(g, markers = 3, filter_size = BAD)), "filter_size"),
+    "fit_handover: ncomp" = list(quote(fit_handover(g, n_markers = 3, ncomp = BAD)), "ncomp"),
+    "fit_handover: filter_size" = list(quote(fit_handover(g, n_markers = 3, filter_size = BAD)), "filter_size"),
     "hand_3d: speed" = list(quote(hand_3d(g[1], speed = BAD)), "speed"),
     "hand_3d: width" = list(quote(hand_3d(g[1], width = BAD)), "width"),
     "write_hand_animation: max_frames" = list(quote(write_hand_animation(g[1], tempfile(fileext = ".html"), max_frames = BAD)), "max_frames"),

@@ -28,7 +28,7 @@ test_that("a grasps set edited after construction is refused where it is used, n
   for (verb in list(function(x) fit_grasp_model(x, grasp = 1), function(x) fit_grasp_models(x),
                     function(x) fit_grasp_classifier(x), function(x) write_hust(x, withr::local_tempdir()),
                     function(x) forward_kinematics(x), function(x) summary(x), function(x) as.data.frame(x),
-                    function(x) fit_handover(x, markers = 3), function(x) project(f$m, x))) {
+                    function(x) fit_handover(x, n_markers = 3), function(x) project(f$m, x))) {
     cnd <- expect_error(verb(nan), id, fixed = TRUE, class = "handmotion_error_bad_recording")
     expect_identical(cnd$recording, id)
   }
@@ -106,7 +106,7 @@ test_that("a fitted model whose parts were edited is refused by every verb, nami
   clf$fit$coef[1, 1] <- Inf
   cnd <- expect_error(classify(clf, f$g), "models$fit$coef", fixed = TRUE, class = "handmotion_error_bad_model")
   expect_identical(cnd$argument, "models")
-  ho <- fit_handover(f$g, markers = 3)
+  ho <- fit_handover(f$g, n_markers = 3)
   q <- forward_kinematics(f$g[1], markers = ho$markers)[[1]]
   ho$rotation[1, 1] <- NaN
   expect_error(predict(ho, q), "object$rotation", fixed = TRUE, class = "handmotion_error_bad_model")

@@ -18,7 +18,7 @@ bad_input_fixtures <- function(dir) {
     m <- suppressWarnings(fit_grasp_model(g, grasp = 1, seed = 1))
     ms <- suppressWarnings(fit_grasp_models(g, seed = 1))
     clf <- fit_grasp_classifier(g)
-    ho <- fit_handover(g, markers = 3, neighbours = 40)
+    ho <- fit_handover(g, n_markers = 3, neighbours = 40)
     q <- forward_kinematics(g[1], markers = ho$markers)[[1]]
     mk <- do.call(rbind, forward_kinematics(g[1:2], markers = TRUE))
     ang <- matrix(10, 3, 16, dimnames = list(NULL, hust_dofs$name))
@@ -144,21 +144,21 @@ bad_input_cases <- function() {
     list("evaluate_generation: zero reps", quote(evaluate_generation(ms, g, g, reps = 0)), "bad_input"),
     list("select_markers, search: negative max_frames", quote(select_markers(g, n = 2, method = "search", max_frames = -5)), "bad_input"),
     list("select_markers, search: unknown holdout column", quote(select_markers(g, n = 2, method = "search", holdout = "colour")), "bad_input"),
-    list("fit_handover: zero ridge", quote(fit_handover(g, markers = 3, ridge = 0)), "bad_input"),
+    list("fit_handover: zero ridge", quote(fit_handover(g, n_markers = 3, ridge = 0)), "bad_input"),
     list("fit_handover: unknown marker", quote(fit_handover(g, markers = c("index_tip", "foo"))), "bad_markers"),
-    list("fit_handover: more markers than there are", quote(fit_handover(g, markers = 14)), "bad_markers"),
-    list("fit_handover: too few neighbours", quote(fit_handover(g, markers = 3, neighbours = 2)), "bad_input"),
-    list("fit_handover: NA smooth", quote(fit_handover(g, markers = 3, smooth = NA)), "bad_input"),
-    list("fit_handover: unknown argument", quote(fit_handover(g, markers = 3, foo = 2)), "bad_input"),
-    list("fit_handover: three frames", quote(fit_handover(grasps(list(g$recordings[[1]][1:3, ]), dofs = g$dofs), markers = 3)), "reference_too_small"),
+    list("fit_handover: more markers than there are", quote(fit_handover(g, n_markers = 14)), "bad_markers"),
+    list("fit_handover: too few neighbours", quote(fit_handover(g, n_markers = 3, neighbours = 2)), "bad_input"),
+    list("fit_handover: NA smooth", quote(fit_handover(g, n_markers = 3, smooth = NA)), "bad_input"),
+    list("fit_handover: unknown argument", quote(fit_handover(g, n_markers = 3, foo = 2)), "bad_input"),
+    list("fit_handover: three frames", quote(fit_handover(grasps(list(g$recordings[[1]][1:3, ]), dofs = g$dofs), n_markers = 3)), "reference_too_small"),
     # --- generate
     list("generate: a billion grasps", quote(generate(m, n = 1e9)), "bad_input"),
     list("generate: NaN n", quote(generate(m, n = NaN)), "bad_input"),
     list("generate: factor n", quote(generate(m, n = factor(2))), "bad_input"),
     list("generate: infinite seed", quote(generate(m, n = 2, seed = Inf)), "bad_input"),
     list("generate: two seeds", quote(generate(m, n = 2, seed = c(1, 2))), "bad_input"),
-    list("generate: unknown type", quote(generate(ms, grasp = "No Such Grasp", n = 1)), "unknown_grasp"),
-    list("generate: no type", quote(generate(ms, grasp = character(0), n = 1)), "bad_input"),
+    list("generate: unknown type", quote(generate(ms, grasps = "No Such Grasp", n = 1)), "unknown_grasp"),
+    list("generate: no type", quote(generate(ms, grasps = character(0), n = 1)), "bad_input"),
     list("generate: a copula model without its copula", quote(generate({x <- suppressWarnings(fit_grasp_model(g, grasp = 1, seed = 1, dependence = "copula")); x$dependence$copula <- NULL; x}, n = 2)), "bad_model"),
     list("generate: negative chunk", quote(generate(m, n = 2, chunk = -1)), "bad_input"),
     list("generate: a callback that is not a function", quote(generate(m, n = 2, callback = "f")), "bad_input"),

@@ -90,10 +90,10 @@ test_that("a file named raw that holds radians is refused", {
 })
 
 test_that("hand-over refuses a non-positive ridge or eps", {
-  g <- simulate_grasps(subjects = 2, grasps = 1:2, objects = 1, trials = 1, seed = 1, overlong = FALSE)
+  g <- simulate_grasps(subjects = 2, grasps = 1:2, objects = 1, trials = 1, seed = 1, plant_overlong = FALSE)
   for (r in list(0, -1, NA, "a")) {
-    expect_error(fit_handover(g, markers = 3, ridge = r), class = "handmotion_error_bad_input")
-    expect_error(fit_handover(g, markers = 3, eps = r), class = "handmotion_error_bad_input")
+    expect_error(fit_handover(g, n_markers = 3, ridge = r), class = "handmotion_error_bad_input")
+    expect_error(fit_handover(g, n_markers = 3, eps = r), class = "handmotion_error_bad_input")
   }
 })
 

@@ -19,7 +19,7 @@ test_that("posture_spread pulls the final postures towards their mean", {
   ph <- p1
   ph$posture_spread[] <- 0.5
   sim <- function(p) last_frames_of(simulate_grasps(subjects = 1, grasps = c(3, 14, 22), objects = 1,
-                                                    trials = 1, overlong = FALSE, params = p))
+                                                    trials = 1, plant_overlong = FALSE, params = p))
   lf1 <- sim(p1); lf0 <- sim(p0); lfh <- sim(ph)
   # spread 0: every type ends in the same posture (the mean of all 33)
   expect_lt(max(abs(sweep(lf0, 2, lf0[1, ]))), 1e-9)
@@ -34,7 +34,7 @@ test_that("factor_scale multiplies the subject factors of one type only", {
   p <- quiet_knob_params(loadings = L, factor_scale = per_type(1), posture_spread = per_type(1),
                          grasp_variability = 1)
   p$factor_scale[3] <- 2
-  g <- simulate_grasps(subjects = 20, grasps = c(3, 14), objects = 1, trials = 1, overlong = FALSE,
+  g <- simulate_grasps(subjects = 20, grasps = c(3, 14), objects = 1, trials = 1, plant_overlong = FALSE,
                        params = p, seed = 3)
   lf <- last_frames_of(g)[, rownames(L)]
   is3 <- g$meta$grasp == "Medium Wrap"
@@ -51,7 +51,7 @@ test_that("grasp_variability scales one type's variation of the final posture, n
                            posture_spread = per_type(1), grasp_variability = 1,
                            subject_dof_sd = glove_sd, subject_type_sd = grasp_sd)
     p$grasp_variability[3] <- v3
-    simulate_grasps(subjects = 20, grasps = c(3, 14), objects = 1, trials = 1, overlong = FALSE,
+    simulate_grasps(subjects = 20, grasps = c(3, 14), objects = 1, trials = 1, plant_overlong = FALSE,
                     params = p, seed = 3)
   }
   postures <- simulator_params()$postures
@@ -82,7 +82,7 @@ test_that("aperture_variability scales how much the opening varies, not how wide
                            posture_spread = per_type(1), preshape = per_type(0), aperture_sd = 0.3,
                            onset_jitter = 0, stall_per_object = c(0, 0), peak_time_sd = 0,
                            aperture_variability = v)
-    g <- simulate_grasps(subjects = 10, grasps = 3, objects = 3, trials = 2, overlong = FALSE,
+    g <- simulate_grasps(subjects = 10, grasps = 3, objects = 3, trials = 2, plant_overlong = FALSE,
                          params = p, seed = 2)
     # how far the index MCP opens below its rest angle
     vapply(recordings(g), function(r) r[1, "MCP2"] - min(r[, "MCP2"]), numeric(1))
@@ -99,7 +99,7 @@ test_that("preshape moves the peak aperture towards the type's final posture, no
     p <- quiet_knob_params(loadings = simulator_params()$loadings * 0, posture_spread = per_type(1),
                            preshape = share, onset_jitter = 0, stall_per_object = c(0, 0),
                            peak_time_sd = 0)
-    recordings(simulate_grasps(subjects = 1, grasps = 24, objects = 1, trials = 1, overlong = FALSE,
+    recordings(simulate_grasps(subjects = 1, grasps = 24, objects = 1, trials = 1, plant_overlong = FALSE,
                                params = p))[[1]]
   }
   r0 <- sim(0); r1 <- sim(0.5)
@@ -120,7 +120,7 @@ test_that("the hand is widest at the type's peak_time: earlier in precision gras
                          preshape = per_type(0), onset_jitter = 0, stall_per_object = c(0, 0),
                          peak_time_sd = 0, lead_frames = c(2, 2), hold_frames = c(4, 4))
   expect_equal(unname(p$peak_time[c("Large Diameter", "Lateral", "Tip Pinch")]), c(0.55, 0.45, 0.35))
-  g <- simulate_grasps(subjects = 1, grasps = c(1, 16, 24), objects = 1, trials = 1, overlong = FALSE,
+  g <- simulate_grasps(subjects = 1, grasps = c(1, 16, 24), objects = 1, trials = 1, plant_overlong = FALSE,
                        params = p)
   widest <- vapply(recordings(g), function(r) {
     motion <- nrow(r) - 4 - 3                     # frames 3 .. n - 4 move
@@ -135,7 +135,7 @@ test_that("preshape acts on its own type only; one number applies to every type"
   base <- quiet_knob_params(posture_spread = per_type(1), preshape = per_type(0), onset_jitter = 0,
                             stall_per_object = c(0, 0), peak_time_sd = 0)
   sim <- function(p) simulate_grasps(subjects = 8, grasps = c(3, 24), objects = 1, trials = 1,
-                                     overlong = FALSE, params = p, seed = 4)
+                                     plant_overlong = FALSE, params = p, seed = 4)
   g0 <- sim(base)
   p <- base
   p$preshape[24] <- 0.5

@@ -17,12 +17,12 @@ final_cor <- function(x) stats::cor(final_postures(x))
 test_that("the copula model recovers a planted cross-DoF correlation; the independent one does not", {
   params <- planted_params()
   train <- simulate_grasps(subjects = 30, grasps = "Medium Wrap", seed = 11, params = params,
-                           overlong = FALSE)
+                           plant_overlong = FALSE)
   # the truth: subjects 31-150 of a 150-subject draw of the same seed (the
   # first 30 are close to, not exactly, the training hands: subject draws are
   # whitened within each sample)
   big <- simulate_grasps(subjects = 150, grasps = "Medium Wrap", seed = 11, params = params,
-                         overlong = FALSE)
+                         plant_overlong = FALSE)
   truth <- final_cor(big[as.integer(sub("S", "", big$meta$subject)) > 30])
   off <- upper.tri(truth)
   strong <- off & abs(truth) > 0.5

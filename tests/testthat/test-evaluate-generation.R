@@ -7,7 +7,7 @@ subject_no <- function(g) as.integer(sub("S", "", g$meta$subject))
 test_that("fresh recordings from the simulator score at the real-vs-real level", {
   # a group of subjects is itself a sample: compare the median over three
   # fresh groups of 15 new subjects with the training group's score
-  g <- simulate_grasps(subjects = 75, grasps = c(1, 9), seed = 21, overlong = FALSE)
+  g <- simulate_grasps(subjects = 75, grasps = c(1, 9), seed = 21, plant_overlong = FALSE)
   s <- subject_no(g)
   train <- g[s <= 15]
   held <- g[s > 15 & s <= 30]
@@ -139,7 +139,7 @@ test_that("evaluate_generation() refuses what it cannot compare", {
 })
 
 test_that("over-long recordings are left out of the real samples, counted and printed", {
-  g <- simulate_grasps(subjects = 12, grasps = c(1, 9), seed = 5, overlong = FALSE)
+  g <- simulate_grasps(subjects = 12, grasps = c(1, 9), seed = 5, plant_overlong = FALSE)
   s <- subject_no(g)
   train <- g[s <= 8]
   held <- g[s > 8]
@@ -160,4 +160,18 @@ test_that("over-long recordings are left out of the real samples, counted and pr
   ev_all <- evaluate_generation(m, held2, train, reps = 1, seed = 1, overlong = NULL)
   expect_equal(sum(attr(ev_all, "excluded")$held_out), 0L)
   expect_false(isTRUE(all.equal(ev_all$baseline, ev$baseline)))
+})
+
+test_that("evaluate_generation() takes model sets as models and recordings to fold as recordings", {
+  g <- simulate_grasps(subjects = 4, grasps = 1:2, objects = 2, trials = 2, seed = 1)
+  # the first argument no longer switches mode: recordings there are an error naming `recordings`
+  cnd <- expect_error(evaluate_generation(g, folds = 2), "recordings", class = "handmotion_error_bad_input")
+  expect_identical(cnd$argument, "models")
+  m <- fit_grasp_models(g, seed = 1)
+  expect_error(evaluate_generation(m, g, g, recordings = g), class = "handmotion_error_bad_input")
+  expect_error(evaluate_generation(recordings = g$recordings), class = "handmotion_error_bad_input")
+  ev <- suppressWarnings(evaluate_generation(recordings = g, folds = 2, reps = 1, seed = 3,
+                                             fit = list(copula = list(dependence = "copula"))))
+  expect_s3_class(ev, "generation_evaluation")
+  expect_identical(unique(ev$model), "copula")
 })

@@ -44,9 +44,9 @@ test_that("every type is fitted; a type that cannot be fitted is recorded, not f
   # generate() skips it, saying so, and refuses it by name
   expect_warning(gen <- generate(ms, n = 2, seed = 1), class = "handmotion_warning_model_failed")
   expect_setequal(as.character(unique(gen$meta$grasp)), c("Tripod", "Ring"))
-  expect_error(generate(ms, grasp = "Lateral", seed = 1), class = "handmotion_error_model_failed")
-  expect_error(generate(ms, grasp = "Lateral", seed = 1), class = "handmotion_error_fit_failed")
-  expect_no_warning(generate(ms, grasp = "Ring", n = 1, seed = 1))
+  expect_error(generate(ms, grasps = "Lateral", seed = 1), class = "handmotion_error_model_failed")
+  expect_error(generate(ms, grasps = "Lateral", seed = 1), class = "handmotion_error_fit_failed")
+  expect_no_warning(generate(ms, grasps = "Ring", n = 1, seed = 1))
   only <- quiet_few(fit_grasp_models(three_types(), grasps = 14, warping = "linear", seed = 1))
   expect_named(only, "Tripod")
   expect_error(fit_grasp_models(three_types(), grasps = "Stick"),

@@ -2,7 +2,7 @@
 # unseen types performed by unseen subjects (the paper's letters vs words).
 handover_split <- function() {
   g <- simulate_grasps(subjects = 6, grasps = 1:12, objects = 1, trials = 1, seed = 2,
-                       overlong = FALSE)
+                       plant_overlong = FALSE)
   types <- levels(droplevels(g$meta$grasp))
   subj <- unique(g$meta$subject)
   list(ref = g[g$meta$grasp %in% types[1:9] & g$meta$subject %in% subj[1:4]],
@@ -11,7 +11,7 @@ handover_split <- function() {
 split <- handover_split()
 
 test_that("a frame seen in the reference is reconstructed almost exactly", {
-  fit <- fit_handover(split$ref, markers = 3, smooth = FALSE)
+  fit <- fit_handover(split$ref, n_markers = 3, smooth = FALSE)
   rec <- predict(fit, split$ref[1:2])
   expect_s3_class(rec, "grasps")
   expect_identical(rec$meta$id, split$ref$meta$id[1:2])
@@ -38,7 +38,7 @@ test_that("ranked 6 markers beat 3, the no-PCA regression and the hand-picked se
 
 test_that("LWR on all components equals LWR straight to the angles (why 'direct' is global)", {
   ref <- split$ref
-  fit <- fit_handover(ref, markers = 3, smooth = FALSE)
+  fit <- fit_handover(ref, n_markers = 3, smooth = FALSE)
   q <- forward_kinematics(split$test[1], markers = fit$markers)[[1]]
   y <- do.call(rbind, ref$recordings)
   direct_local <- lwr_predict(fit$ref_x, y, q, fit$neighbours_used, fit$ridge, fit$eps)
@@ -50,7 +50,7 @@ test_that("LWR on all components equals LWR straight to the angles (why 'direct'
 })
 
 test_that("a marker matrix query gives the same result as the grasps query; columns may be reordered", {
-  fit <- fit_handover(split$ref, markers = 4)
+  fit <- fit_handover(split$ref, n_markers = 4)
   g1 <- split$test[1]
   mk <- forward_kinematics(g1, markers = fit$markers)[[1]]
   a <- predict(fit, g1)$recordings[[1]]
@@ -81,10 +81,10 @@ test_that("wrong marker sets are refused with classed errors", {
   expect_error(fit_handover(ref, markers = c("thumb_tip", "thumb_tip")), class = "handmotion_error_bad_markers")
   expect_error(fit_handover(ref, markers = c("thumb_tip", "forearm_radial")),
                class = "handmotion_error_bad_markers")
-  expect_error(fit_handover(ref, markers = 14), class = "handmotion_error_bad_markers")
-  expect_error(fit_handover(ref, markers = 3, ncomp = 17), class = "handmotion_error_bad_input")
-  expect_error(fit_handover(ref, markers = 3, neighbours = 2), class = "handmotion_error_bad_input")
-  expect_error(fit_handover(ref, markers = 3, filter_size = 0), class = "handmotion_error_bad_input")
+  expect_error(fit_handover(ref, n_markers = 14), class = "handmotion_error_bad_markers")
+  expect_error(fit_handover(ref, n_markers = 3, ncomp = 17), class = "handmotion_error_bad_input")
+  expect_error(fit_handover(ref, n_markers = 3, neighbours = 2), class = "handmotion_error_bad_input")
+  expect_error(fit_handover(ref, n_markers = 3, filter_size = 0), class = "handmotion_error_bad_input")
   expect_error(fit_handover("ref"), class = "handmotion_error_bad_input")
 })
 
@@ -100,7 +100,7 @@ test_that("a reference too small for the regression is a classed error", {
 })
 
 test_that("occluded (NaN) markers are dropped per frame, and fully occluded frames are an error", {
-  fit <- fit_handover(split$ref, markers = 6)
+  fit <- fit_handover(split$ref, n_markers = 6)
   mk <- forward_kinematics(split$test[1], markers = fit$markers)[[1]]
   full <- predict(fit, mk)
   occ <- mk
@@ -170,7 +170,7 @@ test_that("PCA reconstruction error falls with the number of components (Figure 
   expect_equal(pe$variance[16], 1)
   held <- handover_error(split$test, by = "ncomp", reference = split$ref)
   expect_gt(held$error[2], pe$error[2] * 0.5)
-  fit <- fit_handover(split$ref, markers = 3)
+  fit <- fit_handover(split$ref, n_markers = 3)
   expect_equal(handover_error(split$test, by = "ncomp", reference = fit)$error, held$error)
   expect_error(handover_error(split$test), class = "handmotion_error_bad_input")   # no recon
   b <- ggplot2::ggplot_build(ggplot2::autoplot(pe))
@@ -217,7 +217,7 @@ test_that("the figures build: markers on the hand, component trajectories, ranki
   marks <- Filter(function(l) "selected" %in% names(l$data), b$plot$layers)[[1]]$data
   expect_equal(sum(marks$selected), 8)
   expect_equal(nrow(marks), 2 * 16)
-  fit <- fit_handover(split$ref, markers = 3)
+  fit <- fit_handover(split$ref, n_markers = 3)
   rec <- predict(fit, split$test[1])
   p5 <- ggplot2::autoplot(fit, split$test[1], list(`3 markers` = rec), components = 1:2)
   d5 <- ggplot2::ggplot_build(p5)$plot$data
@@ -237,7 +237,7 @@ test_that("hand-over runs on the real GraspDB14 samples (radians, CyberGlove map
   # (a reader regression must fail here, not skip)
   expect_s3_class(g, "grasps")
   expect_length(g, 2L)
-  fit <- fit_handover(g[2], markers = 6, neighbours = 64)
+  fit <- fit_handover(g[2], n_markers = 6, neighbours = 64)
   rec <- predict(fit, g[1])
   expect_equal(rec$unit, "rad")
   e <- handover_error(g[1], rec)
@@ -245,11 +245,11 @@ test_that("hand-over runs on the real GraspDB14 samples (radians, CyberGlove map
   # reconstructing the reference's own frames is near exact; not exact, because
   # the sensors the CyberGlove mapping does not apply (I-AA, P-Arch) change
   # angles without moving any marker
-  expect_lt(handover_error(g[2], predict(fit_handover(g[2], 6, neighbours = 64, smooth = FALSE), g[2])), 0.2)
+  expect_lt(handover_error(g[2], predict(fit_handover(g[2], n_markers = 6, neighbours = 64, smooth = FALSE), g[2])), 0.2)
 })
 
 test_that("the C regression engine agrees with the R reference engine", {
-  fit <- fit_handover(split$ref, markers = 4, smooth = FALSE)
+  fit <- fit_handover(split$ref, n_markers = 4, smooth = FALSE)
   q <- forward_kinematics(split$test[1:2], markers = fit$markers)
   q <- do.call(rbind, q)
   for (k in c(20, 256, nrow(fit$ref_x))) {
@@ -275,7 +275,7 @@ test_that("the native local regression checks its arguments itself (no crash on 
 })
 
 test_that("hand-over models are built by one constructor whose validator checks the shapes", {
-  fit <- fit_handover(split$ref, markers = 3, neighbours = 64)
+  fit <- fit_handover(split$ref, n_markers = 3, neighbours = 64)
   expect_identical(validate_handover_model(fit), fit)
   broken <- unclass(fit)
   broken$rotation <- broken$rotation[-1, ]

@@ -5,7 +5,7 @@
 own_glove <- function(seed = 3) {
   simulate_grasps(subjects = 1, grasps = c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31),
                   objects = 1, trials = 28, rate = 100, glove = "resistive", rest = 1, hold = 1,
-                  stuck = "thumb_cross", overlong = FALSE, seed = seed)
+                  stuck = "thumb_cross", plant_overlong = FALSE, seed = seed)
 }
 
 test_that("the thesis model keeps nearly every recording and classifies held out above 90%", {
@@ -40,7 +40,7 @@ test_that("generated grasps stay inside the sensors' range and carry rest and ho
 test_that("naturalness by folds: quiet on the stuck channel, generated near the real-vs-real distance", {
   skip_if_not(slow_tests_enabled(), "slow test (HANDMOTION_SLOW_TESTS)")
   raw <- own_glove()
-  expect_warning(ev <- evaluate_generation(raw, reps = 2, fit = list(copula = list(dependence = "copula"))),
+  expect_warning(ev <- evaluate_generation(recordings = raw, reps = 2, fit = list(copula = list(dependence = "copula"))),
                  class = "handmotion_warning_constant_channels")
   o <- ev[ev$grasp == "overall", ]
   mmd <- o[o$metric == "mmd", ]

@@ -28,8 +28,8 @@ test_that("autoplot(type = \"frame_counts\") draws one panel per requested type 
   g <- simulate_grasps(subjects = 3, grasps = c(3, 15), objects = 1, trials = 2, seed = 1)
   p <- ggplot2::autoplot(g, type = "frame_counts")
   expect_setequal(levels(p$data$grasp), c("Medium Wrap", "Fixed Hook"))
-  expect_equal(levels(ggplot2::autoplot(g, type = "frame_counts", grasp = 15)$data$grasp), "Fixed Hook")
-  expect_error(ggplot2::autoplot(g, type = "frame_counts", grasp = "Tripod"), class = "handmotion_error_too_few_recordings")
+  expect_equal(levels(ggplot2::autoplot(g, type = "frame_counts", grasps = 15)$data$grasp), "Fixed Hook")
+  expect_error(ggplot2::autoplot(g, type = "frame_counts", grasps = "Tripod"), class = "handmotion_error_too_few_recordings")
   expect_error(ggplot2::autoplot(g, type = "frame_counts", overlong = c(iqr = 1)), class = "handmotion_error_bad_input")
 })
 

@@ -17,7 +17,7 @@ readme_substitutions <- data.frame(
            "simulate_grasps(seed = 1)",
            '"S20"'),
   to = c("simulate_grasps(subjects = 3, grasps = c(11, 14, 17, 25), seed = 1)",
-         'reproduce_thesis("output", subjects = 2, grasps = c(17, 25), loso_folds = 2)',
+         'reproduce_thesis("output", subjects = 2, grasps = c(17, 25), folds = 2)',
          "simulate_grasps(subjects = 3, grasps = c(11, 14, 17, 25), seed = 1)",
          '"S02"'),
   times = c(1L, 1L, 1L, 2L),

@@ -191,7 +191,7 @@ test_that("the printer feeds the estimator its clock and reports every estimate"
                          trace = function(so_far, left, event) {
                            if (!is.na(left)) seen[[length(seen) + 1L]] <<- c(so_far, left)
                          }, pace = function() quiet_pace)
-  settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
+  settings <- list(subjects = 30, grasps = 1:33, folds = NULL)
   cost <- report_step_costs(settings, workers = future::nbrOfWorkers(), pace = quiet_pace)
   bar$begin(settings)
   bar$step(names(cost)[1])
@@ -224,7 +224,7 @@ test_that("the printer feeds the estimator its clock and reports every estimate"
 
 
 test_that("the first estimate is the cost model at the machine's measured pace", {
-  settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
+  settings <- list(subjects = 30, grasps = 1:33, folds = NULL)
   ref <- report_step_costs(settings, workers = 2L)
   # the reference machine, quiet: the model's own seconds
   expect_equal(report_step_costs(settings, workers = 2L, pace = quiet_pace), ref)
@@ -243,16 +243,16 @@ test_that("the first estimate is the cost model at the machine's measured pace",
 })
 
 test_that("a small design pays each step's fixed part, a larger one grows beyond it", {
-  tiny <- report_step_costs(list(subjects = 2, grasps = c(17, 25), loso_folds = 2), workers = 1L)
+  tiny <- report_step_costs(list(subjects = 2, grasps = c(17, 25), folds = 2), workers = 1L)
   expect_true(all(tiny >= report_step_model$fixed - 1e-12))
-  full <- report_step_costs(list(subjects = 30, grasps = 1:33, loso_folds = NULL), workers = 1L)
+  full <- report_step_costs(list(subjects = 30, grasps = 1:33, folds = NULL), workers = 1L)
   expect_equal(unname(full), report_step_model$cpu)
-  half <- report_step_costs(list(subjects = 15, grasps = 1:33, loso_folds = NULL), workers = 1L)
+  half <- report_step_costs(list(subjects = 15, grasps = 1:33, folds = NULL), workers = 1L)
   expect_true(all(half >= tiny - 1e-12 & half <= full + 1e-12))
 })
 
 test_that("the first line says when the machine is busy, and the estimate allows for it", {
-  settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
+  settings <- list(subjects = 30, grasps = 1:33, folds = NULL)
   first_lines <- function(pace) {
     lines <- character()
     con <- textConnection("lines", "w", local = TRUE)
@@ -276,7 +276,7 @@ test_that("the first line says when the machine is busy, and the estimate allows
 })
 
 test_that("the step counter counts each step once, the page included", {
-  settings <- list(subjects = 2, grasps = c(17, 25), loso_folds = 2)
+  settings <- list(subjects = 2, grasps = c(17, 25), folds = 2)
   lines <- character()
   con <- textConnection("lines", "w", local = TRUE)
   t <- 0

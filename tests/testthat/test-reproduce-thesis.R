@@ -8,7 +8,7 @@ test_that("report settings come from params, else environment variables, else th
   full <- report_settings(NULL)
   expect_equal(full$subjects, 30L)
   expect_equal(full$grasps, 1:33)
-  expect_null(full$loso_folds)
+  expect_null(full$folds)
   expect_null(full$output_dir)
 
   withr::local_envvar(HANDMOTION_REPORT_SUBJECTS = "4", HANDMOTION_REPORT_GRASPS = "17, 25,9",
@@ -16,21 +16,21 @@ test_that("report settings come from params, else environment variables, else th
   small <- report_settings(NULL)
   expect_equal(small$subjects, 4L)
   expect_equal(small$grasps, c(9L, 17L, 25L))
-  expect_null(small$loso_folds)
+  expect_null(small$folds)
   expect_equal(small$seed, 7L)
 
   # params win over the environment; 0 folds means leave-one-subject-out
-  p <- report_settings(list(subjects = 6, seed = 2, loso_folds = 3, grasps = c("Tripod", "Ring"),
+  p <- report_settings(list(subjects = 6, seed = 2, folds = 3, grasps = c("Tripod", "Ring"),
                             output_dir = "out"))
-  expect_equal(p[c("subjects", "seed", "loso_folds", "grasps", "output_dir")],
-               list(subjects = 6L, seed = 2L, loso_folds = 3L, grasps = c(14L, 31L), output_dir = "out"))
-  expect_null(report_settings(list(loso_folds = 0L))$loso_folds)
+  expect_equal(p[c("subjects", "seed", "folds", "grasps", "output_dir")],
+               list(subjects = 6L, seed = 2L, folds = 3L, grasps = c(14L, 31L), output_dir = "out"))
+  expect_null(report_settings(list(folds = 0L))$folds)
 })
 
 test_that("reproduce_thesis() rejects impossible designs before rendering anything", {
   out <- withr::local_tempdir()
   expect_error(reproduce_thesis(out, subjects = 1), class = "handmotion_error_bad_input")
-  expect_error(reproduce_thesis(out, subjects = 4, loso_folds = 5), class = "handmotion_error_bad_input")
+  expect_error(reproduce_thesis(out, subjects = 4, folds = 5), class = "handmotion_error_bad_input")
   expect_error(reproduce_thesis(out, grasps = 17), class = "handmotion_error_bad_input")
   expect_error(reproduce_thesis(out, grasps = c(17, 99)), class = "handmotion_error")
   expect_error(reproduce_thesis(c("a", "b"), subjects = 3), class = "handmotion_error_bad_input")
@@ -40,7 +40,7 @@ test_that("reproduce_thesis() rejects impossible designs before rendering anythi
 test_that("reproduce_thesis() replaces an earlier report only with overwrite = TRUE, as every writer", {
   out <- withr::local_tempdir()
   writeLines("an earlier report", file.path(out, "reproduce-thesis.html"))
-  cnd <- expect_error(reproduce_thesis(out, subjects = 2, grasps = c(17, 25), loso_folds = 2),
+  cnd <- expect_error(reproduce_thesis(out, subjects = 2, grasps = c(17, 25), folds = 2),
                       "overwrite = TRUE", class = "handmotion_error_file_exists")
   expect_identical(cnd$argument, "overwrite")
   expect_identical(readLines(file.path(out, "reproduce-thesis.html")), "an earlier report")
@@ -48,7 +48,7 @@ test_that("reproduce_thesis() replaces an earlier report only with overwrite = T
   unlink(file.path(out, "reproduce-thesis.html"))
   dir.create(file.path(out, "tables"))
   writeLines("x", file.path(out, "tables", "timings.csv"))
-  expect_error(reproduce_thesis(out, subjects = 2, grasps = c(17, 25), loso_folds = 2),
+  expect_error(reproduce_thesis(out, subjects = 2, grasps = c(17, 25), folds = 2),
                "timings.csv", class = "handmotion_error_file_exists")
   expect_error(reproduce_thesis(out, overwrite = NA), class = "handmotion_error_bad_input")
 })
@@ -58,7 +58,7 @@ test_that("the report renders on a tiny design with its tables and figures", {
   skip_if_not(rmarkdown::pandoc_available("1.12.3"), "pandoc is not available")
   out <- withr::local_tempdir()
   withr::local_options(handmotion.progress = TRUE)  # (helper-progress.R turns it off for the tests)
-  said <- capture.output(html <- reproduce_thesis(out, subjects = 2, grasps = c(17, 25), loso_folds = 2, seed = 1),
+  said <- capture.output(html <- reproduce_thesis(out, subjects = 2, grasps = c(17, 25), folds = 2, seed = 1),
                          type = "message")
   expect_equal(normalizePath(html), normalizePath(file.path(out, "reproduce-thesis.html")))
   # progress: a line per step, saying what it does and (after the first) the time left; then where the report is
@@ -193,9 +193,9 @@ test_that("the vignette is a thin wrapper around the report template", {
 
 test_that("the cost model of the design grows with the design", {
   # (the estimate of the time left is tested in test-report-eta.R)
-  settings <- list(subjects = 30, grasps = 1:33, loso_folds = NULL)
+  settings <- list(subjects = 30, grasps = 1:33, folds = NULL)
   # ten times the subjects, about ten times the work
-  big <- handmotion:::report_step_costs(list(subjects = 300, grasps = 1:33, loso_folds = NULL), 1)
+  big <- handmotion:::report_step_costs(list(subjects = 300, grasps = 1:33, folds = NULL), 1)
   expect_gt(sum(big) / sum(handmotion:::report_step_costs(settings, 1)), 8)
   # every step of the model has a kind
   kinds <- handmotion:::report_step_kinds(handmotion:::report_step_model$step)

@@ -180,7 +180,7 @@ test_that("subject factors move several DoFs together as the loadings say", {
 
 test_that("final postures distinguish grasp types", {
   p <- quiet_params()
-  g <- simulate_grasps(subjects = 1, objects = 1, trials = 1, overlong = FALSE, params = p)
+  g <- simulate_grasps(subjects = 1, objects = 1, trials = 1, plant_overlong = FALSE, params = p)
   lf <- last_frames(g)
   rownames(lf) <- as.character(g$meta$grasp)
   ife <- lf["Index Finger Extension", ]
@@ -200,7 +200,7 @@ test_that("final postures distinguish grasp types", {
 
 test_that("the hand opens to a peak aperture before closing, with smooth profiles", {
   p <- quiet_params(stall_per_object = c(0, 0))
-  g <- simulate_grasps(subjects = 2, grasps = c(3, 14), objects = 1, trials = 1, overlong = FALSE, params = p)
+  g <- simulate_grasps(subjects = 2, grasps = c(3, 14), objects = 1, trials = 1, plant_overlong = FALSE, params = p)
   for (r in recordings(g)) {
     n <- nrow(r)
     k <- which.min(r[, "MCP3"])
@@ -217,7 +217,7 @@ test_that("the hand opens to a peak aperture before closing, with smooth profile
 })
 
 test_that("larger objects open the hand wider and flex the holding fingers less", {
-  g <- simulate_grasps(subjects = 10, grasps = 3, objects = 3, trials = 2, overlong = FALSE, seed = 5)
+  g <- simulate_grasps(subjects = 10, grasps = 3, objects = 3, trials = 2, plant_overlong = FALSE, seed = 5)
   lf <- last_frames(g)
   m <- g$meta
   flex <- rowMeans(lf[, c("MCP3", "PIP3", "MCP4", "PIP4")])
@@ -228,7 +228,7 @@ test_that("larger objects open the hand wider and flex the holding fingers less"
 })
 
 test_that("over-long recordings can be switched off; other rates scale the durations", {
-  g <- simulate_grasps(subjects = 6, grasps = 1:2, objects = 3, trials = 3, overlong = FALSE)
+  g <- simulate_grasps(subjects = 6, grasps = 1:2, objects = 3, trials = 3, plant_overlong = FALSE)
   expect_false(any(g$meta$overlong))
   expect_equal(as.numeric(tapply(g$meta$n_frames, g$meta$grasp, mean)[1:2]), c(43, 41))
   h <- simulate_grasps(subjects = 6, grasps = 1:2, objects = 3, trials = 3, rate = 100)
@@ -239,7 +239,7 @@ test_that("over-long recordings can be switched off; other rates scale the durat
 
 test_that("stalled recordings hold still mid-motion within ordinary length", {
   p <- quiet_params(stall_per_object = c(2, 2))
-  g <- simulate_grasps(subjects = 12, grasps = 11, objects = 1, trials = 2, overlong = FALSE, params = p)
+  g <- simulate_grasps(subjects = 12, grasps = 11, objects = 1, trials = 2, plant_overlong = FALSE, params = p)
   expect_equal(sum(g$meta$stalled), 2L)
   for (r in recordings(g)[g$meta$stalled]) {
     still <- rle(rowSums(abs(diff(r))) < 1e-9)

@@ -7,7 +7,7 @@ results are identical to R's for the same seed.
 >>> import handmotion as hm
 >>> g = hm.simulate_grasps(subjects=3, seed=1)
 >>> m = hm.fit_grasp_models(g, seed=1)
->>> x = hm.generate(m, grasp="Power Sphere", n=10, seed=2)
+>>> x = hm.generate(m, grasps="Power Sphere", n=10, seed=2)
 
 Python = R
 ----------
@@ -32,6 +32,19 @@ and argument names (a test compares this list with R's NAMESPACE):
 * hand-over: ``select_markers``, ``fit_handover``, ``handover_error``; R's ``predict()``
   (reconstruction) is ``HandoverModel.predict()``
 * pictures: ``hand_3d``, ``write_hand_animation``
+
+Argument names and their order are R's (``tests/test_signatures.py`` compares every
+function here with R's ``formals()``): ``generate(x, n, grasps, ...)``,
+``project(object, new_data)``, ``fit_handover(reference, markers, n_markers, ...)``; further R
+arguments pass by keyword. An argument R renamed (``?handmotion-renamed``) is a
+:class:`BadInputError` naming the new one.
+
+What comes back: a fitted model is a handle (:class:`GraspModels`, :class:`GraspClassifier`,
+...); recordings are a :class:`Grasps`; an R table is a pandas DataFrame. The three
+evaluations whose R result has several parts, ``classify``, ``evaluate_loso`` and
+``evaluate_generation``, return a dict: its tables as DataFrames, its figures as floats, and
+the R result itself as a handle (``"classification"`` or ``"evaluation"``) for
+``thesis_table`` and plotting in R. ``evaluate_early_recognition`` is one table, a DataFrame.
 
 Deliberately not mirrored: ``autoplot`` (ggplot2 graphics belong to R; every result
 is a DataFrame or numpy array to plot in Python), ``hand_3d_output`` and

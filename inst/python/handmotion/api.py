@@ -11,13 +11,12 @@ through, so Python and R give identical numbers for the same seed.
 """
 
 import os
-import warnings
 
 import numpy as np
 
 from ._bridge import call, r, r_array, r_to_py
 from .errors import BadInputError
-from .grasps import Grasps, as_grasps as _as_grasps
+from .grasps import Grasps, _as_grasps
 from .handles import (GraspClassifier, GraspModel, GraspRecognizer, GraspModels, HandoverModel, RecognitionStream,
                       RHandle, Skeleton, project)
 
@@ -26,6 +25,14 @@ def _check_count(value, name, minimum=1):
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < minimum:
         raise BadInputError(f"{name} must be a whole number >= {minimum}, not {value!r}")
     return int(value)
+
+
+def _refuse_renamed(kwargs, renamed):
+    """An argument given by its old name (``{old: new}``) is a :class:`BadInputError` naming the
+    new one, as R's verbs do (``?handmotion-renamed``), rather than a silent pass to R."""
+    old = [k for k in renamed if k in kwargs]
+    if old:
+        raise BadInputError("; ".join(f"argument {k!r} is now {renamed[k]!r}" for k in old))
 
 
 def _check_seed(seed):
@@ -248,68 +255,72 @@ def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", **kwargs)
                             dependence=dependence, **kwargs))
 
 
-def evaluate_generation(models, held_out=None, training=None, n=None, reps=5, seed=1, **kwargs):
+def evaluate_generation(models=None, held_out=None, training=None, n=None, reps=5, seed=1, recordings=None,
+                        **kwargs):
     """How natural generated grasps are, against a real-vs-real baseline (R's ``evaluate_generation()``).
 
-    ``models`` is a :class:`GraspModels` or a dict of them by name (e.g.
-    ``{"thesis": m1, "copula": m2}``); ``held_out`` the recordings of new subjects and
-    ``training`` those the models were fitted on. Returns a dict with ``table`` (one row per
-    model, type and measure: ``generated``, ``baseline``, ``better``, ``ratio``), ``overall``
-    (the rows of grasp ``"overall"``) and ``evaluation`` (a handle on the R result, for
-    plotting in R).
+    Either ``models`` (a :class:`GraspModels` or a dict of them by name, e.g.
+    ``{"thesis": m1, "copula": m2}``) with ``held_out``, the recordings of new subjects, and
+    ``training``, those the models were fitted on; or ``recordings`` alone, evaluated by folds
+    (``fit``, ``split``, ``folds`` as in R; ``folds=None`` is one fold per subject). Returns a
+    dict with ``table`` (one row per model, type and measure: ``generated``, ``baseline``,
+    ``better``, ``ratio``), ``overall`` (the rows of grasp ``"overall"``) and ``evaluation`` (a
+    handle on the R result, for plotting in R).
     """
     ro = r()
-    if held_out is None and training is None:
-        # by folds, from the recordings (``fit``, ``split``, ``folds`` as in R)
+    n = None if n is None else _check_count(n, "n", 5)
+    if isinstance(models, Grasps):
+        raise BadInputError("models must be model sets; to evaluate recordings by folds give them as recordings=")
+    if recordings is not None:
+        if models is not None or held_out is not None or training is not None:
+            raise BadInputError("give either recordings (folds) or models with held_out and training, not both")
         fit = kwargs.pop("fit", None)
         if fit is not None:
             kwargs["fit"] = ro.r["list"](**{str(k): ro.r["list"](**v) for k, v in fit.items()})
-        res = call("evaluate_generation", _as_grasps(models), n=None if n is None else _check_count(n, "n", 5),
+        if kwargs.get("folds") is not None:
+            kwargs["folds"] = _check_count(kwargs["folds"], "folds")
+        res = call("evaluate_generation", recordings=_as_grasps(recordings, "recordings"), n=n,
                    reps=_check_count(reps, "reps"), seed=_check_seed(seed), **kwargs)
-        table = r_to_py(ro.r["as.data.frame"](res))
-        return {"table": table, "overall": table[table["grasp"] == "overall"].reset_index(drop=True),
-                "evaluation": RHandle(res)}
-    if isinstance(models, GraspModels):
-        rmodels = models.robj
-    elif isinstance(models, dict) and models and all(isinstance(v, GraspModels) for v in models.values()):
-        rmodels = ro.r["list"](**{str(k): v.robj for k, v in models.items()})
     else:
-        raise BadInputError("models must be a GraspModels or a dict of them by name")
-    res = call("evaluate_generation", rmodels, _as_grasps(held_out, "held_out"),
-               _as_grasps(training, "training"), n=None if n is None else _check_count(n, "n", 5),
-               reps=_check_count(reps, "reps"), seed=_check_seed(seed))
+        if isinstance(models, GraspModels):
+            rmodels = models.robj
+        elif isinstance(models, dict) and models and all(isinstance(v, GraspModels) for v in models.values()):
+            rmodels = ro.r["list"](**{str(k): v.robj for k, v in models.items()})
+        else:
+            raise BadInputError("models must be a GraspModels or a dict of them by name")
+        res = call("evaluate_generation", rmodels, _as_grasps(held_out, "held_out"),
+                   _as_grasps(training, "training"), n=n, reps=_check_count(reps, "reps"),
+                   seed=_check_seed(seed), **kwargs)
     table = r_to_py(ro.r["as.data.frame"](res))
     return {"table": table, "overall": table[table["grasp"] == "overall"].reset_index(drop=True),
             "evaluation": RHandle(res)}
 
 
-def generate(models, grasp=None, n=1, seed=1, as_array=False, limits=None, **kwargs):
-    """Generate new grasps by sampling component scores (thesis eq. 2.5).
+def generate(x, n=1, grasps=None, seed=1, limits=None, **kwargs):
+    """Generate new grasps by sampling component scores (thesis eq. 2.5); R's
+    ``generate(x, n, grasps, seed, limits, ...)``.
 
-    ``seed`` defaults to 1 as in every handmotion verb that draws random numbers (a call
-    repeats itself); ``None`` draws from R's current random stream.
+    ``x`` is a :class:`GraspModels` (``grasps`` selects the types, all by default) or a
+    :class:`GraspModel`. ``seed`` defaults to 1 as in every handmotion verb that draws random
+    numbers (a call repeats itself); ``None`` draws from R's current random stream.
 
     ``limits`` keeps angles inside the hand's joint limits by a smooth map (``None``: on for
     copula models, off for the thesis' model).
 
     Returns a :class:`Grasps` (use its ``as_array()`` for an n x frames x DoF numpy
-    array padded with NaN). ``as_array=True`` is deprecated: it returns that array
-    alone (it used to return a tuple).
+    array padded with NaN).
     """
-    if not isinstance(models, RHandle):
-        raise BadInputError("models must come from fit_grasp_models()")
+    _refuse_renamed(kwargs, {"models": "x", "grasp": "grasps",
+                             "as_array": "the Grasps' as_array() method (generate(x).as_array())"})
+    if not isinstance(x, (GraspModels, GraspModel)):
+        raise BadInputError("x must come from fit_grasp_models() or fit_grasp_model()")
     n = _check_count(n, "n")
     if limits not in (None, True, False):
         raise BadInputError(f"limits must be None, True or False, not {limits!r}")
     kw = dict(n=n, seed=_check_seed(seed), limits=limits, **kwargs)
-    if grasp is not None:
-        kw["grasp"] = _grasps_arg(grasp)
-    out = r_to_py(call("generate", models, **kw))
-    if not as_array:
-        return out
-    warnings.warn("generate(as_array=True) is deprecated; call .as_array() on the Grasps it returns",
-                  DeprecationWarning, stacklevel=2)
-    return out.as_array()
+    if grasps is not None:
+        kw["grasps"] = _grasps_arg(grasps)
+    return r_to_py(call("generate", x, **kw))
 
 
 _state_methods = {}
@@ -485,12 +496,14 @@ def select_markers(x=None, n=6, method="ranked", **kwargs):
     return [str(v) for v in call("select_markers", ref, n=_check_count(n, "n"), method=method, **kwargs)]
 
 
-def fit_handover(reference, markers=6, **kwargs):
+def fit_handover(reference, markers=None, n_markers=6, **kwargs):
     """Fit the PCA + locally weighted regression reconstruction model; returns a :class:`HandoverModel`.
 
-    ``markers`` is a marker count (the top-ranked set) or a list of marker names.
+    ``markers`` is a list of marker names (a marker set, as in :func:`forward_kinematics`);
+    ``None`` (default) takes the ``n_markers`` top-ranked markers of ``reference``.
     """
-    return HandoverModel(call("fit_handover", _as_grasps(reference, "reference"), markers=markers, **kwargs))
+    return HandoverModel(call("fit_handover", _as_grasps(reference, "reference"), markers=markers,
+                              n_markers=_check_count(n_markers, "n_markers"), **kwargs))
 
 
 def handover_error(truth, recon=None, by="overall", **kwargs):
@@ -505,15 +518,15 @@ def handover_error(truth, recon=None, by="overall", **kwargs):
     return float(out) if by == "overall" else out
 
 
-def reproduce_thesis(output_dir="output", subjects=30, seed=1, loso_folds=None, grasps=None, quiet=True,
+def reproduce_thesis(output_dir="output", subjects=30, seed=1, folds=None, grasps=None, quiet=True,
                      progress=True, overwrite=False):
     """The whole of the thesis' chapter 5 as an HTML report in ``output_dir`` (R's
     ``reproduce_thesis()``; minutes on the default design). Returns the report's path. An existing
     report is replaced only with ``overwrite=True`` (else ``BadFileError``, as every writer)."""
     kw = dict(subjects=_check_count(subjects, "subjects", 2), seed=_check_seed(seed), quiet=bool(quiet),
               progress=bool(progress), overwrite=bool(overwrite))
-    if loso_folds is not None:
-        kw["loso_folds"] = _check_count(loso_folds, "loso_folds", 2)
+    if folds is not None:
+        kw["folds"] = _check_count(folds, "folds", 2)
     if grasps is not None:
         kw["grasps"] = _grasps_arg(grasps)
     return str(r_to_py(call("reproduce_thesis", os.fspath(output_dir), **kw)))

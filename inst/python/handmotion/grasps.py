@@ -267,10 +267,15 @@ def _default_dofs(p):
     return [str(d) for d in bridge("default_dofs")(int(p))]
 
 
-def as_grasps(x, arg="x"):
-    """``x`` as a :class:`Grasps`: a Grasps as it is, a frames x DoF array or a list
-    of them converted; anything else is a :class:`BadInputError` naming ``arg``.
-    The one conversion every function of the package uses."""
+def as_grasps(x):
+    """``x`` as a :class:`Grasps` (R's ``as_grasps()``): a Grasps as it is, a frames x DoF
+    array or a list of them converted; anything else is a :class:`BadInputError`."""
+    return _as_grasps(x)
+
+
+def _as_grasps(x, arg="x"):
+    """:func:`as_grasps` whose error names the argument ``arg``: the one conversion every
+    function of the package uses."""
     if isinstance(x, Grasps):
         return x
     if isinstance(x, np.ndarray) or isinstance(x, (list, tuple)):

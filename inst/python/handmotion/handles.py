@@ -4,7 +4,7 @@ import numpy as np
 
 from ._bridge import bridge, call, r, r_to_py
 from .errors import BadInputError
-from .grasps import as_grasps as _as_grasps
+from .grasps import _as_grasps
 
 
 class RHandle:
@@ -40,14 +40,15 @@ class Classifier(RHandle):
     """A fitted classifier: every one answers :meth:`predict` alike (R's ``predict()``,
     ``?predict.grasp_models``)."""
 
-    def predict(self, x, type="class", **kwargs):
-        """One row per recording of ``x`` (index: the recording ids), as R returns it:
+    def predict(self, new_data, type="class", **kwargs):
+        """One row per recording of ``new_data`` (index: the recording ids), as R's
+        ``predict(object, new_data, type)`` returns it:
         ``type="class"`` a column ``.pred_class`` (None where a recording could not be
         classified), ``"prob"`` a column ``.pred_<class>`` per class (rows sum to 1),
         ``"distance"`` a column ``.dist_<class>`` per class (smaller is closer)."""
         if type not in _PREDICT_TYPES:
             raise BadInputError(f"type must be one of {_PREDICT_TYPES}, not {type!r}")
-        out = call(r().r["predict"], self.robj, _as_grasps(x), type=type, **kwargs)
+        out = call(r().r["predict"], self.robj, _as_grasps(new_data, "new_data"), type=type, **kwargs)
         df = r_to_py(out)
         df.index = [str(v) for v in r().r["rownames"](out)]
         return df
@@ -89,9 +90,9 @@ class GraspModels(Classifier):
             raise BadInputError(f"no model for grasp type {grasp!r}; have {self.grasp_types()}")
         return _labelled_matrix(bridge("dependence_matrix")(self.robj.rx2(str(grasp))))
 
-    def project(self, x):
-        """The recordings of ``x`` projected onto each type's model: :func:`handmotion.project`."""
-        return project(self, x)
+    def project(self, new_data):
+        """The recordings of ``new_data`` projected onto each type's model: :func:`handmotion.project`."""
+        return project(self, new_data)
 
 
 class GraspModel(RHandle):
@@ -103,9 +104,9 @@ class GraspModel(RHandle):
         """R's ``summary()`` of the model as a DataFrame."""
         return r_to_py(call(r().r["as.data.frame"], call(r().r["summary"], self.robj)))
 
-    def project(self, x):
-        """The recordings of ``x`` projected onto this model: :func:`project`."""
-        return project(self, x)
+    def project(self, new_data):
+        """The recordings of ``new_data`` projected onto this model: :func:`project`."""
+        return project(self, new_data)
 
 
 class Skeleton(RHandle):
@@ -121,11 +122,11 @@ class HandoverModel(RHandle):
     """A sparse-marker reconstruction model (R class ``handover_model``, from
     :func:`handmotion.fit_handover`)."""
 
-    def predict(self, x, **kwargs):
-        """Rebuild all joint angles from sparse markers (R's ``predict()`` on the model); a
-        :class:`handmotion.Grasps`. ``x`` is a Grasps (its markers are computed by forward
+    def predict(self, new_data, **kwargs):
+        """Rebuild all joint angles from sparse markers (R's ``predict(object, new_data)`` on the
+        model); a :class:`handmotion.Grasps`. ``new_data`` is a Grasps (its markers are computed by forward
         kinematics) or a numpy array frames x (3 x markers) of marker positions (NaN = occluded)."""
-        q = x if isinstance(x, np.ndarray) and x.ndim == 2 else _as_grasps(x, "x")
+        q = new_data if isinstance(new_data, np.ndarray) and new_data.ndim == 2 else _as_grasps(new_data, "new_data")
         return r_to_py(call(r().r["predict"], self.robj, q, **kwargs))
 
 
@@ -136,17 +137,17 @@ def _projection(p):
             "residual": r_to_py(p.rx2("residual"))}
 
 
-def project(model, x):
-    """Project the recordings of ``x`` onto a model (R's ``project()``): for a
+def project(object, new_data):
+    """Project the recordings of ``new_data`` onto a model (R's ``project(object, new_data)``): for a
     :class:`GraspModel` one projection, for a :class:`GraspModels` a dict ``{grasp type:
     projection}`` (failed types have none). A projection is a dict with ``ids`` (the
     recordings), ``distance`` (numpy, one per recording: the thesis' eq. 4.4 over the whole
     hand), ``scores`` (numpy, recordings x DoF x FPC) and ``residual`` (numpy, recordings x
     DoF residual norms)."""
-    if not isinstance(model, (GraspModel, GraspModels)):
-        raise BadInputError("model must be a GraspModel or GraspModels from fit_grasp_model(s)()")
-    res = call("project", model, _as_grasps(x), details=False)
-    if isinstance(model, GraspModel):
+    if not isinstance(object, (GraspModel, GraspModels)):
+        raise BadInputError("object must be a GraspModel or GraspModels from fit_grasp_model(s)()")
+    res = call("project", object, _as_grasps(new_data, "new_data"), details=False)
+    if isinstance(object, GraspModel):
         return _projection(res)
     return {str(name): _projection(p) for name, p in zip(r().r["names"](res), res)}
 
@@ -170,14 +171,14 @@ class GraspRecognizer(Classifier):
     """An early grasp recogniser (R class ``grasp_recognizer``): classify from the first
     frames, or open a :class:`RecognitionStream` for a live loop."""
 
-    def predict(self, x, type="class", frames=None, ms=None, fraction=None):
-        """Classify every recording of ``x`` from its first frames: at most one of ``frames``,
+    def predict(self, new_data, type="class", frames=None, ms=None, fraction=None):
+        """Classify every recording of ``new_data`` from its first frames: at most one of ``frames``,
         ``ms`` or ``fraction`` (none: the whole recording); the result as
         :meth:`Classifier.predict`."""
         given = {k: v for k, v in dict(frames=frames, ms=ms, fraction=fraction).items() if v is not None}
         if len(given) > 1:
             raise BadInputError("give at most one of frames, ms and fraction (none: the whole recording)")
-        return super().predict(x, type=type, **given)
+        return super().predict(new_data, type=type, **given)
 
     def stream(self):
         """A new live stream (R's ``start_recognition()``)."""

@@ -4,7 +4,7 @@ as one self-contained HTML page, shown inline in Jupyter."""
 import html as _html
 
 from ._bridge import bridge, call
-from .grasps import as_grasps as _as_grasps
+from .grasps import _as_grasps
 from .errors import BadInputError
 
 

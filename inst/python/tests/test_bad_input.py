@@ -34,7 +34,7 @@ def models(hm, small):
 
 @pytest.fixture(scope="module")
 def handover(hm, small):
-    return hm.fit_handover(small, markers=3, neighbours=40)
+    return hm.fit_handover(small, n_markers=3, neighbours=40)
 
 
 ANG = np.full((3, 16), 10.0)
@@ -73,7 +73,7 @@ CASES = [
     ("fit_grasp_classifier: misspelt method", lambda hm, s, m, h, d: hm.fit_grasp_classifier(s, method="lda"), BadInputError),
     # generate and classify
     ("generate: unknown argument", lambda hm, s, m, h, d: hm.generate(m, n=2, sead=1), BadInputError),
-    ("generate: unknown type", lambda hm, s, m, h, d: hm.generate(m, grasp="No Such Grasp"), BadInputError),
+    ("generate: unknown type", lambda hm, s, m, h, d: hm.generate(m, grasps="No Such Grasp"), BadInputError),
     ("generate: negative chunk", lambda hm, s, m, h, d: hm.generate(m, n=2, chunk=-1), BadInputError),
     ("classify: unknown argument", lambda hm, s, m, h, d: hm.classify(m, s, foo=1), BadInputError),
     # kinematics
@@ -83,8 +83,8 @@ CASES = [
     ("select_markers: misspelt weighting", lambda hm, s, m, h, d: hm.select_markers(s, weighting="eigen"), BadInputError),
     ("fit_handover: unknown marker", lambda hm, s, m, h, d: hm.fit_handover(s, markers=["index_tip", "foo"]),
      BadInputError),
-    ("fit_handover: zero ridge", lambda hm, s, m, h, d: hm.fit_handover(s, markers=3, ridge=0), BadInputError),
-    ("fit_handover: unknown argument", lambda hm, s, m, h, d: hm.fit_handover(s, markers=3, foo=1), BadInputError),
+    ("fit_handover: zero ridge", lambda hm, s, m, h, d: hm.fit_handover(s, n_markers=3, ridge=0), BadInputError),
+    ("fit_handover: unknown argument", lambda hm, s, m, h, d: hm.fit_handover(s, n_markers=3, foo=1), BadInputError),
     ("HandoverModel.predict: other DoFs", lambda hm, s, m, h, d: h.predict(hm.Grasps([ANG[:, :15]])), BadInputError),
     # 3D
     ("hand_3d: negative speed", lambda hm, s, m, h, d: hm.hand_3d(s[0:1], speed=-1), BadInputError),

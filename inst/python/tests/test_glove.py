@@ -43,7 +43,7 @@ def test_profiles_calibration_and_motion(raw):
 def test_models_evaluation_and_generation_on_raw_counts(raw):
     models = hm.fit_grasp_models(raw, seed=1)
     assert sorted(models.grasp_types()) == ["bottle", "mug", "pen"]
-    new = hm.generate(models, grasp="mug", n=3, seed=2)
+    new = hm.generate(models, grasps="mug", n=3, seed=2)
     assert set(new.meta["grasp"]) == {"mug"}
     x = np.concatenate(new.recordings)
     assert x.min() >= 0 and x.max() <= 1000

@@ -72,7 +72,7 @@ def test_r_errors_become_classed_exceptions(hm):
     g = hm.simulate_grasps(subjects=2, grasps=["Tripod", "Ring"], objects=1, trials=2, seed=1)
     m = hm.fit_grasp_models(g, seed=1, mixture_components=1)
     with pytest.raises(hm.UnknownGraspError) as info:
-        hm.generate(m, grasp="Not A Grasp")
+        hm.generate(m, grasps="Not A Grasp")
     assert "Not A Grasp" in str(info.value)
     assert "handmotion_error_unknown_grasp" in info.value.r_class
     assert isinstance(info.value, hm.HandmotionError)

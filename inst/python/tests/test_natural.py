@@ -35,11 +35,11 @@ def test_copula_models_carry_dependence(hm, split, copula):
 
 
 def test_generation_within_limits_and_identical_to_r(hm, ro, copula):
-    x = hm.generate(copula, grasp="Large Diameter", n=20, seed=5)
-    r_gen = ro.r("function(m) handmotion::generate(m, grasp = 'Large Diameter', n = 20, seed = 5)")(copula.robj)
+    x = hm.generate(copula, grasps="Large Diameter", n=20, seed=5)
+    r_gen = ro.r("function(m) handmotion::generate(m, grasps = 'Large Diameter', n = 20, seed = 5)")(copula.robj)
     for a, b in zip(x.recordings, r_gen.rx2("recordings")):
         np.testing.assert_array_equal(a, np.asarray(b))
-    free = hm.generate(copula, grasp="Large Diameter", n=20, seed=5, limits=False)
+    free = hm.generate(copula, grasps="Large Diameter", n=20, seed=5, limits=False)
     assert any(not np.array_equal(a, b) for a, b in zip(x.recordings, free.recordings))
     with pytest.raises(hm.BadInputError):
         hm.generate(copula, n=2, limits="yes")

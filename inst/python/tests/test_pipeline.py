@@ -18,7 +18,7 @@ def test_fit_and_summary(hm, models):
 
 
 def test_generate_returns_grasps_and_array(hm, models):
-    x = hm.generate(models, grasp="Power Sphere", n=10, seed=2)
+    x = hm.generate(models, grasps="Power Sphere", n=10, seed=2)
     assert len(x) == 10 and len(x.dofs) == 16
     assert set(x.meta["grasp"]) == {"Power Sphere"}
     arr = x.as_array()
@@ -27,18 +27,20 @@ def test_generate_returns_grasps_and_array(hm, models):
     first = x.recordings[0]
     np.testing.assert_array_equal(arr[0, :first.shape[0]], first)
     assert np.isnan(arr[0, first.shape[0]:]).all()
-    with pytest.warns(DeprecationWarning):
-        old = hm.generate(models, grasp="Power Sphere", n=4, seed=2, as_array=True)
-    assert isinstance(old, np.ndarray) and old.shape[0] == 4
+    # the old argument names are errors naming the new ones (R's generate(x, grasps =))
+    for old, new in [({"as_array": True}, "as_array"), ({"grasp": "Power Sphere"}, "grasps"),
+                     ({"models": models}, "'x'")]:
+        with pytest.raises(hm.BadInputError, match=new):
+            hm.generate(models, n=1, **old) if "models" not in old else hm.generate(x=models, n=1, **old)
     # same seed, same numbers; and the same as R's generate() for that seed
-    again = hm.generate(models, grasp="Power Sphere", n=10, seed=2)
+    again = hm.generate(models, grasps="Power Sphere", n=10, seed=2)
     for a, b in zip(x.recordings, again.recordings):
         np.testing.assert_array_equal(a, b)
 
 
 def test_generate_identical_to_r(hm, ro, models):
-    x = hm.generate(models, grasp="Tripod", n=3, seed=11)
-    r_gen = ro.r("function(m) handmotion::generate(m, grasp = 'Tripod', n = 3, seed = 11)")(models.robj)
+    x = hm.generate(models, grasps="Tripod", n=3, seed=11)
+    r_gen = ro.r("function(m) handmotion::generate(m, grasps = 'Tripod', n = 3, seed = 11)")(models.robj)
     y = hm.Grasps.from_r(r_gen)
     for a, b in zip(x.recordings, y.recordings):
         np.testing.assert_array_equal(a, b)
@@ -106,7 +108,7 @@ def test_handover_round_trip(hm, small):
     assert set(hm.select_markers(ref, n=3)).issubset(markers)
     handpicked = hm.select_markers(method="handpicked")
     assert len(handpicked) == 6 and not any(m.startswith(("middle", "ring")) for m in handpicked)
-    model = hm.fit_handover(ref, markers=6)
+    model = hm.fit_handover(ref, n_markers=6)
     out = model.predict(query)
     assert len(out) == 1
     assert out.recordings[0].shape == query.recordings[0].shape

@@ -51,7 +51,7 @@ def test_held_out_accuracy_matches_r(flex, flex_r, ro):
 
 
 def test_generated_against_real_by_participant(flex):
-    res = hm.evaluate_generation(flex, split="subject", folds=2, reps=1,
+    res = hm.evaluate_generation(recordings=flex, split="subject", folds=2, reps=1,
                                  fit={"thesis": {}})
     overall = res["overall"]
     mmd = overall[overall["metric"] == "mmd"]
