@@ -124,7 +124,7 @@ bench_record("flexglove discriminant predictions changed by a per-recording offs
 # also divided by each participant's median range per channel (rest minus
 # the smallest value). The per-participant forms use the held-out
 # participant's unlabelled recordings together. Held out by participant as
-# above, with the package's subclass choice.
+# above, with the package's subclass ensemble.
 rest <- t(mapply(function(r, s) apply(r[seq_len(max(3L, s - 1L)), , drop = FALSE], 2, stats::median),
                  g$recordings, find_motion(g)$start))
 invariance <- local({
@@ -152,7 +152,7 @@ invariance <- local({
     ok <- logical(length(y))
     for (s in unique(g$meta$subject)) {
       tr <- g$meta$subject != s
-      fit <- fit_subclass_lda(G[tr, , drop = FALSE], y[tr], "equal", "auto", subjects = g$meta$subject[tr])
+      fit <- fit_subclass_lda(G[tr, , drop = FALSE], y[tr], "equal", "auto")
       ok[!tr] <- top_class(fit$types, subclass_lda_scores(fit, G[!tr, , drop = FALSE])) == as.character(y[!tr])
     }
     c(pooled = mean(ok), vapply(c("P1", "P2"), function(s) mean(ok[g$meta$subject == s]), numeric(1)))
