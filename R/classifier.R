@@ -167,7 +167,7 @@ predict.grasp_classifier <- function(object, new_data, type = c("class", "prob",
 #'   summary, the set's included: `grasp_id` (the class's Feix id, `NA` for
 #'   another label), `grasp` (the class) and `n` (its training recordings);
 #'   then by classifier: `"discriminant"` `log_prior` and `subclasses` (the
-#'   clusters the type was split into); the recogniser `log_prior`;
+#'   clusters the type was split into, by the finest fit of the ensemble); the recogniser `log_prior`;
 #'   `"last_frame"` `ncomp_used` (PCs used) and `var_explained` (the fraction of
 #'   the type's last-frame variance they explain); `"weighted_fpca"`
 #'   `top_dofs` (the two DoFs it weighs most for the type) and `weight_range`

@@ -103,8 +103,8 @@ test_that("a fitted model whose parts were edited is refused by every verb, nami
   clf$at[2] <- NaN
   expect_error(predict(clf, f$g), "at", class = "handmotion_error_bad_model")
   clf <- f$clf
-  clf$fit$coef[1, 1] <- Inf
-  cnd <- expect_error(classify(clf, f$g), "models$fit$coef", fixed = TRUE, class = "handmotion_error_bad_model")
+  clf$fit$members[[1]]$coef[1, 1] <- Inf
+  cnd <- expect_error(classify(clf, f$g), "models$fit$members[[1]]$coef", fixed = TRUE, class = "handmotion_error_bad_model")
   expect_identical(cnd$argument, "models")
   ho <- fit_handover(f$g, n_markers = 3)
   q <- forward_kinematics(f$g[1], markers = ho$markers)[[1]]

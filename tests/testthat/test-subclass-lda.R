@@ -26,12 +26,41 @@ test_that("subclasses tell apart types whose objects make them multimodal", {
   # one Gaussian per type is at chance (the types' means coincide)
   expect_lt(acc(one), 0.7)
   expect_gt(acc(auto), 0.95)
-  # the inner cross-validation chose more than one subclass, and says so
-  expect_gt(auto$fit$subclasses, 1)
+  # "auto" averages the fits with 1, 2, 4 and 6 subclasses, and says so;
+  # its finest member found (at least) the two planted objects per type
+  expect_identical(auto$fit$subclasses, "auto")
+  expect_length(auto$fit$members, 4L)
   expect_true(all(summary(auto)$subclasses >= 2))
-  expect_output(print(auto), "chosen by inner cross-validation")
+  expect_output(print(auto), "an average of the fits with up to 1, 2, 4, 6")
   P <- predict(auto, test, type = "prob")
   expect_equal(unname(rowSums(P)), rep(1, nrow(P)), tolerance = 1e-12)
+})
+
+test_that("the ensemble's probabilities are the average of its members'", {
+  g <- two_object_types(n_per = 30, seed = 9)
+  test <- two_object_types(n_per = 10, seed = 10)
+  auto <- fit_grasp_classifier(g)
+  prob <- function(cl) as.matrix(predict(cl, test, type = "prob"))
+  members <- lapply(c(1, 2, 4, 6), function(k) prob(fit_grasp_classifier(g, subclasses = k)))
+  expect_equal(prob(auto), Reduce(`+`, members) / 4, tolerance = 1e-10)
+  # a number still means that number: one member, up to that many clusters
+  two <- fit_grasp_classifier(g, subclasses = 2)
+  expect_length(two$fit$members, 1L)
+  expect_equal(unname(two$fit$subclasses_used), c(2L, 2L))
+  expect_output(print(two), "up to 2 [(]given[)]")
+})
+
+test_that("the ensemble does not depend on the k-means seed where subclasses are planted", {
+  g <- two_object_types(n_per = 30, seed = 11)
+  test <- two_object_types(n_per = 20, seed = 12)
+  F <- classifier_features(g, seq(0, 1, by = 0.125))
+  Ft <- classifier_features(test, seq(0, 1, by = 0.125))
+  acc <- vapply(1:5, function(seed) {
+    fit <- fit_subclass_lda(F, factor(g$meta$grasp), "equal", "auto", seed = seed)
+    mean(top_class(fit$types, subclass_lda_scores(fit, Ft)) == test$meta$grasp)
+  }, numeric(1))
+  # the planted two objects per type are found whatever the seed
+  expect_true(all(acc > 0.95))
 })
 
 test_that("one subclass per type is the one-Gaussian shrinkage LDA", {
@@ -41,6 +70,8 @@ test_that("one subclass per type is the one-Gaussian shrinkage LDA", {
   ref <- fit_shrunk_lda(F, factor(g$meta$grasp))
   s_ref <- shrunk_lda_scores(ref, F)
   s <- subclass_lda_scores(cl$fit, F)
+  # both as normalised log posteriors
+  s_ref <- s_ref - log_sum_exp_rows(s_ref)
   expect_equal(unname(s[, colnames(s_ref)]), unname(s_ref), tolerance = 1e-10)
 })
 
