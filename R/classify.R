@@ -215,9 +215,13 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
   # (spacing 1 / (T_i - 1)), so the two differ by sqrt(T_i - 1) per model.
   # The rescaling changes which model is nearest whenever lengths differ.
   # (A likelihood has no such scale: it is not rescaled.)
-  if (!likelihood) d <- sweep(d, 2L, sqrt(pmax(tl - 1, 1)), `*`)
+  if (!likelihood) d <- sweep(d, 2L, thesis_norm_scale(tl), `*`)
   list(distances = d, target_length = tl, failures = failures)
 }
+
+# The factor that turns our residual norm into the thesis' (see above), per
+# target length.
+thesis_norm_scale <- function(target_length) sqrt(pmax(target_length - 1, 1))
 
 new_classification <- function(d, meta, method, target_length = NULL, failures = no_failures()) {
   pred <- nearest_type(d)

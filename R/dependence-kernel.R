@@ -76,7 +76,7 @@ kernel_bandwidth <- function(X, R, sd, grid = kernel_bandwidth_grid, max_n = ker
   silverman <- (4 / (d + 2))^(1 / (d + 4)) * n^(-1 / (d + 4))
   if (n < 3L || d == 0L) return(list(h = silverman, loglik = NA_real_, rule = "silverman"))
   if (n > max_n) {
-    sub <- kernel_bandwidth(X[unique(round(seq(1, n, length.out = max_n))), , drop = FALSE], R, sd, grid, max_n)
+    sub <- kernel_bandwidth(X[evenly_spread(n, max_n), , drop = FALSE], R, sd, grid, max_n)
     return(list(h = sub$h * (max_n / n)^(1 / (d + 4)), loglik = sub$loglik, rule = "loo_likelihood_subsample"))
   }
   # whitened vectors: Mahalanobis distance under S is Euclidean here

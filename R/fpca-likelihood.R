@@ -65,7 +65,6 @@ fpca_likelihood_distance <- function(model, pr) {
 # standardised and whitened), sd, W, h, logdet (of the kernel's covariance
 # h^2 S, over the d directions kept)); NULL with fewer than three training
 # recordings or no score that varies.
-likelihood_kernel_max_n <- 500L
 likelihood_score_kernel <- function(model) {
   if (model$n_used < 3L || !isTRUE(model$settings$ncomp > 0)) return(NULL)
   cols <- score_columns(model)
@@ -79,7 +78,9 @@ likelihood_score_kernel <- function(model) {
   # a type estimate its density as well as its bandwidth allows (sets of
   # up to 500 recordings per type, the default data and flexglove among
   # them, use all of theirs)
-  if (nrow(X) > likelihood_kernel_max_n) X <- X[unique(round(seq(1, nrow(X), length.out = likelihood_kernel_max_n))), , drop = FALSE]
+  # (the bandwidth's own cap, kernel_bandwidth_max_n: with it the density is
+  # cross-validated on exactly the vectors it keeps)
+  if (nrow(X) > kernel_bandwidth_max_n) X <- X[evenly_spread(nrow(X), kernel_bandwidth_max_n), , drop = FALSE]
   sd <- apply(X, 2, stats::sd)
   # a score without spread (identical recordings) does not enter the metric
   live <- is.finite(sd) & sd > 1e-10 * max(sd, 0, na.rm = TRUE)

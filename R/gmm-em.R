@@ -34,7 +34,7 @@ gmm_em_fast <- function(X, k, max_iter, tol, seed) {
     # Many points: the starts race on an evenly spread subsample (their cost
     # no longer grows with n) and the best of them is refined on all points
     # from its responsibilities; should that fail, the starts run on all.
-    sub <- unique(round(seq(1, n, length.out = gmm_start_points)))
+    sub <- evenly_spread(n, gmm_start_points)
     pick <- gmm_best_start(Y[sub, , drop = FALSE], k, max_iter, tol, seed, logdet0)
     if (!is.null(pick$best)) {
       z <- gmm_log_components(pick$best$weights, t(pick$best$mu), pick$best$sigma, Y)

@@ -155,16 +155,27 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   # Each type keeps its own stream, so the models do not depend on the order.
   todo <- which(!cached)
   todo <- todo[order(-type_work(parts[todo]))]
+  # the recordings the temperature is fitted on: each type's worker scores
+  # them under its model as soon as it has fitted it, so the main process
+  # does not score them under every model after the last type (at ten times
+  # the default data, 2 s with both workers idle)
+  sample <- if (calibrate) temperature_sample(x, types, args$motion) else NULL
+  sample_d <- vector("list", length(types))
+  names(sample_d) <- types
   if (length(todo)) {
-    fits[todo] <- with_progress_shown({
+    res <- with_progress_shown({
       p <- hm_progressor(length(todo))
       # (a top-level function and only each type's own data go to the workers)
       future.apply::future_mapply(
         fit_one_type, lapply(parts[todo], pack_for_worker), (paths %||% rep(NA_character_, length(types)))[todo],
-        MoreArgs = list(args = args, progress = p), SIMPLIFY = FALSE, USE.NAMES = FALSE,
+        MoreArgs = list(args = args, progress = p, sample = pack_for_worker(sample), distance = distance),
+        SIMPLIFY = FALSE, USE.NAMES = FALSE,
         future.seed = if (is.null(streams)) TRUE else streams[todo], future.scheduling = Inf)
     })
+    fits[todo] <- lapply(res, `[[`, "model")
+    sample_d[todo] <- lapply(res, `[[`, "sample_distance")
   }
+  sample_d[cached] <- lapply(fits[cached], sample_distance, sample = sample, distance = distance)
   # a failed type stays in the set, as a record of why
   failed <- vapply(fits, inherits, logical(1), what = "error")
   # a bad argument or recording is the caller's to fix, not a type that could
@@ -174,7 +185,7 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   if (length(bad_input)) stop(fits[[bad_input[1]]])
   fits[failed] <- mapply(new_grasp_model_failed, types[failed], fits[failed], SIMPLIFY = FALSE)
   out <- new_grasp_models(fits, seed = seed, levels = grasp_levels(x), distance = distance)
-  if (calibrate) attr(out, "temperature") <- models_temperature(out, x, call)
+  if (calibrate) attr(out, "temperature") <- models_temperature(out, sample, sample_d)
   dg <- models_degeneracies(out)
   n_dg <- length(unique(sub(": .*", "", dg$message)))
   warn_degenerate(dg, sprintf("%d of the %d grasp type models rest%s on degenerate data:", n_dg,
@@ -202,7 +213,7 @@ type_work <- function(parts) {
 
 # One type's fit for a worker. A top-level function, so the closure shipped to
 # workers does not drag the caller's frame (the whole data set) along.
-fit_one_type <- function(part, save_to, args, progress) {
+fit_one_type <- function(part, save_to, args, progress, sample = NULL, distance = "likelihood") {
   part <- unpack_on_worker(part)
   # (degenerate data is recorded in each model and said once for the set by
   # fit_grasp_models(), not once per type)
@@ -218,7 +229,7 @@ fit_one_type <- function(part, save_to, args, progress) {
     file.rename(tmp, save_to)
   }
   progress(as.character(part$meta$grasp[1]))
-  res
+  list(model = res, sample_distance = sample_distance(res, unpack_on_worker(sample), distance))
 }
 
 # The cache file of each type, or NULL without a cache: <type>-<hash>.rds,
@@ -242,26 +253,55 @@ cache_paths <- function(cache, parts, args, streams, call) {
 }
 
 # The temperature of the set's class probabilities (see ?predict.grasp_models):
-# fitted by maximum likelihood on the in-sample distances of the training
-# recordings of the fitted types. NULL (no probabilities) when the training
-# recordings cannot be projected.
-models_temperature <- function(models, x, call) {
+# fitted by maximum likelihood on the in-sample distances of a sample of the
+# training recordings (temperature_sample()) under every fitted type's model
+# (sample_distance(), one vector per type). NULL (no probabilities) when no
+# model could score the sample.
+models_temperature <- function(models, sample, distances) {
   types <- names(fitted_models(models))
   if (length(types) < 2L) return(1)
-  own <- x[!is.na(x$meta$grasp) & as.character(x$meta$grasp) %in% types]
-  # one parameter needs few recordings: at most 30 per type, evenly spread
-  # (deterministic), so the fit of a large set does not classify all of it
-  # (8910 recordings: 9 s; 990: about a second, the temperature within 3%)
-  lab <- as.character(own$meta$grasp)
-  pick <- unlist(lapply(split(seq_along(lab), lab), function(i) {
-    i[unique(round(seq(1, length(i), length.out = min(length(i), 30L))))]
-  }), use.names = FALSE)
-  own <- own[sort(pick)]
-  d <- tryCatch(withCallingHandlers(fpca_distances(models, own, call = call)$distances,
-                                    handmotion_warning_projection_failed = function(w) invokeRestart("muffleWarning")),
-                handmotion_error = function(e) NULL)
-  if (is.null(d)) return(NULL)
-  fit_temperature(d, own$meta$grasp)
+  lab <- as.character(sample$meta$grasp)
+  rows <- lab %in% types
+  d <- matrix(NA_real_, sum(rows), length(types), dimnames = list(sample$meta$id[rows], types))
+  for (t in types) {
+    v <- distances[[t]]
+    if (is.numeric(v) && length(v) == length(lab)) d[, t] <- v[rows]
+  }
+  if (all(is.na(d))) return(NULL)
+  fit_temperature(d, lab[rows])
+}
+
+# The recordings of `types` the temperature is fitted on: one parameter needs
+# few, so at most 30 per type, evenly spread (deterministic), and a large
+# set's fit does not classify all of it (8,910 recordings: 9 s; 990: about a
+# second, the temperature within 3%). Trimmed as a model trims what it
+# projects (`motion`, the set's).
+temperature_sample <- function(x, types, motion) {
+  lab <- as.character(x$meta$grasp)
+  own <- which(!is.na(lab) & lab %in% types)
+  pick <- unlist(lapply(split(own, lab[own]), function(i) i[evenly_spread(length(i), 30L)]), use.names = FALSE)
+  s <- x[sort(pick)]
+  if (identical(motion, "trim")) s <- trim_motion(s)
+  s
+}
+
+# The distances of the sample's recordings under one fitted model (in the
+# order of the sample; NA where one could not be projected), an error where
+# the model cannot score them at all, NULL without a sample or a model. What
+# fpca_distances() would give in this model's column.
+sample_distance <- function(model, sample, distance) {
+  if (is.null(sample) || !inherits(model, "grasp_model") || inherits(model, "grasp_model_failed")) return(NULL)
+  tryCatch(withCallingHandlers({
+    validate_projection_model(model, rlang::current_env())
+    check_projection_dofs(model, sample, rlang::current_env())
+    pr <- project_recordings(model, sample, details = FALSE, distance_only = distance != "likelihood",
+                             recs = double_recordings(sample))
+    d <- unname(if (distance == "likelihood") fpca_likelihood_distance(model, pr) else pr$distance)
+    if (!is.null(pr$ids)) d <- d[match(sample$meta$id, pr$ids)]
+    if (distance != "likelihood") d <- d * thesis_norm_scale(as.numeric(model$target_length %||% NA_real_))
+    d
+  }, handmotion_warning_projection_failed = function(w) invokeRestart("muffleWarning")),
+  error = function(e) e)
 }
 
 # The one constructor of class "grasp_models": a list named by grasp type of

@@ -182,7 +182,7 @@ resolve_motion <- function(x, motion, call = rlang::caller_env()) {
   motion <- check_choice(motion, c("auto", "trim", "as_recorded"), arg = "motion", call = call)
   if (motion != "auto") return(motion)
   if (length(x) == 0L) return("as_recorded")
-  idx <- unique(round(seq(1, length(x), length.out = min(200L, length(x)))))
+  idx <- evenly_spread(length(x), 200L)
   m <- find_motion(x[idx])
   if (stats::median((m$rest + m$hold) / m$n_frames) > motion_auto_share) "trim" else "as_recorded"
 }

@@ -37,7 +37,7 @@ write_hand_html <- function(x, file, skeleton = hand_skeleton(), view = "oblique
   if (is.null(title)) title <- "hand motion"
   check_rate(fps, call = call)
   n <- dim(pos)[1]
-  keep <- unique(round(seq(1, n, length.out = min(n, max_frames))))
+  keep <- evenly_spread(n, max_frames)
   pose <- pose_long(structure(pos[keep, , , drop = FALSE], frames = keep), "x", skeleton, call)
   pose <- project_pose(pose, view, call)
   html <- hand_animation_html(pose, skeleton, keep, interval_ms = 1000 * (n / length(keep)) / fps,
