@@ -63,16 +63,31 @@ load_average <- function() {
 
 # Seconds of elapsed time per CPU second of the cost model, for the steps in
 # the main process and for those on `workers` workers: the core's speed, and
-# the share of a core a process gets. One process measured its share; w
-# workers and the other jobs (the load average, counted before the report
-# itself adds to it) divide the cores between them, so each worker gets at
-# most cores / (load + w).
+# the share of a core a process gets. The kernel divides the cores evenly
+# between the processes that want to run, so the calibration's share s of a
+# core says how much other work there is: as much as `cores / s - 1`
+# processes that each want a whole core. Where it got a whole core (s of
+# 0.95 or more: a few per cent are the calibration's own waits) the share
+# cannot say how much less than `cores - 1` the others want, and the load
+# average, capped there, says it. The load average is not the demand itself:
+# it counts processes waiting on the disk, jobs that use a part of a core,
+# and lags by a minute; taken as the demand ((load + workers) / cores) it
+# made the parallel steps about 6 times as slow at load 4-6 on 2 cores
+# where 2.3 times was measured (issue 42). `w` workers among that demand
+# get `cores / (others + w)` of a core each, at most a whole one.
 pace_factors <- function(pace, workers = 1L) {
   slow <- 1 / pace$speed
-  main <- slow / pace$share
+  others <- pace_other_demand(pace)
   w <- max(1L, workers)
-  contended <- if (is.na(pace$load)) 1 else max(1, (pace$load + w) / pace$cores)
-  c(main = main, workers = slow * max(1 / pace$share, contended))
+  c(main = slow * max(1, (others + 1) / pace$cores), workers = slow * max(1, (others + w) / pace$cores))
+}
+
+# The other jobs' demand for the cores, in processes that each want a whole
+# core (see pace_factors()).
+pace_other_demand <- function(pace) {
+  if (pace$share < 0.95) return(pace$cores / pace$share - 1)
+  known <- if (is.na(pace$load)) 0 else pace$load
+  min(max(0, known), pace$cores - 1)
 }
 
 # Is the machine busy? Then the first estimate says so: a process gets

@@ -12,12 +12,16 @@
 # 5. the pages with the 3D viewer draw every widget, each with a hand's
 #    coloured pixels on its canvas (read on the page), and the 2D animation
 #    plays.
-# The browser runs of 3-5 are started together (four at a time) and judged
-# after; uses the browser helpers of the test suite (one copy).
+# Five browser runs do it, started together and judged after: one over HTTP
+# whose harness page opens the pages one after another in a frame (3, 4 and
+# the animation of 5), two from file:// (3 and 4) and one per page of 3D
+# widgets. (Fifteen runs, one per check, spent most of their 75 s starting
+# chromium.) Uses the browser helpers of the test suite (one copy).
 args <- commandArgs(trailingOnly = TRUE)
 site <- normalizePath(if (length(args)) args[1] else "site")
 source("tests/testthat/helper-browser.R")
 fail <- function(...) stop("site: ", ..., call. = FALSE)
+`%||%` <- function(a, b) if (is.null(a)) b else a   # (base R has it from 4.4 on)
 pages <- c("index.html", "reference/index.html", "articles/index.html", "news/index.html",
            "articles/getting-started.html", "articles/looking-at-hands.html", "reference/hand_3d.html",
            "articles/reproduce-thesis.html")
@@ -120,97 +124,116 @@ browser_batch <- function(runs, seconds = 150, parallel = 4L) {
 }
 runs <- list()
 
-# -- 3: no script error on the main pages -------------------------------------
-# (every page runs the same template scripts: one page of each kind over
-# HTTP, the home page and an article from file://; the pages with widgets
-# are checked for script errors below)
-error_urls <- c(paste0(http_base, c("index.html", "reference/index.html", "articles/index.html", "news/index.html",
-                                    "articles/getting-started.html")),
-                paste0(file_base, c("index.html", "articles/getting-started.html")))
-for (url in error_urls) {
-  runs[[paste("errors", url)]] <- c(browser_args(2000), offline, "--enable-logging=stderr", "--v=0", "--dump-dom", url)
-}
+# -- 3, 4 over HTTP: one harness run -------------------------------------------
+# The harness lies beside the site, shares its origin and drives the pages
+# in its frame one after another: the main pages (one of each kind: every
+# page runs the same template scripts) until they have run a moment, the
+# pages searched from (their contents, code boxes, search box), and the 2D
+# animation. It writes its findings as JSON into #result. Script errors of
+# every page it opens land in chromium's log (--enable-logging), each with
+# its source; the pages with widgets are checked for script errors below.
+error_pages <- c("index.html", "reference/index.html", "articles/index.html", "news/index.html",
+                 "articles/getting-started.html")
 console_errors <- function(out) {
   lines <- grep(":CONSOLE|ERROR:.*(net::|Failed to load)", out$stderr, value = TRUE)
   lines <- sub("^.*:CONSOLE[^]]*\\] ", "", lines)
   # errors and uncaught exceptions; console.log/info chatter is not an error
   grep("Uncaught|Error|error|Failed|net::ERR", lines, value = TRUE)
 }
-
-# -- 4: contents and search ----------------------------------------------------
-# Over HTTP, the harness loads a site page in a frame, counts its contents links, types
-# `query` into the search box, waits for suggestions, picks the first and
-# reports where the frame went; it writes its findings as JSON into #result.
-harness <- function(page, query) {
-  sprintf('<!doctype html><html><body><pre id="result">pending</pre>
-<iframe id="f" src="%s" width="1200" height="900"></iframe>
-<script>
-var f = document.getElementById("f"), out = {}, phase = 0;
-function done() { document.getElementById("result").textContent = JSON.stringify(out); }
-f.onload = function() {
-  try {
-    var w = f.contentWindow, d = w.document;
-    if (phase === 1) {
-      out.opened = w.location.pathname + w.location.search; out.title = d.title;
-      out.opened_main = !!d.querySelector("main"); return done();
-    }
-    phase = 1;
-    var $ = w.jQuery, input = $("#search-input");
-    input.trigger("focus");
-    setTimeout(function() {
-      out.toc = d.querySelectorAll("#toc a.nav-link").length;
-      /* code boxes whose text runs past them (a long line scrolls inside
-         its box: white-space pre, overflow-x auto), code that wraps (in
-         the middle of a comment), a page wider than the window */
-      out.overflow = Array.prototype.filter.call(d.querySelectorAll("pre"), function(p) {
-        var scrolls = ["auto", "scroll"].indexOf(w.getComputedStyle(p).overflowX) >= 0;
-        return p.scrollWidth > p.clientWidth + 1 && !scrolls;
-      }).length;
-      out.wrapping = Array.prototype.filter.call(d.querySelectorAll("pre code"), function(c) {
-        return w.getComputedStyle(c).whiteSpace !== "pre";
-      }).length;
-      out.page_wider = d.documentElement.scrollWidth > w.innerWidth;
-      out.headings = d.querySelectorAll("main h2:not([data-toc-skip])").length;
-      input.val(%s).trigger("input");
-      setTimeout(function() {
-        var s = d.querySelectorAll(".aa-suggestion");
-        out.suggestions = s.length;
-        out.first = s.length ? s[0].textContent.replace(/\\s+/g, " ").trim() : "";
-        /* the list of suggestions lies within the window */
-        var menu = d.querySelector(".aa-dropdown-menu");
-        if (menu) {
-          var r = menu.getBoundingClientRect();
-          out.menu_fits = r.left >= 0 && r.right <= w.innerWidth && r.bottom <= w.innerHeight;
-        }
-        if (!s.length) return done();
-        $(s[0]).trigger("click");
-        setTimeout(done, 3000);  /* the frame did not move on */
-      }, 2000);
-    }, 1000);
-  } catch (e) { out.error = String(e); done(); }
-};
-</script></body></html>', page, jsonlite::toJSON(query, auto_unbox = TRUE))
-}
-# the search must find pages by a word of the site's titles
+# the search must find pages by a word of the site's titles; a function's
+# name finds its help page first (not a changelog entry)
 query <- "hands"
 search_pages <- c("index.html", "articles/reproduce-thesis.html")
-for (pg in search_pages) {
-  h <- file.path(root, sprintf("harness-%s.html", gsub("[^a-z0-9]", "-", pg)))
-  writeLines(harness(paste0(http_base, pg), query), h)
-  runs[[paste("harness", pg)]] <- c(browser_args(12000), offline, "--dump-dom",
-                                     sprintf("http://127.0.0.1:%d/%s", port, basename(h)))
-}
-# a function's name finds its help page first (not a changelog entry)
 ranked <- c(query = "calibrate", page = "reference/calibrate.html")
-writeLines(harness(paste0(http_base, "index.html"), ranked[["query"]]), file.path(root, "harness-rank.html"))
-runs[["harness rank"]] <- c(browser_args(12000), offline, "--dump-dom",
-                            sprintf("http://127.0.0.1:%d/harness-rank.html", port))
-harness_result <- function(out, pg) {
+animation_page <- "articles/graspdb14.html"
+tasks <- c(lapply(error_pages, function(pg) list(kind = "errors", page = pg)),
+           lapply(search_pages, function(pg) list(kind = "search", page = pg, query = query)),
+           list(list(kind = "search", page = "index.html", query = ranked[["query"]], key = "rank")),
+           list(list(kind = "animation", page = animation_page)))
+tasks <- lapply(tasks, function(t) {
+  t$url <- paste0(http_base, t$page)
+  t$key <- t$key %||% paste(t$kind, t$page)
+  t
+})
+harness <- sprintf('<!doctype html><html><body><pre id="result">pending</pre>
+<iframe id="f" width="1200" height="900"></iframe>
+<script>
+var tasks = %s, f = document.getElementById("f"), all = {}, k = -1;
+function finish() { f.onload = null; f.src = "about:blank"; document.getElementById("result").textContent = JSON.stringify(all); }
+function next() { k++; if (k >= tasks.length) return finish(); run(tasks[k], all[tasks[k].key] = {}); }
+function run(t, out) {
+  var phase = 0, moved = null;
+  f.onload = function() {
+    try {
+      var w = f.contentWindow, d = w.document;
+      if (t.kind === "errors") { out.title = d.title; return setTimeout(next, 500); }
+      if (t.kind === "animation") {
+        return setTimeout(function() {
+          out.animation = !!d.querySelector(".handmotion-animation");
+          out.line_style = !!d.querySelector("svg[fill=\\"none\\"]");
+          var m = /frame ([0-9]+) \\(/.exec(d.body.textContent);
+          out.frame = m ? +m[1] : null;
+          next();
+        }, 1500);
+      }
+      if (phase === 1) {
+        clearTimeout(moved);
+        out.opened = w.location.pathname + w.location.search; out.title = d.title;
+        out.opened_main = !!d.querySelector("main"); return next();
+      }
+      phase = 1;
+      var $ = w.jQuery, input = $("#search-input");
+      input.trigger("focus");
+      setTimeout(function() {
+        out.toc = d.querySelectorAll("#toc a.nav-link").length;
+        /* code boxes whose text runs past them (a long line scrolls inside
+           its box: white-space pre, overflow-x auto), code that wraps (in
+           the middle of a comment), a page wider than the window */
+        out.overflow = Array.prototype.filter.call(d.querySelectorAll("pre"), function(p) {
+          var scrolls = ["auto", "scroll"].indexOf(w.getComputedStyle(p).overflowX) >= 0;
+          return p.scrollWidth > p.clientWidth + 1 && !scrolls;
+        }).length;
+        out.wrapping = Array.prototype.filter.call(d.querySelectorAll("pre code"), function(c) {
+          return w.getComputedStyle(c).whiteSpace !== "pre";
+        }).length;
+        out.page_wider = d.documentElement.scrollWidth > w.innerWidth;
+        out.headings = d.querySelectorAll("main h2:not([data-toc-skip])").length;
+        input.val(t.query).trigger("input");
+        setTimeout(function() {
+          var s = d.querySelectorAll(".aa-suggestion");
+          out.suggestions = s.length;
+          out.first = s.length ? s[0].textContent.replace(/\\s+/g, " ").trim() : "";
+          /* the list of suggestions lies within the window */
+          var menu = d.querySelector(".aa-dropdown-menu");
+          if (menu) {
+            var r = menu.getBoundingClientRect();
+            out.menu_fits = r.left >= 0 && r.right <= w.innerWidth && r.bottom <= w.innerHeight;
+          }
+          if (!s.length) return next();
+          moved = setTimeout(next, 3000);  /* the frame did not move on */
+          $(s[0]).trigger("click");
+        }, 2000);
+      }, 1000);
+    } catch (e) { out.error = String(e); next(); }
+  };
+  f.src = t.url;
+}
+next();
+</script></body></html>', jsonlite::toJSON(lapply(tasks, function(t) t[c("kind", "url", "key", "query")]), auto_unbox = TRUE))
+writeLines(harness, file.path(root, "harness.html"))
+# (virtual time: the harness's waits add up to about 25 s, which cost
+# little real time; the budget only bounds a page that never settles)
+runs[["harness"]] <- c(browser_args(60000), offline, "--enable-logging=stderr", "--v=0", "--dump-dom",
+                       sprintf("http://127.0.0.1:%d/harness.html", port))
+harness_result <- function(out) {
   dom <- paste(out$stdout, collapse = "\n")
   json <- sub('(?s).*<pre id="result">(.*?)</pre>.*', "\\1", dom, perl = TRUE)
   json <- gsub("&quot;", '"', gsub("&amp;", "&", gsub("&lt;", "<", gsub("&gt;", ">", json))))
-  if (identical(json, "pending") || !jsonlite::validate(json)) fail("the harness got no answer from ", http_base, pg)
-  jsonlite::fromJSON(json)
+  if (identical(json, "pending") || !jsonlite::validate(json)) fail("the harness got no answer from ", http_base)
+  r <- jsonlite::fromJSON(json)
+  lost <- setdiff(vapply(tasks, `[[`, "", "key"), names(r))
+  if (length(lost)) fail("the harness did not get to ", paste(lost, collapse = ", "), " (its budget ran out)")
+  r
 }
 # From file:// a page may not reach into a frame (each file is its own
 # origin), and chromium's flag that would allow it would also allow the
@@ -218,6 +241,8 @@ harness_result <- function(out, pg) {
 # its own folder, searches by itself: it types the query, records how many
 # results it got, and picks the first; a page that opens with the query's
 # words marked (mark.js, <mark data-markjs>) is the result page.
+# Their runs check the page for script errors from file:// as well (the
+# copy and the result page it opens: the home page's and a page's scripts).
 # (copies of pages lie beside them until the runs end)
 copies <- character()
 copy_guard <- new.env()
@@ -241,7 +266,7 @@ for (pg in search_pages) {
     }, 2000);
   }, 1000);
 });</script>', jsonlite::toJSON(query, auto_unbox = TRUE))
-  runs[[paste("file search", pg)]] <- c(browser_args(8000), offline, "--dump-dom",
+  runs[[paste("file search", pg)]] <- c(browser_args(8000), offline, "--enable-logging=stderr", "--v=0", "--dump-dom",
                                          paste0(file_base, page_copy(pg, "search", script)))
 }
 file_search_result <- function(out, pg) {
@@ -325,16 +350,14 @@ check_widgets <- function(out, page, expected) {
   message(sprintf("site: %s: %d 3D widget(s) drawn, no script errors, coloured pixels per widget %s",
                   page, ready, paste(coloured, collapse = ", ")))
 }
-# the 2D animation embedded in the GraspDB14 article draws lines (its <svg>
-# carries `fill="none"`) and plays: its frame label has moved on
-runs[["animation"]] <- c(browser_args(1500), "--dump-dom", paste0(http_base, "articles/graspdb14.html"))
-check_animation <- function(out, page) {
-  dom <- paste(out$stdout, collapse = "\n")
-  if (!grepl('class="handmotion-animation"', dom, fixed = TRUE)) fail("no 2D animation in ", page)
-  if (!grepl('<svg[^>]*fill="none"', dom)) fail("the 2D animation in ", page, " lost its line style")
-  at <- as.integer(sub(".*>frame ([0-9]+) \\(.*", "\\1", dom))
-  if (is.na(at) || at <= 1L) fail("the 2D animation in ", page, " does not play")
-  message(sprintf("site: %s: 2D animation plays (frame %d after 1.5 s)", page, at))
+# the 2D animation embedded in the GraspDB14 article (opened by the
+# harness) draws lines (its <svg> carries `fill="none"`) and plays: its
+# frame label has moved on
+check_animation <- function(r, page) {
+  if (!isTRUE(r$animation)) fail("no 2D animation in ", page)
+  if (!isTRUE(r$line_style)) fail("the 2D animation in ", page, " lost its line style")
+  if (is.null(r$frame) || r$frame <= 1L) fail("the 2D animation in ", page, " does not play")
+  message(sprintf("site: %s: 2D animation plays (frame %d after 1.5 s)", page, r$frame))
 }
 
 # -- all runs at once, then the verdicts in order ------------------------------
@@ -343,13 +366,19 @@ res <- browser_batch(runs)
 slowest <- sort(attr(res, "seconds"), decreasing = TRUE)[1:3]
 message(sprintf("site: %d browser runs in %.0f s (slowest: %s)", length(runs), proc.time()[["elapsed"]] - started,
                 paste(sprintf("%s %.0f s", names(slowest), slowest), collapse = ", ")))
-for (url in error_urls) {
-  errs <- console_errors(res[[paste("errors", url)]])
-  if (length(errs)) fail("script errors on ", url, ":\n  ", paste(utils::head(errs, 5), collapse = "\n  "))
+h <- harness_result(res[["harness"]])
+errs <- c(console_errors(res[["harness"]]), unlist(lapply(search_pages, function(pg) {
+  console_errors(res[[paste("file search", pg)]])
+})))
+if (length(errs)) fail("script errors on the pages:\n  ", paste(utils::head(errs, 5), collapse = "\n  "))
+for (pg in error_pages) {
+  r <- h[[paste("errors", pg)]]
+  if (!is.null(r$error) || !nzchar(r$title %||% "")) fail(pg, " did not open over HTTP")
 }
-message("site: no script errors on the main pages, over HTTP or from file://")
+message(sprintf("site: no script errors on %d pages over HTTP (%s, ...) nor from file:// (%s and the result pages they opened)",
+                length(tasks), paste(error_pages[1:2], collapse = ", "), paste(search_pages, collapse = ", ")))
 for (pg in search_pages) {
-  r <- harness_result(res[[paste("harness", pg)]], pg)
+  r <- h[[paste("search", pg)]]
   if (!is.null(r$error)) fail("harness error on ", pg, ": ", r$error)
   if (isTRUE(r$wrapping > 0)) fail(sprintf("%s: %d code boxes wrap their lines", pg, r$wrapping))
   if (r$overflow > 0 || isTRUE(r$page_wider)) {
@@ -367,7 +396,7 @@ for (pg in search_pages) {
   message(sprintf("site: over HTTP, %s: %d contents links for %d sections, code inside its boxes; search '%s': %d results, the first opened %s",
                   pg, r$toc, r$headings, query, r$suggestions, sub("^.*/site/", "", r$opened)))
 }
-r <- harness_result(res[["harness rank"]], "index.html")
+r <- h[["rank"]]
 if (is.null(r$opened) || !grepl(ranked[["page"]], r$opened, fixed = TRUE)) {
   fail(sprintf("search '%s' opened %s first, not %s", ranked[["query"]], if (is.null(r$opened)) r$first else r$opened, ranked[["page"]]))
 }
@@ -375,7 +404,7 @@ if (!isTRUE(r$menu_fits)) fail(sprintf("search '%s': the list of results runs of
 message(sprintf("site: search '%s': %d results within the window, the first opened %s", ranked[["query"]],
                 r$suggestions, ranked[["page"]]))
 for (pg in search_pages) file_search_result(res[[paste("file search", pg)]], pg)
-check_animation(res[["animation"]], "articles/graspdb14.html")
+check_animation(h[[paste("animation", animation_page)]], animation_page)
 for (pg in widget_pages) check_widgets(res[[paste("widgets", pg)]], pg, 2L)
 unlink(copies)
 message("site: ok")

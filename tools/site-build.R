@@ -10,7 +10,6 @@
 # Run from the repository root (tools/site.sh does).
 pkg <- pkgdown::as_pkgdown(".")
 pkgdown::init_site(pkg)
-pkgdown::build_home(pkg, preview = FALSE)
 
 # Jobs, the longest first, so that two processes end together. The
 # reference is two jobs (pkgdown::build_reference(topics =), each half of
@@ -28,11 +27,17 @@ ref_jobs <- list(`reference (1/2)` = topics[c(TRUE, FALSE)], `reference (2/2)` =
 order <- c("real-recordings", "own-glove", "recognition", "reproduce-thesis", "natural-grasps",
            "reference (1/2)", "reference (2/2)", "getting-started", "handover")
 articles <- as.character(pkg$vignettes$name)
-jobs <- c(intersect(order, c(names(ref_jobs), articles)), setdiff(articles, order))
+# the home page and the changelog (2-3 s of CPU each) fill the gaps at the
+# end instead of running before and after the others
+page_jobs <- list(home = function() pkgdown::build_home(pkg, preview = FALSE),
+                  news = function() pkgdown::build_news(pkg, preview = FALSE))
+jobs <- c(intersect(order, c(names(ref_jobs), articles)), setdiff(articles, order), names(page_jobs))
 cpu_now <- function() sum(proc.time()[c("user.self", "sys.self", "user.child", "sys.child")], na.rm = TRUE)
 run_job <- function(job) {
   started <- c(cpu = cpu_now(), elapsed = proc.time()[["elapsed"]])
-  if (job %in% names(ref_jobs)) {
+  if (job %in% names(page_jobs)) {
+    page_jobs[[job]]()
+  } else if (job %in% names(ref_jobs)) {
     pkgdown::build_reference(pkg, lazy = FALSE, examples = TRUE, devel = FALSE, preview = FALSE,
                              topics = ref_jobs[[job]])
   } else {
@@ -55,7 +60,9 @@ message(paste(c(sprintf("site: %-26s %6s %6s", "job", "elapsed", "CPU"),
                 sprintf("site: %-26s %5s   %4.0f s (load average now %.1f)", "all jobs", "", sum(took[, "cpu"]), load)),
               collapse = "\n"))
 pkgdown::build_articles_index(pkg)
-pkgdown::build_news(pkg, preview = FALSE)
 pkgdown:::build_sitemap(pkg)   # (not exported; build_site() calls it)
 pkgdown:::build_redirects(pkg)
 pkgdown::build_search(pkg)
+# The search index as a script as well: a page opened from file:// may load
+# a script but not fetch() a JSON file (pkgdown/assets/pkgdown.js loads it).
+writeLines(c("window.pkgdownSearchIndex = ", readLines("site/search.json", warn = FALSE), ";"), "site/search-index.js")

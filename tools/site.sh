@@ -25,12 +25,10 @@ start=$(date +%s)
 # file an article writes itself (the GIF of looking-at-hands) refuses to
 # overwrite the last build's
 rm -rf site
-# (pkgdown::build_site()'s steps, the reference and the articles on both
-# cores: tools/site-build.R)
+# (pkgdown::build_site()'s steps, the reference, the articles, the home
+# page and the changelog on both cores, and the search index as a script
+# for pages opened from file://: tools/site-build.R)
 Rscript tools/site-build.R
-# The search index as a script as well: a page opened from file:// may load
-# a script but not fetch() a JSON file (pkgdown/assets/pkgdown.js loads it).
-Rscript -e 'writeLines(c("window.pkgdownSearchIndex = ", readLines("site/search.json", warn = FALSE), ";"), "site/search-index.js")'
 echo "site: built in $(( $(date +%s) - start )) s"
 Rscript tools/check-site.R site
 # CPU seconds beside the elapsed ones: on a shared machine the elapsed time
