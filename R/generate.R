@@ -530,10 +530,25 @@ phase_donors <- function(ph, len, disp) {
     train <- cbind(train, sweep(ph$displacement, 2, s, "/"))
     new <- cbind(new, sweep(disp, 2, s, "/"))
   }
-  D <- outer(rowSums(new^2), rowSums(train^2), "+") - 2 * tcrossprod(new, train)
   rank <- sample.int(k, n, replace = TRUE)
-  vapply(seq_len(n), function(i) order(D[i, ])[rank[i]], integer(1))
+  # in blocks of rows, so a batch of millions never holds all its distances;
+  # the k nearest of every row by k passes of max.col(), not an order() a row
+  out <- integer(n)
+  for (first in seq(1L, n, by = phase_block)) {
+    rows <- first:min(n, first + phase_block - 1L)
+    D <- outer(rowSums(new[rows, , drop = FALSE]^2), rowSums(train^2), "+") -
+      2 * tcrossprod(new[rows, , drop = FALSE], train)
+    at <- cbind(seq_along(rows), 0L)
+    for (r in seq_len(k)) {
+      at[, 2] <- max.col(-D, ties.method = "first")
+      hit <- rank[rows] == r
+      out[rows[hit]] <- at[hit, 2]
+      D[at] <- Inf
+    }
+  }
+  out
 }
+phase_block <- 4096L
 phase_neighbours <- 5L
 
 # Residual resampling (fit_grasp_model(residuals = "resample")): each

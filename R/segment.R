@@ -221,8 +221,8 @@ still_phases <- function(x, motion) {
     }
     onset <- r[motion$start[i], ]
     end <- r[motion$end[i], ]
-    rest_path[[i]] <- unname(sweep(r[rest_rows, , drop = FALSE], 2, onset))
-    hold_path[[i]] <- unname(sweep(r[hold_rows, , drop = FALSE], 2, end))
+    rest_path[[i]] <- unname(r[rest_rows, , drop = FALSE] - rep(onset, each = length(rest_rows)))
+    hold_path[[i]] <- unname(r[hold_rows, , drop = FALSE] - rep(end, each = length(hold_rows)))
     displacement[i, ] <- end - onset
   }
   list(rest = as.integer(motion$rest), hold = as.integer(motion$hold),
