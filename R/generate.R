@@ -77,11 +77,15 @@ generics::generate
 #' **Rest and hold.** A model fitted to recordings trimmed to their motion
 #' (`fit_grasp_model(motion = )`) remembers how long the recordings rested
 #' before and held after it, and how much the hand trembled meanwhile;
-#' generated grasps get a rest and a hold drawn from those (the first and
-#' last posture, with the same tremor), so they look like the recordings.
-#' The rest and the hold come together from one training recording whose
-#' motion is among the five nearest in length to the generated motion, so
-#' they follow it as in the recordings (a long reach, a short hold).
+#' generated grasps get a rest and a hold drawn from those, so they look
+#' like the recordings. The rest and the hold come together from one
+#' training recording whose motion is among the five nearest to the
+#' generated motion in length and in how far each channel moved, and follow
+#' that recording's own path (its drift and tremor) about the generated
+#' motion's first and last posture: a long reach comes with a short hold as
+#' in the recordings, and a hold settles back after the reach (real fingers
+#' relax a little once they grasp) by about as much as the recordings'
+#' holds after a reach of that size.
 #'
 #' @param x A `grasp_model` ([fit_grasp_model()]) or `grasp_models`
 #'   ([fit_grasp_models()]).
@@ -472,44 +476,83 @@ stack_scores <- function(parts, N, ids, model) {
 
 
 # Rest before and hold after each generated motion: the rest and hold of
-# one training recording whose motion is about as long as the generated one
-# (still_phases() keeps them together), the first and last posture held with
-# the tremor measured in the recordings' still phases.
+# one training recording whose motion is like the generated one (in length
+# and in displacement, phase_donors()), each as that recording's own path
+# (its drift and tremor) about the generated motion's first or last posture.
+# A hold is not frozen: the fingers settle back after the reach, by more the
+# further they reached (see still_phases()), so a donor that reached about
+# as far carries a settling of about the right size.
 add_still_phases <- function(got, model) {
-  ph <- model$phases
-  n <- length(got$recordings)
-  pick <- phase_donors(ph$motion, vapply(got$recordings, nrow, integer(1)), length(ph$rest))
-  rest <- ph$rest[pick]
-  hold <- ph$hold[pick]
+  ph <- still_paths(model$phases, length(model$dofs))
   p <- length(model$dofs)
-  still <- function(row, m) {
-    if (m == 0L) return(NULL)
-    matrix(row, m, p, byrow = TRUE) + sweep(matrix(stats::rnorm(m * p), m, p), 2, ph$tremor, "*")
-  }
-  got$recordings <- lapply(seq_len(n), function(i) {
+  len <- vapply(got$recordings, nrow, integer(1))
+  disp <- matrix(vapply(got$recordings, function(r) r[nrow(r), ] - r[1, ], numeric(p)), ncol = p, byrow = TRUE)
+  pick <- phase_donors(ph, len, disp)
+  got$recordings <- lapply(seq_along(got$recordings), function(i) {
     r <- got$recordings[[i]]
-    out <- rbind(still(r[1, ], rest[i]), r, still(r[nrow(r), ], hold[i]))
+    rest <- ph$rest_path[[pick[i]]]
+    hold <- ph$hold_path[[pick[i]]]
+    out <- rbind(rest + rep(r[1, ], each = nrow(rest)), r, hold + rep(r[nrow(r), ], each = nrow(hold)))
     colnames(out) <- colnames(r)
     out
   })
-  got$n_frames <- got$n_frames + as.integer(rest + hold)
+  got$n_frames <- got$n_frames + ph$rest[pick] + ph$hold[pick]
   got
 }
 
-# For each generated motion length, a training recording drawn at random
-# from the `phase_neighbours` whose motions are nearest in length (by rank:
-# the window of that many sorted lengths around it), so the rest and hold
-# follow the motion as in the recordings, resampled rather than copied. A
-# model fitted before the motion lengths were kept pairs at random.
-phase_donors <- function(motion, len, N) {
-  n <- length(len)
-  if (is.null(motion)) return(sample.int(N, n, replace = TRUE))
-  k <- min(phase_neighbours, N)
-  ord <- order(motion)
-  at <- findInterval(len, motion[ord])           # sorted lengths <= each length
-  first <- pmin(pmax(at - k %/% 2L + 1L, 1L), N - k + 1L)
-  ord[first + sample.int(k, n, replace = TRUE) - 1L]
+# The still phases' paths of a model; a model fitted before they were kept
+# (lengths and tremor only) gets paths of white tremor about the posture.
+still_paths <- function(ph, p) {
+  if (!is.null(ph$rest_path)) return(ph)
+  noise <- function(m) matrix(stats::rnorm(m * p), m, p) * rep(ph$tremor, each = m)
+  ph$rest_path <- lapply(ph$rest, noise)
+  ph$hold_path <- lapply(ph$hold, noise)
+  ph
 }
+
+# For each generated motion (its length `len` and displacement `disp`, one
+# row each) a training recording drawn at random from the
+# `phase_neighbours` nearest: distance in the log motion length (weighted to
+# count as much as all channels together, as the rest and hold lengths
+# follow it: a long reach, a short hold) and in each channel's displacement,
+# every coordinate in units of its spread over the training recordings. So
+# the rest and hold follow the motion as in the recordings, resampled rather
+# than copied. A model fitted before the displacements were kept matches on
+# length alone; one fitted before the motion lengths were kept pairs at
+# random.
+phase_donors <- function(ph, len, disp) {
+  N <- length(ph$rest)
+  n <- length(len)
+  if (is.null(ph$motion)) return(sample.int(N, n, replace = TRUE))
+  k <- min(phase_neighbours, N)
+  unit <- function(v) { s <- stats::sd(v); if (is.finite(s) && s > 0) s else 1 }
+  lm <- log(ph$motion)
+  train <- cbind(lm / unit(lm) * sqrt(NCOL(disp)))
+  new <- cbind(log(len) / unit(lm) * sqrt(NCOL(disp)))
+  if (!is.null(ph$displacement)) {
+    s <- apply(ph$displacement, 2, unit)
+    train <- cbind(train, sweep(ph$displacement, 2, s, "/"))
+    new <- cbind(new, sweep(disp, 2, s, "/"))
+  }
+  rank <- sample.int(k, n, replace = TRUE)
+  # in blocks of rows, so a batch of millions never holds all its distances;
+  # the k nearest of every row by k passes of max.col(), not an order() a row
+  out <- integer(n)
+  for (first in seq(1L, n, by = phase_block)) {
+    rows <- first:min(n, first + phase_block - 1L)
+    D <- outer(rowSums(new[rows, , drop = FALSE]^2), rowSums(train^2), "+") -
+      2 * tcrossprod(new[rows, , drop = FALSE], train)
+    at <- cbind(seq_along(rows), 0L)
+    for (r in seq_len(k)) {
+      at[, 2] <- max.col(-D, ties.method = "first")
+      hit <- rank[rows] == r
+      out[rows[hit]] <- at[hit, 2]
+      D[at] <- Inf
+    }
+  }
+  out
+}
+phase_block <- 4096L
 phase_neighbours <- 5L
 
 # Residual resampling (fit_grasp_model(residuals = "resample")): each

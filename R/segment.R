@@ -192,24 +192,42 @@ resolve_motion <- function(x, motion, call = rlang::caller_env()) {
 # between them (generation draws the three together: on flexglove a long
 # motion comes with a short hold, r = -0.4, and rest and hold drawn apart
 # from the motion made generated durations too spread, KS 0.29 against 0.20
-# real-vs-real), and the tremor per channel (the standard deviation of each
+# real-vs-real), the path of every rest and hold as deviations from the
+# posture it leads into (the onset) or follows (the end), the motion's
+# displacement (end posture less onset posture) that generation matches
+# donors on, and the tremor per channel (the standard deviation of each
 # channel about its mean within a still phase, pooled over the phases at
-# least 3 frames long).
+# least 3 frames long). A hold is no frozen posture: on flexglove the
+# fingers relax back by about a tenth of the reach after it (the drift
+# over the hold against the reach's displacement, slope -0.05 to -0.10),
+# and holding the end posture with tremor alone put the postures at 75% and
+# 100% of a recording 1.2-1.3 times as far from the other participant's.
 still_phases <- function(x, motion) {
   p <- length(x$dofs)
   ss <- numeric(p)
   df <- 0
-  for (i in seq_along(x)) {
+  n <- length(x)
+  rest_path <- hold_path <- vector("list", n)
+  displacement <- matrix(0, n, p, dimnames = list(NULL, x$dofs))
+  for (i in seq_len(n)) {
     r <- x$recordings[[i]]
-    for (rows in list(seq_len(motion$rest[i]), motion$end[i] + seq_len(motion$hold[i]))) {
+    rest_rows <- seq_len(motion$rest[i])
+    hold_rows <- motion$end[i] + seq_len(motion$hold[i])
+    for (rows in list(rest_rows, hold_rows)) {
       if (length(rows) < 3L) next
       seg <- r[rows, , drop = FALSE]
       ss <- ss + colSums(sweep(seg, 2, colMeans(seg))^2)
       df <- df + length(rows) - 1
     }
+    onset <- r[motion$start[i], ]
+    end <- r[motion$end[i], ]
+    rest_path[[i]] <- unname(r[rest_rows, , drop = FALSE] - rep(onset, each = length(rest_rows)))
+    hold_path[[i]] <- unname(r[hold_rows, , drop = FALSE] - rep(end, each = length(hold_rows)))
+    displacement[i, ] <- end - onset
   }
   list(rest = as.integer(motion$rest), hold = as.integer(motion$hold),
        motion = as.integer(motion$end - motion$start + 1L),
+       rest_path = rest_path, hold_path = hold_path, displacement = displacement,
        tremor = stats::setNames(if (df > 0) sqrt(ss / df) else numeric(p), x$dofs))
 }
 

@@ -29,6 +29,19 @@
 # components per score instead of 1 (seeds 1-3, 3 repetitions, at d288269):
 # 1.22 / 1.35 / 1.44 and 1.26 / 1.39 / 1.51 against 1.37 / 1.36 / 1.35, no
 # robust gain.
+# After the donor still paths (2026-11-28, branch gen125, seed 1, 3
+# repetitions, 10 s CPU a block; main at 43d393d beside it, copula / kernel /
+# thesis): all 1.22 / 1.17 / 1.28 -> 1.16 / 1.07 / 1.24; @25% 1.43 / 1.40 /
+# 1.63 -> 1.42 / 1.30 / 1.56; @50% 1.15 / 1.05 / 1.34 -> 1.09 / 1.01 / 1.25;
+# @75% 1.09 / 1.05 / 1.34 -> 0.99 / 0.93 / 1.20; @100% 1.16 / 0.95 / 1.22 ->
+# 0.97 / 0.94 / 1.18; marginals 1.13 / 1.01 / 1.14 -> 1.03 / 1.01 / 1.21;
+# but log duration 0.92 / 0.71 / 0.72 -> 1.44 / 1.29 / 1.43 (the durations'
+# KS ratio over 5 seeds x 5 repetitions held: 1.03 -> 1.00, 1.06 -> 1.06;
+# choosing donors among the 10 nearest in length first gave 1.69 / 0.96 /
+# 1.19 and halved the settling a planted test recovers, not kept). The rest
+# itself is not the 25% gap: the real recordings with their rest replaced by
+# the onset posture plus tremor keep the same MMD; the gap at 25% is in the
+# generated early reach.
 #
 #   Rscript bench/bench-real-generation-blocks.R    (BENCH_QUICK=1: 1 repetition; BENCH_SEEDS="1:5")
 

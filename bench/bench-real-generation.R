@@ -32,6 +32,26 @@
 # 1.03, copula 1.26, kernel 1.26. Read by read_glove() from the shipped
 # copy instead (issue 40's measure, seeds 1-5, 5 repetitions): kernel 1.21
 # (1.18-1.24), copula 1.28 (1.23-1.34), thesis 1.23 (1.11-1.31).
+# The still phases (2026-11-28, branch gen125): a hold is no frozen
+# posture. The real recordings' own motions with their rest replaced by the
+# onset posture plus tremor keep their MMD ratio (1.00 at every block); with
+# their hold replaced by the end posture plus tremor they go to 1.19 / 1.28
+# at the 75% / 100% postures (the fingers settle back by about a tenth of
+# the reach), and with the rest and hold paths of another recording among
+# the 5 nearest in motion length and displacement back to 0.99 / 1.04.
+# Generation now does that. Read by read_glove() as bench-real-generation-
+# blocks.R reads it, participant folds, seeds 1-5, 5 repetitions each,
+# thesis and copula fitted together (about 10 s CPU a seed, load 5-20):
+# thesis 1.28 (1.17-1.38) -> 1.21 (1.15-1.29), copula 1.30 (1.28-1.31) ->
+# 1.20 (1.15-1.25); duration KS ratio 1.06 -> 1.06 and 1.03 -> 1.00; no
+# generated frame outside the recorded range. Doubtful: the simulated wide
+# glove (15 channels, 100 Hz, 1.4 s rest, 5 folds by recording, seeds 1-4,
+# 3 repetitions) went thesis 1.44 / 1.47 / 0.94 / 1.22 -> 1.61 / 1.79 /
+# 1.11 / 0.96 and copula 1.40 / 1.86 / 1.91 / 1.11 -> 1.47 / 2.38 / 1.92 /
+# 1.20: its real-vs-real MMD is 0.02-0.05 (one person, folds by recording),
+# so the ratios swing by 0.3 with the seed, and its still phases are flat by
+# construction (its own recordings with flat or donor holds have the same
+# MMD), but the means moved the wrong way by 0.1-0.17.
 #
 # Needs the flexglove data set (HANDMOTION_SHARED, default /work/shared):
 #   Rscript bench/bench-real-generation.R     (BENCH_QUICK=1: 1 repetition, 3 types)

@@ -67,3 +67,55 @@ test_that("generated grasps never leave the recorded range of a raw-count sensor
     expect_true(all(all_frames >= 0 & all_frames <= 1023))
   }
 })
+
+# A rest that drifts into the onset and a hold that settles back after the
+# reach, by a planted share of how far each channel reached (as flexglove's
+# fingers relax by about a tenth after the grasp).
+plant_settling <- function(n_rec = 120, settle = -0.15, drift = 20, seed = 5) {
+  withr::with_seed(seed, {
+    p <- 2L
+    recs <- lapply(seq_len(n_rec), function(i) {
+      n_rest <- sample(40:60, 1)
+      n_mot <- sample(60:90, 1)
+      n_hold <- 120L
+      tau <- seq(0, 1, length.out = n_mot)
+      mj <- 10 * tau^3 - 15 * tau^4 + 6 * tau^5
+      start <- 600 + stats::rnorm(p, 0, 5)
+      amp <- -stats::runif(p, 150, 450)
+      relax <- 1 - exp(-seq_len(n_hold) / 30)
+      X <- rbind(outer(seq(-1, 0, length.out = n_rest + 1)[-(n_rest + 1)], rep(drift, p)) +
+                   matrix(start, n_rest, p, byrow = TRUE),
+                 outer(mj, amp) + matrix(start, n_mot, p, byrow = TRUE),
+                 outer(relax, settle * amp) + matrix(start + amp, n_hold, p, byrow = TRUE))
+      X <- X + matrix(stats::rnorm(length(X)), nrow(X))
+      colnames(X) <- paste0("ch", seq_len(p))
+      X
+    })
+    grasps(recs, meta = data.frame(grasp = rep("a", n_rec), subject = "S1"), rate = 100, unit = "raw")
+  })
+}
+
+test_that("generated holds settle back and rests drift as the recordings' do", {
+  g <- plant_settling()
+  for (dep in c("independent", "copula")) {
+    m <- fit_grasp_model(g, seed = 1, dependence = dep)
+    expect_equal(m$settings$motion, "trim")
+    gen <- generate(m, n = 300, seed = 3)
+    motion <- generate(m, n = 300, seed = 3, phases = FALSE)
+    first <- t(vapply(motion$recordings, function(r) r[1, ], numeric(2)))
+    last <- t(vapply(motion$recordings, function(r) r[nrow(r), ], numeric(2)))
+    end <- t(vapply(gen$recordings, function(r) r[nrow(r), ], numeric(2)))
+    start <- t(vapply(gen$recordings, function(r) r[1, ], numeric(2)))
+    for (j in 1:2) {
+      # the hold settles back by the planted share of the generated reach
+      # (what the detected end leaves of it: about 0.9 of the settling's
+      # full size after 1.2 s, less the part inside the detected motion)
+      reach <- last[, j] - first[, j]
+      slope <- unname(stats::coef(stats::lm(I(end[, j] - last[, j]) ~ reach))[2])
+      expect_gt(slope, -0.15 - 0.05)
+      expect_lt(slope, -0.15 + 0.07)
+      # the rest starts below the onset posture by the planted drift, within 5 counts
+      expect_equal(mean(first[, j] - start[, j]), 20, tolerance = 5 / 20)
+    }
+  }
+})
