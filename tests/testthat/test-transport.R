@@ -20,3 +20,9 @@ test_that("under a sequential plan nothing is packed", {
   g <- simulate_grasps(subjects = 1, grasps = "Tripod", seed = 3)
   expect_identical(pack_for_worker(g), g)
 })
+
+test_that("the compiled stacking is unlist()", {
+  recs <- list(a = matrix(1:6 + 0.5, 3), b = matrix(numeric(0), 0, 2), c = matrix(c(-1, 2), 1))
+  expect_identical(.Call(hm_stack_values, recs), unlist(recs, use.names = FALSE))
+  expect_error(.Call(hm_stack_values, list(matrix(1:4, 2))), "not double")
+})
