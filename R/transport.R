@@ -9,9 +9,10 @@
 
 # A grasps set for a worker: the set without its recordings, plus their
 # values one recording after the other (`values`) and frame counts. Sets whose recordings are not all
-# double matrices named as the set's DoFs (nothing else) go as they are.
+# double matrices named as the set's DoFs (nothing else), and anything that
+# is not a set (NULL: no temperature sample), go as they are.
 pack_for_worker <- function(x) {
-  if (!ships_to_workers()) return(x)
+  if (!inherits(x, "grasps") || !ships_to_workers()) return(x)
   recs <- x$recordings
   dn <- list(NULL, x$dofs)
   plain <- vapply(recs, function(r) is.double(r) && identical(dimnames(r), dn), logical(1))

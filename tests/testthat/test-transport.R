@@ -26,3 +26,12 @@ test_that("the compiled stacking is unlist()", {
   expect_identical(.Call(hm_stack_values, recs), unlist(recs, use.names = FALSE))
   expect_error(.Call(hm_stack_values, list(matrix(1:4, 2))), "not double")
 })
+
+test_that("a set fitted without a temperature sample travels to workers (calibrate = FALSE)", {
+  future::plan(future::multisession, workers = 2)
+  on.exit(future::plan(future::sequential), add = TRUE)
+  expect_null(pack_for_worker(NULL))
+  g <- simulate_grasps(subjects = 3, grasps = c("Tripod", "Lateral"), seed = 3)
+  ev <- evaluate_loso(g, folds = 3)
+  expect_s3_class(ev, "grasp_evaluation")
+})
