@@ -5,8 +5,9 @@
 
 #' Fit the generative model of every grasp type
 #'
-#' Splits `x` by grasp type and calls [fit_grasp_model()] on each type through
-#' [future.apply::future_lapply()], so the types are fitted in parallel under
+#' Splits `x` by grasp type and calls [fit_grasp_model()] on each type in
+#' futures (two per worker, each holding types of about equal work; one per
+#' type under a scheduler), so the types are fitted in parallel under
 #' whatever [future::plan()] the user has set (sequentially by default).
 #' A progress bar (one step per type, through `progressr`, so it works from
 #' future workers; its look follows [progressr::handlers()]) appears when the
@@ -144,17 +145,15 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   names(fits) <- types
   cached <- if (is.null(paths)) rep(FALSE, length(types)) else file.exists(paths)
   fits[cached] <- lapply(paths[cached], readRDS)
-  # Largest types first, in two futures per worker (future.scheduling = 2):
-  # the first two futures carry the largest types, and the worker that
-  # finishes first takes the next, so neither idles long while the other has
-  # a long type left. Measured at ten times the default data on two quiet
-  # workers (89,100 recordings, one run each): one future per type 36.4 s
-  # (each of 33 round trips left a worker idle while the main process took
-  # its model in and sent the next type), one per worker 32.5 s (every
-  # model came back at the end), two per worker 24.6-26.4 s, four 29.0 s.
-  # Each type keeps its own stream, so the models do not depend on the order.
+  # Two futures per worker, balanced on each type's work and packed as they
+  # start (future_map_chunks(), R/future-chunks.R). Measured at ten times the
+  # default data on two quiet workers (89,100 recordings, one run each): one
+  # future per type 36.4 s (each of 33 round trips left a worker idle while
+  # the main process took its model in and sent the next type), one per
+  # worker 32.5 s (every model came back at the end), two per worker
+  # 24.6-26.4 s, four 29.0 s. Each type keeps its own stream, so the models
+  # do not depend on the plan, the chunks or their order.
   todo <- which(!cached)
-  todo <- todo[order(-type_work(parts[todo]))]
   # the recordings the temperature is fitted on: each type's worker scores
   # them under its model as soon as it has fitted it, so the main process
   # does not score them under every model after the last type (at ten times
@@ -163,14 +162,13 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   sample_d <- vector("list", length(types))
   names(sample_d) <- types
   if (length(todo)) {
+    if (is.null(streams)) streams <- element_streams(sample.int(.Machine$integer.max, 1L), length(types))
     res <- with_progress_shown({
       p <- hm_progressor(length(todo))
-      # (a top-level function and only each type's own data go to the workers)
-      future.apply::future_mapply(
-        fit_one_type, lapply(parts[todo], pack_for_worker), (paths %||% rep(NA_character_, length(types)))[todo],
-        MoreArgs = list(args = args, progress = p, sample = pack_for_worker(sample), distance = distance),
-        SIMPLIFY = FALSE, USE.NAMES = FALSE,
-        future.seed = if (is.null(streams)) TRUE else streams[todo], future.scheduling = 2)
+      future_map_chunks(parts[todo], fit_one_type,
+                        each = list(save_to = (paths %||% rep(NA_character_, length(types)))[todo]),
+                        more = list(args = args, progress = p, sample = sample, distance = distance),
+                        streams = streams[todo], work = type_work(parts[todo]))
     })
     fits[todo] <- lapply(res, `[[`, "model")
     sample_d[todo] <- lapply(res, `[[`, "sample_distance")

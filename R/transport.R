@@ -14,15 +14,15 @@
 pack_for_worker <- function(x) {
   if (!inherits(x, "grasps") || !ships_to_workers()) return(x)
   recs <- x$recordings
-  dn <- list(NULL, x$dofs)
-  plain <- vapply(recs, function(r) is.double(r) && identical(dimnames(r), dn), logical(1))
-  if (!all(plain)) return(x)
+  # each matrix's values one after the other, copied in C
+  # (src/stack-values.c, NULL unless every recording is plain; rbind() of
+  # 2,700 matrices with column names took as long as serialising them,
+  # unlist() a second for the 33 types)
+  values <- .Call(hm_stack_values, recs, x$dofs)
+  if (is.null(values)) return(x)
   shell <- unclass(x)
   shell$recordings <- list()       # (kept in its place among the fields)
-  # each matrix's values one after the other, copied in C
-  # (src/stack-values.c; rbind() of 2,700 matrices with column names took as
-  # long as serialising them, unlist() a second for the 33 types)
-  structure(list(shell = shell, class = class(x), values = .Call(hm_stack_values, recs),
+  structure(list(shell = shell, class = class(x), values = values,
                  n_frames = vapply(recs, nrow, integer(1)), ids = names(recs)),
             class = "handmotion_packed")
 }

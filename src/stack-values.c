@@ -2,16 +2,49 @@
  * unlist(recordings, use.names = FALSE) gives), in one pass of memcpy():
  * packing a type's recordings for a worker (R/transport.R) with unlist()
  * took a second at ten times the default data, serially, before the first
- * worker could start. */
+ * worker could start.
+ *
+ * Only plain recordings are packed: double matrices whose dimnames are
+ * exactly list(NULL, dofs) and nothing else among their attributes besides
+ * dim, since the worker rebuilds every recording from the values, its frame
+ * count and the set's DoFs alone. Anything else returns NULL (the set then
+ * travels as it is). Checked here because an R-level vapply() of
+ * identical(dimnames(r), ...) cost half a second of the main process at ten
+ * times the default data. */
 #include <R.h>
 #include <Rinternals.h>
 #include <string.h>
 
-SEXP hm_stack_values(SEXP recs) {
+static int same_strings(SEXP a, SEXP b) {
+  if (TYPEOF(a) != STRSXP || XLENGTH(a) != XLENGTH(b)) return 0;
+  for (R_xlen_t j = 0; j < XLENGTH(a); j++) {
+    SEXP x = STRING_ELT(a, j), y = STRING_ELT(b, j);
+    if (x == y) continue;  /* the same cached string */
+    if (x == NA_STRING || y == NA_STRING || strcmp(CHAR(x), CHAR(y)) != 0 ||
+        Rf_getCharCE(x) != Rf_getCharCE(y)) return 0;
+  }
+  return 1;
+}
+
+static int plain_recording(SEXP x, SEXP dofs) {
+  if (TYPEOF(x) != REALSXP || OBJECT(x)) return 0;
+  int n_attr = 0;
+  for (SEXP a = ATTRIB(x); a != R_NilValue; a = CDR(a)) n_attr++;
+  if (n_attr != 2) return 0;  /* dim and dimnames, nothing else */
+  SEXP dim = getAttrib(x, R_DimSymbol);
+  if (TYPEOF(dim) != INTSXP || XLENGTH(dim) != 2 || INTEGER(dim)[1] != XLENGTH(dofs)) return 0;
+  SEXP dn = getAttrib(x, R_DimNamesSymbol);
+  if (TYPEOF(dn) != VECSXP || XLENGTH(dn) != 2 || VECTOR_ELT(dn, 0) != R_NilValue) return 0;
+  if (getAttrib(dn, R_NamesSymbol) != R_NilValue) return 0;
+  return same_strings(VECTOR_ELT(dn, 1), dofs);
+}
+
+SEXP hm_stack_values(SEXP recs, SEXP dofs) {
+  if (TYPEOF(recs) != VECSXP || TYPEOF(dofs) != STRSXP) return R_NilValue;
   R_xlen_t n = XLENGTH(recs), total = 0;
   for (R_xlen_t r = 0; r < n; r++) {
     SEXP x = VECTOR_ELT(recs, r);
-    if (TYPEOF(x) != REALSXP) error("hm_stack_values: recording %ld is not double", (long) r + 1);
+    if (!plain_recording(x, dofs)) return R_NilValue;
     total += XLENGTH(x);
   }
   SEXP out = PROTECT(allocVector(REALSXP, total));

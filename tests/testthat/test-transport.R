@@ -21,10 +21,27 @@ test_that("under a sequential plan nothing is packed", {
   expect_identical(pack_for_worker(g), g)
 })
 
-test_that("the compiled stacking is unlist()", {
-  recs <- list(a = matrix(1:6 + 0.5, 3), b = matrix(numeric(0), 0, 2), c = matrix(c(-1, 2), 1))
-  expect_identical(.Call(hm_stack_values, recs), unlist(recs, use.names = FALSE))
-  expect_error(.Call(hm_stack_values, list(matrix(1:4, 2))), "not double")
+test_that("the compiled stacking is unlist() of plain recordings, NULL for any other", {
+  dofs <- c("x", "y")
+  plain <- function(m) { dimnames(m) <- list(NULL, dofs); m }
+  recs <- list(a = plain(matrix(1:6 + 0.5, 3)), b = plain(matrix(numeric(0), 0, 2)), c = plain(matrix(c(-1, 2), 1)))
+  expect_identical(.Call(hm_stack_values, recs, dofs), unlist(recs, use.names = FALSE))
+  # each way a recording can differ from what the worker rebuilds
+  odd <- list(
+    integer = plain(matrix(1:4, 2)),
+    other_names = { m <- recs$a; colnames(m) <- c("x", "z"); m },
+    row_names = { m <- recs$a; rownames(m) <- 1:3; m },
+    named_dimnames = { m <- recs$a; names(dimnames(m)) <- c("frame", "dof"); m },
+    extra_attribute = structure(recs$a, unit = "deg"),
+    no_dimnames = matrix(1:6 + 0.5, 3),
+    three_columns = { m <- matrix(0, 2, 3); dimnames(m) <- list(NULL, c(dofs, "z")); m },
+    a_vector = c(x = 1, y = 2)
+  )
+  for (k in names(odd)) {
+    expect_null(.Call(hm_stack_values, c(recs, list(odd[[k]])), dofs), label = k)
+  }
+  # the same names as different (but equal) strings still match
+  expect_identical(.Call(hm_stack_values, recs, paste0(c("x", "y"), "")), unlist(recs, use.names = FALSE))
 })
 
 test_that("a set fitted without a temperature sample travels to workers (calibrate = FALSE)", {
