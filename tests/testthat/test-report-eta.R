@@ -2,6 +2,12 @@
 # planted times (no clock): each test plants how long the steps really
 # take against the model and checks the estimate it must then give.
 
+# A machine measured as the reference one, quiet; and the same machine busy:
+# the calibration's process got a third of a core, with six other jobs on
+# two cores (fed, never timed).
+quiet_pace <- pace_summary(cpu = pace_reference_cpu, elapsed = pace_reference_cpu, load = 0, cores = 2L)
+busy_pace <- pace_summary(cpu = pace_reference_cpu, elapsed = 3 * pace_reference_cpu, load = 6, cores = 2L)
+
 # Run planted steps through the estimator: `true` seconds per step, `ticks`
 # progress steps per step (0: none) taking equal shares of the step after
 # a start-up of `startup` seconds. Returns the estimate and the true time

@@ -1,3 +1,8 @@
+# A machine measured as the reference one, quiet; and the same machine busy:
+# the calibration's process got a third of a core, with six other jobs on
+# two cores (fed, never timed).
+quiet_pace <- pace_summary(cpu = pace_reference_cpu, elapsed = pace_reference_cpu, load = 0, cores = 2L)
+
 test_that("the step counter counts each step once, the page included", {
   settings <- list(subjects = 2, grasps = c(17, 25), folds = 2)
   lines <- character()
