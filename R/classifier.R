@@ -3,7 +3,7 @@
 # generics every operation of the family finds a classifier's parts
 # through. predict(), classify(), evaluate_loso(), summary() and print()
 # are written once against these generics, so a new classifier is one file
-# holding its fit and its methods (tests/testthat/test-classifier-family.R
+# holding its fit and its methods (tests/testthat/test-classifier.R
 # builds one in the test alone):
 #
 #   classifier_distances()  recordings x classes, smaller is closer (required)
@@ -13,10 +13,10 @@
 #                           the family fields, read alike for every member
 #
 # The members: the FPCA model set (R/grasp-models.R, class grasp_models),
-# the discriminant (R/grasp-classifier.R, grasp_discriminant), the
-# last-frame PCA (R/last-frame-pca.R, last_frame_pca), the weighted FPCA
-# distance (R/weighted-fpca.R, weighted_fpca) and the early recogniser
-# (R/grasp-recognizer.R, grasp_recognizer).
+# the discriminant (R/classifier-discriminant.R, grasp_discriminant), the
+# last-frame PCA (R/classifier-last-frame.R, last_frame_pca), the weighted FPCA
+# distance (R/classifier-weighted-fpca.R, weighted_fpca) and the early recogniser
+# (R/classifier-recognizer.R, grasp_recognizer).
 
 # The one constructor of the family. `...` are the classifier's own named
 # fields; the family's fields are

@@ -25,7 +25,7 @@ new_grasp_model <- function(grasp, grasp_id, dofs, rate, unit, target_length, ar
   # model is the same list as before the kernel model existed)
   if (settings$dependence == "kernel") model$dependence$kernel <- fit_score_kernel(model)
   # the joint density of the FPC scores that the likelihood distance reads
-  # (R/fpca-likelihood.R): fitted once here, where the scores are, not at
+  # (R/classifier-fpca-likelihood.R): fitted once here, where the scores are, not at
   # every prediction (33 types re-fitted it at each call: 2.6 s of the
   # default data's 4 s in-sample calibration, on one core)
   model$likelihood_kernel <- likelihood_score_kernel(model)

@@ -320,7 +320,7 @@ new_grasp_models <- function(models, seed = NULL, levels = NULL, temperature = N
 }
 
 # The set in the classifier family: its distances are the FPCA distances
-# (fpca_distances(), R/classify.R), its classes the fitted types.
+# (fpca_distances(), R/classifier-classify.R), its classes the fitted types.
 #' @export
 classifier_distances.grasp_models <- function(object, new_data, ..., call = rlang::caller_env()) {
   fpca_distances(object, new_data, call = call)

@@ -4,7 +4,7 @@
 # The file name carries the metadata (object, scenario, action/hand or Feix
 # grasp, data type rad/raw, trial counter, subject). A file becomes a grasps
 # object of one recording; a directory becomes one grasps object of every
-# readable file plus a report of the files that failed (see read-report.R).
+# readable file plus a report of the files that failed (see read-failures.R).
 
 graspdb14_n_fields <- 30L
 graspdb14_nominal_rate <- 60

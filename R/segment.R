@@ -1,7 +1,7 @@
 # Where the grasping motion is. Real recordings start with the hand at rest
 # and end holding the object; the thesis' recordings were cut to the motion.
 # The signals (each channel's noise, departure from rest and rate, in noise
-# sds) are in motion-signals.R, shared with cut_motion() and the recogniser's
+# sds) are in segment-signals.R, shared with cut_motion() and the recogniser's
 # onset detector.
 
 #' Find the grasping motion in recordings that rest before and hold after it

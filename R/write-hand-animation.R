@@ -1,6 +1,6 @@
 # Hand motion as a video file: the solid hands of the still pictures (the
 # shape of hand_geometry(), cut into polygons by solid_polygons()) drawn
-# frame by frame with grid by a renderer made for frames (R/hand-frames.R),
+# frame by frame with grid by a renderer made for frames (R/write-hand-animation-frames.R),
 # assembled into a GIF by magick or an MP4 by ffmpeg. Several hands stand
 # side by side and keep one clock, so a recorded and a generated grasp can
 # be compared in one file.

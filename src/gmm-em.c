@@ -29,7 +29,7 @@
  * with the R version to about 1e-11 (for d = 3 and 4 the fits of the test
  * clouds to about 1e-13); SQUAREM's step length divides by a second
  * difference that near the optimum is mostly rounding, so on a crawling
- * cloud the two may stop some iterations apart (tests/testthat/test-gmm.R).
+ * cloud the two may stop some iterations apart (tests/testthat/test-gmm-fit.R).
  * Sums over points are plain double sums in point order.
  *
  * Entry points:

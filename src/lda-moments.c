@@ -1,5 +1,5 @@
 /* The one pass over the rows that the shrinkage LDA's shrinkage intensity
- * needs (R/shrunk-lda.R): with x_ki the residual of row k from its class
+ * needs (R/classifier-shrunk-lda.R): with x_ki the residual of row k from its class
  * mean, scaled by inv_s_i (1 / the residual's standard deviation of feature
  * i, 0 for a feature without variance),
  *

@@ -1,5 +1,5 @@
 /* The per-channel statistics find_motion() reads from every recording
- * (R/motion-signals.R): the running median of 3 frames with Tukey's end rule
+ * (R/segment-signals.R): the running median of 3 frames with Tukey's end rule
  * (stats::runmed(v, 3, endrule = "median")), the median of each smoothed
  * channel over the first `rest_n` frames (the rest level), and the MAD of
  * each raw channel's lag-`lag` second differences (the noise, before its

@@ -49,3 +49,13 @@ bmul <- function(A, B) {
   }
   C
 }
+
+# A random HUST-shaped recording of `frames` frames written as BVH at `rate`
+# into a temporary file (removed when the calling test ends).
+written_bvh <- function(seed, frames, rate, env = parent.frame()) {
+  set.seed(seed)
+  rec <- matrix(runif(frames * 16, -10, 80), frames, 16, dimnames = list(NULL, hust_dofs$name))
+  f <- withr::local_tempfile(fileext = ".bvh", .local_envir = env)
+  write_bvh(rec, f, rate = rate)
+  list(rec = rec, file = f)
+}

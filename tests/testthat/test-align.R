@@ -1,37 +1,3 @@
-# Planted truth for the alignment tests: recordings are a known smooth grasp
-# curve (3 DoFs) observed through known monotone time warps
-#   g_a(u) = u + a u (1 - u),  |a| < 1,
-# sampled at n_k equally spaced original frames, plus small noise. The warps'
-# parameters are balanced around 0, so the DBA template's time axis is (up to
-# noise) the curve's own, and recording k's true warping function is
-# w_k(j) = 1 + (n_k - 1) g_a^{-1}((j - 1) / (L - 1)).
-grasp_curve <- function(u) {
-  cbind(a = 60 * stats::plogis((u - 0.45) / 0.07), b = 30 * sin(pi * u), c = 40 * u^2)
-}
-time_warp <- function(u, a) u + a * u * (1 - u)
-inverse_time_warp <- function(s, a) {
-  if (a == 0) return(s)
-  # root in [0, 1] of a u^2 - (1 + a) u + s = 0
-  ((1 + a) - sqrt((1 + a)^2 - 4 * a * s)) / (2 * a)
-}
-planted_alignment <- function(N = 20, centre = 40, noise = 0.3, seed = 2) {
-  withr::with_seed(seed, {
-    a <- seq(-0.6, 0.6, length.out = N)
-    n <- round(centre * (1 + 0.12 * stats::rnorm(N)))
-    recs <- lapply(seq_len(N), function(k) {
-      u <- seq(0, 1, length.out = n[k])
-      grasp_curve(time_warp(u, a[k])) + stats::rnorm(n[k] * 3, sd = noise)
-    })
-  })
-  names(recs) <- sprintf("rec%02d", seq_len(N))
-  list(recs = recs, a = a, n = n)
-}
-true_warps <- function(pl, L) {
-  s <- seq(0, 1, length.out = L)
-  t(vapply(seq_along(pl$n), function(k) 1 + (pl$n[k] - 1) * inverse_time_warp(s, pl$a[k]),
-           numeric(L)))
-}
-
 # ---- pairwise DTW: fast engine == dtw package ------------------------------
 
 test_that("fast pairwise DTW equals dtw::dtw on random inputs", {
@@ -271,24 +237,6 @@ test_that("recordings stalled on a rest or hold plateau are kept with a sensible
   expect_equal(ref_al$warps, al$warps, tolerance = 1e-10)
 })
 
-test_that("the slope-constrained kernel reproduces dtw's symmetricP05", {
-  withr::local_seed(21)
-  for (k in 1:4) {
-    x <- matrix(stats::rnorm(37 * 3), 37)
-    y <- matrix(stats::rnorm((30 + 8 * k) * 3), 30 + 8 * k)
-    fast <- handmotion:::dtw_slope_pair(x, y, "fast")
-    ref <- handmotion:::dtw_slope_pair(x, y, "reference")
-    expect_identical(fast$index1, ref$index1)
-    expect_identical(fast$index2, ref$index2)
-    expect_equal(fast$distance, ref$distance, tolerance = 1e-12)
-    # no frame of either series is matched more than three times in a row
-    expect_lte(max(rle(fast$index1)$lengths), 3)
-    expect_lte(max(rle(fast$index2)$lengths), 3)
-  }
-  # no path when one series is more than three times the other
-  expect_error(handmotion:::dtw_slope_pair(x[1:5, ], y), "slope constraint")
-})
-
 test_that("two recordings are enough", {
   pl <- planted_alignment(N = 2, seed = 8)
   al <- align_recordings(pl$recs)
@@ -429,38 +377,6 @@ test_that("apply_warp interpolates linearly, clamps and is exact on frames", {
   # linear functions are reproduced exactly at any resolution
   ramp <- cbind(seq(2, 50, length.out = 37))
   expect_equal(warp_linear(ramp, 11)[, 1], seq(2, 50, length.out = 11))
-})
-
-test_that("autoplot draws the frame-count histogram and one path per recording", {
-  pl <- planted_alignment(N = 6, seed = 14)
-  recs <- pl$recs
-  recs$stuck <- grasp_curve(seq(0, 0.45, length.out = 30))
-  al <- align_recordings(recs, max_iter = 3, features = "raw", degenerate_warps = "drop")
-  b <- ggplot2::ggplot_build(autoplot(al))
-  expect_length(b$data, 2)
-  expect_equal(sum(b$data[[1]]$count), 7)               # all original frame counts
-  lines <- b$data[[2]]
-  expect_equal(length(unique(lines$group)), 7)          # 6 kept + 1 dropped
-  expect_equal(nrow(lines), 7 * al$target_length)
-  expect_true("red" %in% lines$colour)                   # the dropped one highlighted
-  expect_equal(sum(lines$colour == "red"), al$target_length)
-  expect_identical(levels(b$layout$layout$panel), c("frame counts before warping", "warping paths"))
-  p <- ggplot2::ggplot_build(autoplot(al, type = "paths"))
-  expect_equal(range(p$data[[1]]$x), c(1, al$target_length))
-  h <- ggplot2::ggplot_build(autoplot(al, type = "histogram"))
-  expect_equal(sum(h$data[[1]]$count), 7)
-  # kept by the fallback: its kept path in orange, its degenerate DTW path in red
-  kept <- align_recordings(recs, max_iter = 3, features = "raw")
-  kl <- ggplot2::ggplot_build(autoplot(kept, type = "paths"))$data[[1]]
-  expect_equal(length(unique(kl$group)), 8)
-  expect_equal(sum(kl$colour == "darkorange"), kept$target_length)
-  expect_equal(sum(kl$colour == "red"), kept$target_length)
-  local_failing_alignment()
-  expect_warning(forced <- align_recordings(pl$recs), class = "handmotion_warning_linear_fallback")
-  lin <- ggplot2::ggplot_build(autoplot(forced, type = "paths"))
-  d <- lin$data[[1]]
-  # linear fallback: straight paths
-  expect_true(all(tapply(d$y, d$group, function(y) diff(range(diff(y)))) < 1e-8))
 })
 
 # ---- compiled helpers of the DBA loop (src/dtw.c, src/dba-prep.c) ----------

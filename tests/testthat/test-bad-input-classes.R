@@ -6,19 +6,6 @@
 # with a classed warning naming them. tools/bad-input-corpus.R runs some 780
 # such inputs; these are one or more per class.
 
-bad_fixture <- local({
-  cache <- NULL
-  function() {
-    if (is.null(cache)) {
-      g <- simulate_grasps(subjects = 3, grasps = 1:3, objects = 1, trials = 2, seed = 1)
-      cache <<- list(g = g, m = suppressWarnings(fit_grasp_model(g, grasp = 1, seed = 1)),
-                     ms = suppressWarnings(fit_grasp_models(g, seed = 1)),
-                     clf = fit_grasp_classifier(g))
-    }
-    cache
-  }
-})
-
 test_that("a grasps set edited after construction is refused where it is used, naming the recording", {
   f <- bad_fixture()
   g <- f$g
@@ -63,55 +50,6 @@ test_that("predict() and classify() leave a recording with NaN unclassified, wit
   expect_warning(classify(f$ms, nan), id, fixed = TRUE, class = "handmotion_warning_non_finite")
 })
 
-test_that("a fitted model whose parts were edited is refused by every verb, naming the part", {
-  f <- bad_fixture()
-  m <- f$m
-  w <- m
-  w$gmm[[1]]$weights[] <- NaN
-  for (verb in list(function(x) generate(x, n = 2), function(x) project(x, f$g), function(x) summary(x),
-                    function(x) autoplot(x))) {
-    cnd <- expect_error(verb(w), "gmm", class = "handmotion_error_bad_model")
-    expect_match(conditionMessage(cnd), "Large Diameter")
-  }
-  s <- f$ms
-  s[[1]] <- w
-  expect_error(classify(s, f$g), "DoF CMC1", class = "handmotion_error_bad_model")
-  mean_nan <- m
-  mean_nan$fpca[[2]]$mean[5] <- NaN
-  expect_error(generate(mean_nan, n = 1), "fpca.*DoF ABD1", class = "handmotion_error_bad_model")
-  no_warp <- m
-  no_warp$warp <- NULL
-  expect_error(project(no_warp, f$g), "warp", class = "handmotion_error_bad_model")
-  no_rate <- m
-  no_rate$rate <- NaN
-  expect_error(generate(no_rate, n = 1), "rate", class = "handmotion_error_bad_model")
-  # a set holding something that is not a model
-  text <- unclass(f$ms)
-  text[[2]] <- "x"
-  class(text) <- class(f$ms)
-  attr(text, "levels") <- attr(f$ms, "levels")
-  expect_error(classify(text, f$g), "models[[2]] (Small Diameter)", fixed = TRUE, class = "handmotion_error_bad_model")
-  expect_error(generate(text, n = 1), "x[[2]]", fixed = TRUE, class = "handmotion_error_bad_model")
-  hot <- f$ms
-  attr(hot, "temperature") <- NaN
-  expect_error(predict(hot, f$g, type = "prob"), "temperature", class = "handmotion_error_bad_model")
-  # classifiers and the hand-over model
-  clf <- f$clf
-  clf$fit <- NULL
-  expect_error(predict(clf, f$g), "no fit", class = "handmotion_error_bad_model")
-  clf <- f$clf
-  clf$at[2] <- NaN
-  expect_error(predict(clf, f$g), "at", class = "handmotion_error_bad_model")
-  clf <- f$clf
-  clf$fit$members[[1]]$coef[1, 1] <- Inf
-  cnd <- expect_error(classify(clf, f$g), "models$fit$members[[1]]$coef", fixed = TRUE, class = "handmotion_error_bad_model")
-  expect_identical(cnd$argument, "models")
-  ho <- fit_handover(f$g, n_markers = 3)
-  q <- forward_kinematics(f$g[1], markers = ho$markers)[[1]]
-  ho$rotation[1, 1] <- NaN
-  expect_error(predict(ho, q), "object$rotation", fixed = TRUE, class = "handmotion_error_bad_model")
-})
-
 test_that("empty selections are said to be empty", {
   f <- bad_fixture()
   empty <- f$g[integer(0)]
@@ -123,42 +61,6 @@ test_that("empty selections are said to be empty", {
   expect_error(generate(f$ms[integer(0)], n = 1), "no fitted models", class = "handmotion_error_bad_input")
   expect_error(grasp_confusion(character(0), character(0)), "empty", class = "handmotion_error_bad_input")
   expect_error(as_grasps(list()), "recordings", class = "handmotion_error_bad_input")
-})
-
-test_that("recordings too short to model and types with one or two recordings are fitted with a classed warning naming them", {
-  g <- bad_fixture()$g
-  recs <- g$recordings
-  recs[[2]] <- recs[[2]][1:2, ]
-  short <- grasps(recs, meta = g$meta[c("id", "grasp", "subject", "object", "trial")], dofs = g$dofs)
-  id <- g$meta$id[2]
-  w <- expect_warning(fit_grasp_classifier(short), id, fixed = TRUE, class = "handmotion_warning_short_recordings")
-  expect_s3_class(w, "handmotion_warning_degenerate")
-  expect_warning(fit_grasp_recognizer(short), id, fixed = TRUE, class = "handmotion_warning_short_recordings")
-  expect_warning(fit_grasp_model(short, grasp = 1, seed = 1), id, fixed = TRUE, class = "handmotion_warning_short_recordings")
-  m <- bad_fixture()$m
-  expect_warning(project(m, short), id, fixed = TRUE, class = "handmotion_warning_short_recordings")
-  # a type with two recordings is fitted, said; one with one cannot be, said
-  two <- g[c(1:2, 7:18)]
-  w <- expect_warning(fit_grasp_classifier(two), "Large Diameter", class = "handmotion_warning_few_recordings")
-  expect_identical(w$grasp, "Large Diameter")
-  one <- g[c(1, 7:18)]
-  got <- list()
-  ms <- withCallingHandlers(fit_grasp_models(one, seed = 1), warning = function(w) {
-    got[[length(got) + 1L]] <<- w
-    invokeRestart("muffleWarning")
-  })
-  cls <- vapply(got, function(w) class(w)[1], "")
-  expect_true(all(c("handmotion_warning_few_recordings", "handmotion_warning_model_failed") %in% cls))
-  failed <- got[[which(cls == "handmotion_warning_model_failed")]]
-  expect_identical(failed$grasp, "Large Diameter")
-  expect_length(ms, 3L)
-  # evaluate_loso() says it once, not once per fold
-  got <- list()
-  withCallingHandlers(evaluate_loso(two, method = "discriminant", in_sample = FALSE), warning = function(w) {
-    got[[length(got) + 1L]] <<- w
-    invokeRestart("muffleWarning")
-  })
-  expect_equal(sum(vapply(got, inherits, TRUE, "handmotion_warning_few_recordings")), 1L)
 })
 
 test_that("malformed BVH and skeleton files name the file and the line", {
@@ -247,19 +149,6 @@ test_that("invalid regular expressions and separators name their argument", {
     expect_identical(cnd$argument, "sep")
   }
   expect_length(read_hust(dir, sep = ","), 2L)
-})
-
-test_that("the package's generics name the argument and the class they were given", {
-  f <- bad_fixture()
-  expect_error(generate(f$g), "grasps", class = "handmotion_error_bad_input")
-  expect_error(generate(list(f$m, f$m)), "fit_grasp_models", class = "handmotion_error_bad_input")
-  expect_error(generate("x", n = 1), "character", class = "handmotion_error_bad_input")
-  expect_error(predict(list(1, 2)), "object", class = "handmotion_error_bad_input")
-  expect_error(predict(f$g), "object", class = "handmotion_error_bad_input")
-  expect_error(stats::simulate(f$g), "simulate_grasps", class = "handmotion_error_bad_input")
-  expect_error(read_failures(list()), "x", class = "handmotion_error_bad_input")
-  cnd <- expect_error(simulate_grasps(glove = 42), "glove", class = "handmotion_error_bad_glove")
-  expect_identical(cnd$argument, "glove")
 })
 
 test_that("arguments that were checked only on some paths are checked on all", {

@@ -72,25 +72,6 @@ test_that("over-long recordings are removed by the documented rule and recorded"
   expect_error(fit_grasp_model(g2, overlong = c(iqr_mult = -1)), class = "handmotion_error_bad_input")
 })
 
-test_that("the DTW path keeps the books: used + removed = input", {
-  g <- planted_grasps(n = 25, p = 3, sep = 3, sd2 = 1, seed = 15)
-  m <- fit_grasp_model(g, seed = 1)
-  expect_true(m$warping$method %in% c("dtw", "linear"))
-  expect_equal(m$n_used + nrow(m$removed), m$n_input)
-  expect_equal(dim(model_scores(m)), c(m$n_used, 3L, 2L))
-  expect_equal(dim(m$alignment$warped), c(m$n_used, m$target_length, 3L))
-  expect_identical(rownames(m$alignment$warps), m$ids)
-  # these planted recordings align by DTW: no warping fallback recorded
-  expect_identical(m$warping$method, "dtw")
-  expect_false("warping" %in% m$fallbacks$step)
-  # when the alignment fails, linear warping is used, recorded and said
-  local_failing_alignment()
-  expect_warning(lin <- fit_grasp_model(g, seed = 1), class = "handmotion_warning_linear_fallback")
-  expect_identical(lin$warping$method, "linear")
-  expect_true("warping" %in% lin$fallbacks$step)
-  expect_equal(lin$n_used + nrow(lin$removed), lin$n_input)
-})
-
 test_that("a constant DoF is a recorded fallback, not a crash", {
   g <- planted_grasps(n = 20, p = 3, seed = 16)
   recs <- lapply(g$recordings, function(r) { r[, 2] <- 10; r })
@@ -144,30 +125,6 @@ test_that("too few recordings, mixed types and bad arguments are clear errors", 
   expect_error(fit_grasp_model(list()), class = "handmotion_error_bad_input")
 })
 
-test_that("engines can be chosen per step", {
-  e <- resolve_engines(list(fpca = "reference"), call = NULL)
-  expect_identical(e, list(align = "fast", fpca = "reference", gmm = "fast"))
-  expect_identical(resolve_engines(c("fast", "reference"), NULL)$gmm, "fast")
-  expect_error(resolve_engines(list(dtw = "fast"), NULL), class = "handmotion_error_bad_input")
-  g <- planted_grasps(n = 20, p = 2, seed = 19)
-  m1 <- fit_grasp_model(g, warping = "linear", engine = list(fpca = "reference"), seed = 1)
-  m2 <- fit_grasp_model(g, warping = "linear", seed = 1)
-  expect_equal(model_basis(m1), model_basis(m2), tolerance = 1e-6)
-})
-
-test_that("the sign convention makes refits on subsets comparable", {
-  g <- planted_grasps(n = 80, p = 3, seed = 20)
-  full <- fit_grasp_model(g, warping = "linear", seed = 1)
-  sub <- fit_grasp_model(g[seq(2, 80, by = 2)], warping = "linear", seed = 2)
-  # the two fits may have different target lengths: compare on normalised time
-  w <- full$fpca[[1]]$weights
-  for (j in 1:3) for (c in 1:2) {
-    on_full <- stats::approx(sub$argvals, model_basis(sub)$components[, j, c], xout = full$argvals)$y
-    inner <- sum(model_basis(full)$components[, j, c] * on_full * w)
-    expect_gt(inner, 0.9)
-  }
-})
-
 test_that("a fit is reproducible with its seed and leaves the global RNG alone", {
   g <- planted_grasps(n = 30, p = 2, seed = 21)
   set.seed(99)
@@ -177,21 +134,6 @@ test_that("a fit is reproducible with its seed and leaves the global RNG alone",
   m2 <- fit_grasp_model(g, warping = "linear", seed = 5)
   m1$timing <- m2$timing <- NULL
   expect_identical(m1, m2)
-})
-
-test_that("print and summary list what was removed and what fell back", {
-  g <- planted_grasps(n = 20, p = 3, seed = 22)
-  recs <- g$recordings
-  recs[[2]] <- rbind(recs[[2]], recs[[2]], recs[[2]])
-  recs <- lapply(recs, function(r) { r[, 3] <- 1; r })
-  expect_warning(g3 <- grasps(recs, meta = g$meta, dofs = g$dofs), class = "handmotion_warning_stuck_channels")
-  m <- fit_grasp_model(g3, warping = "linear", seed = 1)
-  s <- summary(m)
-  expect_s3_class(s, "summary_grasp_model")
-  expect_identical(names(s), c("dof", "FPC1", "FPC2", "total", "mixture", "reason"))
-  expect_equal(nrow(attr(s, "removed")), 1L)
-  expect_snapshot(print(m))
-  expect_snapshot(print(s))
 })
 
 test_that("simulated grasps fit with DTW and explain most of the variance", {
@@ -213,19 +155,6 @@ test_that("a failed EM is replaced by a single Gaussian and recorded (Table 5.1)
   # the single Gaussian has the sample mean of the scores
   expect_equal(unname(drop(m$gmm$d1$means)), unname(colMeans(model_scores(m)[, "d1", ])), tolerance = 1e-8)
   expect_identical(summary(m)$mixture, c("single Gaussian", "single Gaussian"))
-})
-
-test_that("the mixtures run EM up to the model's cap before falling back", {
-  g <- planted_grasps(n = 40, p = 2, seed = 3)
-  m <- fit_grasp_model(g, seed = 1)
-  expect_identical(m$settings$gmm_max_iter, 5000L)
-  # a score cloud that needs more than 500 EM evaluations even accelerated
-  # (two univariate components 1.2 SD apart): fitted, not a fallback
-  X <- matrix(withr::with_seed(8, c(rnorm(150), rnorm(100, 1.2))))
-  fit <- fit_mixture(list(scores = X, constant = FALSE), 2L, "fast")
-  expect_false(fit$fallback)
-  expect_gt(fit$iterations, 500)
-  expect_true(gmm_fit(X)$fallback) # gmm_fit()'s own default cap of 500 falls back
 })
 
 test_that("a model on linear warps can be drawn, whether asked for or fallen back to", {
@@ -260,29 +189,6 @@ test_that("the FPCA of a constant DoF prints and has every field of an fpca_fit"
   expect_output(print(f), "2 components")
   expect_output(print(m$fpca[[1]]), "variance explained")
   expect_setequal(names(f), names(m$fpca[[1]]))
-})
-
-test_that("the constructor derives the views from the FPCA and the validator refuses broken shapes", {
-  g <- planted_grasps(n = 12, p = 2, seed = 3)
-  m <- fit_grasp_model(g, warping = "linear", seed = 1)
-  for (j in seq_along(m$dofs)) {
-    expect_equal(unname(model_scores(m)[, j, ]), unname(m$fpca[[j]]$scores))
-    expect_equal(unname(model_basis(m)$mean[, j]), m$fpca[[j]]$mean)
-    expect_equal(unname(model_var_explained(m)[j, ]), unname(m$fpca[[j]]$var_explained))
-  }
-  broken <- unclass(m)
-  broken$fpca[[1]]$mean <- broken$fpca[[1]]$mean[-1]
-  expect_error(validate_grasp_model(structure(broken, class = "grasp_model")), "fpca_shape_fault")
-  broken <- unclass(m)
-  broken$n_used <- broken$n_used - 1L
-  expect_error(validate_grasp_model(structure(broken, class = "grasp_model")))
-  broken <- unclass(m)
-  broken$gmm <- broken$gmm[1]
-  expect_error(validate_grasp_model(structure(broken, class = "grasp_model")))
-  # a set names each model by its own type, once
-  expect_error(new_grasp_models(list(a = m)))
-  expect_error(new_grasp_models(stats::setNames(list(m, m), c(m$grasp, m$grasp))))
-  expect_s3_class(new_grasp_models(stats::setNames(list(m), m$grasp)), "grasp_models")
 })
 
 test_that("recordings with a degenerate DTW warp stay in the model with a fallback warp; the thesis' rule drops them", {

@@ -1,7 +1,3 @@
-make_recs <- function(n = 3, frames = 20, p = 16) {
-  lapply(seq_len(n), function(i) matrix(sin(seq_len(frames * p) / (5 + i)), frames, p))
-}
-
 test_that("grasps() builds a validated set with metadata and set attributes", {
   g <- grasps(make_recs(), meta = data.frame(grasp = c("Tripod", "tripod", 31),
                                              subject = c("a", "b", "a"), trial = 1:3))
@@ -108,22 +104,6 @@ test_that("a list of matrices where a grasps set belongs points at as_grasps()",
                       class = "handmotion_error_bad_input")
   expect_identical(cnd$argument, "new_data")
   expect_error(predict(ms, 1), "grasps()", fixed = TRUE, class = "handmotion_error_bad_input")
-})
-
-test_that("autoplot draws one line per recording in one panel per DoF", {
-  g <- grasps(make_recs(3, p = 2), meta = data.frame(grasp = c(1, 1, 2)), dofs = c("A", "B"))
-  p <- ggplot2::autoplot(g)
-  b <- ggplot2::ggplot_build(p)
-  expect_identical(length(unique(b$data[[1]]$PANEL)), 2L)
-  expect_identical(length(unique(b$data[[1]]$group)), 3L)
-  expect_error(ggplot2::autoplot(g, colour = "nope"), class = "handmotion_error_bad_input")
-})
-
-test_that("with_seed leaves the global RNG untouched", {
-  set.seed(42); before <- .Random.seed
-  x <- with_seed(1, runif(3))
-  expect_identical(.Random.seed, before)
-  expect_identical(x, with_seed(1, runif(3)))
 })
 
 test_that("several unknown grasp types are all named in one error", {

@@ -1,22 +1,4 @@
-# A reference database of some grasp types and subjects, and a test set of
-# unseen types performed by unseen subjects (the paper's letters vs words).
-handover_split <- function() {
-  g <- simulate_grasps(subjects = 6, grasps = 1:12, objects = 1, trials = 1, seed = 2,
-                       plant_overlong = FALSE)
-  types <- levels(droplevels(g$meta$grasp))
-  subj <- unique(g$meta$subject)
-  list(ref = g[g$meta$grasp %in% types[1:9] & g$meta$subject %in% subj[1:4]],
-       test = g[!g$meta$grasp %in% types[1:9] & !g$meta$subject %in% subj[1:4]])
-}
 split <- handover_split()
-
-test_that("a frame seen in the reference is reconstructed almost exactly", {
-  fit <- fit_handover(split$ref, n_markers = 3, smooth = FALSE)
-  rec <- predict(fit, split$ref[1:2])
-  expect_s3_class(rec, "grasps")
-  expect_identical(rec$meta$id, split$ref$meta$id[1:2])
-  expect_lt(handover_error(split$ref[1:2], rec), 1e-3)
-})
 
 test_that("ranked 6 markers beat 3, the no-PCA regression and the hand-picked set on unseen data", {
   ref <- split$ref
@@ -143,40 +125,6 @@ test_that("neighbours = Inf is the paper's all-frame weighting and matches all f
   expect_equal(predict(a, split$test[1])$recordings, predict(b, split$test[1])$recordings)
 })
 
-test_that("handover_error is the mean absolute angle error per frame in degrees", {
-  g <- split$test[1:2]
-  off <- g
-  off$recordings <- lapply(g$recordings, function(r) r + rep(c(2, -2), length.out = length(r)))
-  expect_equal(handover_error(g, off), 2)
-  by_rec <- handover_error(g, off, by = "recording")
-  expect_equal(by_rec$error, c(2, 2))
-  expect_equal(nrow(handover_error(g, off, by = "frame")), sum(g$meta$n_frames))
-  expect_equal(handover_error(g, off, by = "dof")$error, rep(2, 16))
-  rad <- g
-  rad$unit <- "rad"
-  rad_off <- off
-  rad_off$unit <- "rad"
-  expect_equal(handover_error(rad, rad_off), 2 * 180 / pi)
-  expect_error(handover_error(g, split$test[2:3]), class = "handmotion_error_bad_input")
-  expect_error(handover_error(g, rad_off), class = "handmotion_error_bad_input")
-})
-
-test_that("PCA reconstruction error falls with the number of components (Figure 1)", {
-  pe <- handover_error(split$ref, by = "ncomp")
-  expect_s3_class(pe, "handover_pca_error")
-  expect_equal(nrow(pe), 16)
-  expect_true(all(diff(pe$error) <= 1e-9))
-  expect_lt(pe$error[16], 1e-8)
-  expect_equal(pe$variance[16], 1)
-  held <- handover_error(split$test, by = "ncomp", reference = split$ref)
-  expect_gt(held$error[2], pe$error[2] * 0.5)
-  fit <- fit_handover(split$ref, n_markers = 3)
-  expect_equal(handover_error(split$test, by = "ncomp", reference = fit)$error, held$error)
-  expect_error(handover_error(split$test), class = "handmotion_error_bad_input")   # no recon
-  b <- ggplot2::ggplot_build(ggplot2::autoplot(pe))
-  expect_equal(nrow(b$data[[1]]), 16)
-})
-
 test_that("search-based selection returns a logged greedy set", {
   s <- select_markers(split$ref, n = 2, method = "search", max_frames = 150, neighbours = 64)
   expect_length(s, 2)
@@ -207,27 +155,6 @@ test_that("handover_error(by = \"markers\") tabulates and plots the comparison",
   expect_equal(cmp$error[1], handover_error(split$test[1:2], predict(fit_a, split$test[1:2])))
   expect_error(handover_error(split$test, by = "markers", reference = split$ref, sets = list(1)),
                class = "handmotion_error_bad_input")
-})
-
-test_that("the figures build: markers on the hand, component trajectories, ranking", {
-  p <- ggplot2::autoplot(hand_skeleton(), markers = list(`hand-picked` = select_markers(method = "handpicked"),
-                                                         tips = c("thumb_tip", "index_tip")))
-  b <- ggplot2::ggplot_build(p)
-  # the marker layer is the one whose data says which markers are recorded
-  marks <- Filter(function(l) "selected" %in% names(l$data), b$plot$layers)[[1]]$data
-  expect_equal(sum(marks$selected), 8)
-  expect_equal(nrow(marks), 2 * 16)
-  fit <- fit_handover(split$ref, n_markers = 3)
-  rec <- predict(fit, split$test[1])
-  p5 <- ggplot2::autoplot(fit, split$test[1], list(`3 markers` = rec), components = 1:2)
-  d5 <- ggplot2::ggplot_build(p5)$plot$data
-  expect_setequal(levels(d5$source), c("ground truth", "3 markers"))
-  # with all components and smoothing the plotted scores are the model's smoothed scores
-  s <- attr(rec, "handover")$scores[[1]]
-  expect_equal(d5$score[d5$source == "3 markers" & d5$component == "PC1"], unname(s[, 1]))
-  b_rank <- ggplot2::ggplot_build(ggplot2::autoplot(attr(select_markers(split$ref), "ranking")))
-  expect_equal(nrow(b_rank$data[[1]]), 13)
-  expect_output(print(fit), "handover_model")
 })
 
 test_that("hand-over runs on the real GraspDB14 samples (radians, CyberGlove mapping)", {

@@ -22,7 +22,7 @@ readme_substitutions <- data.frame(
          '"S02"'),
   times = c(1L, 1L, 1L, 2L),
   why = c("3 subjects and 4 types (Power Sphere 11 and Tripod 14, which the block names) instead of 30 x 33",
-          "the report's smallest design (as in test-reproduce-thesis.R)",
+          "the report's smallest design (as in test-report-reproduce-thesis.R)",
           "the same small design as the first block",
           "train on subjects 1-2 and hold out 3, as the README trains on 1-20 and holds out 21-30"),
   stringsAsFactors = FALSE

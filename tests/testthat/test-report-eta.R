@@ -243,38 +243,6 @@ test_that("the first estimate is the cost model at the machine's measured pace",
   expect_equal(unname(one / report_step_costs(settings, workers = 1L)), rep(3, length(one)))
 })
 
-test_that("the slowdown on the workers follows the other jobs' demand, not the load average", {
-  # A planted machine: 2 cores shared evenly by `demand` other processes
-  # that each want a whole core, plus ours. One process gets
-  # min(1, 2 / (demand + 1)) of a core (what the calibration measures), two
-  # workers min(1, 2 / (demand + 2)) each; the load average also counts
-  # three processes waiting on the disk, which want no core.
-  for (demand in c(0, 0.5, 1, 2, 3, 5)) {
-    got <- min(1, 2 / (demand + 1))
-    pace <- pace_summary(cpu = pace_reference_cpu, elapsed = pace_reference_cpu / got, load = demand + 3, cores = 2L)
-    f <- pace_factors(pace, workers = 2L)
-    if (got < 1) {
-      expect_equal(f[["main"]], 1 / got)
-      expect_equal(f[["workers"]], 1 / min(1, 2 / (demand + 2)))
-    } else {
-      # a whole core: the share cannot tell 0 from 1 other process, the
-      # (inflated) load average is capped at cores - 1: at worst 1.5x
-      expect_equal(f[["main"]], 1)
-      expect_true(f[["workers"]] >= 1 / min(1, 2 / (demand + 2)) && f[["workers"]] <= 1.5)
-    }
-  }
-  # at load 5-6, a calibration getting half a core: the workers run 2.5x as
-  # slow (three others), where (load + workers) / cores said 4x
-  half <- pace_summary(cpu = pace_reference_cpu, elapsed = 2 * pace_reference_cpu, load = 6, cores = 2L)
-  expect_equal(pace_factors(half, workers = 2L)[["workers"]], 2.5)
-  # quiet, with a little background: within 30% of the model's own seconds
-  calm <- pace_summary(cpu = pace_reference_cpu, elapsed = pace_reference_cpu, load = 0.4, cores = 2L)
-  expect_equal(unname(pace_factors(calm, workers = 2L)), c(1, 1.2))
-  # a slower core scales both
-  slow <- pace_summary(cpu = 2 * pace_reference_cpu, elapsed = 4 * pace_reference_cpu, load = 6, cores = 2L)
-  expect_equal(unname(pace_factors(slow, workers = 2L)), c(4, 5))
-})
-
 test_that("a small design pays each step's fixed part, a larger one grows beyond it", {
   tiny <- report_step_costs(list(subjects = 2, grasps = c(17, 25), folds = 2), workers = 1L)
   expect_true(all(tiny >= report_step_model$fixed - 1e-12))
@@ -306,28 +274,4 @@ test_that("the first line says when the machine is busy, and the estimate allows
   expect_false(pace_busy(quiet_pace))
   # no load average known: the measured share alone says it
   expect_true(pace_busy(pace_summary(1, 2, load = NA, cores = 2L)))
-})
-
-test_that("the step counter counts each step once, the page included", {
-  settings <- list(subjects = 2, grasps = c(17, 25), folds = 2)
-  lines <- character()
-  con <- textConnection("lines", "w", local = TRUE)
-  t <- 0
-  bar <- report_progress(TRUE, out = con, every = 0, clock = function() t, pace = function() quiet_pace)
-  bar$begin(settings)
-  steps <- report_step_model$step
-  # the report signals every step but the last; the page's chunks start it
-  for (label in steps[-length(steps)]) {
-    bar$chunk(1, 10)
-    bar$step(label)
-    t <- t + 1
-  }
-  bar$chunk(8, 10)
-  bar$chunk(9, 10)
-  bar$done("/somewhere/reproduce-thesis.html")
-  close(con)
-  counters <- regmatches(lines, regexpr("\\[ *[0-9]+/[0-9]+\\]", lines))
-  n <- length(steps)
-  expect_identical(gsub(" ", "", counters), sprintf("[%d/%d]", seq_len(n), n))
-  expect_match(lines[grep(sprintf("\\[%d/%d\\]", n, n), lines)], "the figures and the page", fixed = TRUE)
 })

@@ -1,7 +1,7 @@
 # Tests of the HUST-like simulator. Statistical tests plant a truth through
 # the parameters (e.g. only subject factors, no noise) and check its recovery.
 
-# Over-long fence used by the pipeline (also R/overlong.R); inline so this file
+# Over-long fence used by the pipeline (also R/align-overlong.R); inline so this file
 # does not depend on it.
 fence <- function(n) max(stats::quantile(n, 0.75) + 3 * stats::IQR(n), 1.5 * stats::median(n))
 

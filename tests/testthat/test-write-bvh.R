@@ -1,13 +1,3 @@
-# A random HUST-shaped recording of `frames` frames written as BVH at `rate`
-# into a temporary file (removed when the calling test ends).
-written_bvh <- function(seed, frames, rate, env = parent.frame()) {
-  set.seed(seed)
-  rec <- matrix(runif(frames * 16, -10, 80), frames, 16, dimnames = list(NULL, hust_dofs$name))
-  f <- withr::local_tempfile(fileext = ".bvh", .local_envir = env)
-  write_bvh(rec, f, rate = rate)
-  list(rec = rec, file = f)
-}
-
 test_that("BVH output re-parses with the right joints, frames and motion", {
   w <- written_bvh(6, 30, 60)
   rec <- w$rec
@@ -74,45 +64,4 @@ test_that("grasps export, scaling and bad files", {
   writeLines(replace(good, 5, "CHANNELS -2 Zrotation"), f)
   err <- expect_error(read_bvh(f), class = "handmotion_error_bad_file")
   expect_equal(err$line, 5L)
-})
-
-test_that("a BVH read back is written back unchanged, and its angles are the recording's", {
-  f <- written_bvh(7, 12, 30)$file
-  x <- read_bvh(f)
-  f2 <- withr::local_tempfile(fileext = ".bvh")
-  write_bvh(x, f2)
-  expect_identical(readLines(f2), readLines(f))
-  expect_identical(x$meta$id, sub("\\.bvh$", "", basename(f)))
-  # an edited recording is written with its new angles, the hierarchy kept
-  y <- x
-  y$recordings[[1]][, "if-pip:Xrotation"] <- 10
-  write_bvh(y, f2, overwrite = TRUE)
-  z <- read_bvh(f2)
-  expect_equal(unname(z$recordings[[1]][, "if-pip:Xrotation"]), rep(10, 12))
-  expect_identical(attr(z, "bvh")$joints, attr(x, "bvh")$joints)
-})
-
-test_that("every writer refuses to replace a file without overwrite = TRUE, naming it", {
-  rec <- matrix(0, 3, 16, dimnames = list(NULL, hust_dofs$name))
-  g <- grasps(list(rec, rec + 1), meta = data.frame(grasp = c(1, 2), subject = "S01"))
-  dir <- withr::local_tempdir()
-  bvh <- file.path(dir, "a.bvh")
-  skel <- file.path(dir, "a.xmlskel")
-  write_bvh(rec, bvh)
-  write_skeleton(hand_skeleton(), skel)
-  write_hust(g, file.path(dir, "hust"))
-  gdb <- graspdb14_fixture_grasps()
-  write_graspdb14(gdb, file.path(dir, "gdb"))
-  before <- tools::md5sum(c(bvh, skel))
-  for (attempt in list(quote(write_bvh(rec + 5, bvh)), quote(write_skeleton(hand_skeleton(), skel)),
-                       quote(write_hust(g, file.path(dir, "hust"))),
-                       quote(write_graspdb14(gdb, file.path(dir, "gdb"))))) {
-    err <- expect_error(eval(attempt), class = "handmotion_error_file_exists")
-    expect_true(length(err$file) >= 1L && all(file.exists(err$file)))
-    expect_match(cli::ansi_strip(conditionMessage(err)), basename(err$file[1]), fixed = TRUE)
-  }
-  expect_identical(tools::md5sum(c(bvh, skel)), before)   # nothing was written
-  write_bvh(rec + 5, bvh, overwrite = TRUE)
-  expect_false(identical(tools::md5sum(bvh), before[1]))
-  expect_silent(write_skeleton(hand_skeleton(), skel, overwrite = TRUE))
 })

@@ -1,10 +1,10 @@
 # The fitted grasp classifiers behind one verb, fit_grasp_classifier(method = ):
-# the thesis' last-frame PCA (R/last-frame-pca.R), its proposed weighted FPCA
-# distance (R/weighted-fpca.R) and, here, a discriminative classifier beyond
+# the thesis' last-frame PCA (R/classifier-last-frame.R), its proposed weighted FPCA
+# distance (R/classifier-weighted-fpca.R) and, here, a discriminative classifier beyond
 # the thesis (its chapter 6: the FPCA distance weighs every DoF and the whole
 # motion alike, while grasp types differ in a few DoFs and mostly in the
 # final posture). Linear discriminant analysis with a shrunk covariance
-# (R/shrunk-lda.R) on the postures at fixed fractions of the motion and the
+# (R/classifier-shrunk-lda.R) on the postures at fixed fractions of the motion and the
 # log duration learns which DoFs and which moments separate the types, and
 # gives class probabilities.
 

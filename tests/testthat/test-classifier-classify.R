@@ -85,7 +85,7 @@ test_that("one-type data: every recording goes to the only type, accuracy 1", {
 test_that("FPCA classification is near 100% on planted well-separated types", {
   g <- planted_types(types = c(1, 9, 17, 22), subjects = 4, trials = 3, seed = 2)
   # the thesis' distance (eq. 4.4), checked against project() below; the
-  # likelihood distance has its own tests (test-fpca-likelihood.R)
+  # likelihood distance has its own tests (test-classifier-fpca-likelihood.R)
   ms <- fit_grasp_models(g, seed = 1, distance = "residual")
   cl <- classify(ms, g)
   expect_equal(cl$method, "fpca")

@@ -2,7 +2,7 @@
 # closing? A VR or teleoperation loop sees frames one at a time and never
 # knows how long the grasp will last, so the features may only use the
 # frames seen so far: the postures at fractions of them and how far each DoF
-# has travelled. One shrinkage LDA (R/shrunk-lda.R) per horizon h (frames
+# has travelled. One shrinkage LDA (R/classifier-shrunk-lda.R) per horizon h (frames
 # since the recording began) is trained on the first h frames of every
 # training recording; a recording that ended before h is continued by its
 # last posture, as a hand at rest would be.

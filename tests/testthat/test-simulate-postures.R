@@ -1,35 +1,3 @@
-test_that("simulator_params() holds every documented element, validated", {
-  p <- simulator_params()
-  expect_type(p, "list")
-  expect_identical(p, check_simulator_params(p))
-  expect_equal(dim(p$postures), c(33L, 12L))
-  expect_identical(colnames(p$postures), sim_driven_dofs)
-  expect_identical(rownames(p$postures), feix_taxonomy$name)
-  expect_identical(p$target_frames$id, 1:33)
-  expect_true(all(p$target_frames$frames == round(p$target_frames$frames)))
-  expect_equal(nrow(p$posture_notes), 33L)
-  expect_false(anyNA(p$posture_notes$adjustment))
-  expect_gte(ncol(p$loadings), 3L)
-  expect_equal(p$dip_pip_ratio, 2 / 3)
-  # each latent factor moves several joints together
-  expect_true(all(colSums(abs(p$loadings) > 0) >= 4))
-  # every element is documented on the help page (?simulate_grasps, section Simulator parameters)
-  rd_file <- test_path("..", "..", "man", "simulate_grasps.Rd")
-  skip_if_not(file.exists(rd_file), "man/ not available (installed package)")
-  rd <- paste(readLines(rd_file), collapse = "\n")
-  for (el in names(p)[names(p) != "reference_rate"]) expect_match(rd, el, fixed = TRUE, info = el)
-})
-
-test_that("overrides replace elements by name", {
-  p <- simulator_params(noise_sd = 0, stall_per_object = c(0, 0))
-  expect_equal(p$noise_sd, 0)
-  expect_equal(p$stall_per_object, c(0, 0))
-  expect_equal(p$rest, simulator_params()$rest)
-  expect_error(simulator_params(1), class = "handmotion_error_bad_input")
-  expect_error(simulator_params(loadings = matrix(0, 3, 2)), class = "handmotion_error_bad_params")
-  expect_error(simulator_params(peak_time = 0.95), class = "handmotion_error_bad_params")
-})
-
 test_that("postures follow the roles the taxonomy gives each finger", {
   tax <- feix_taxonomy
   # finger = NA: the thumb's role; the last block are the corrections
@@ -76,11 +44,4 @@ Adduction Grip,3,side", stringsAsFactors = FALSE)
   mask <- sim_build_object_mask()
   expect_equal(unname(mask["Index Finger Extension", c("MCP2", "PIP2", "MCP3")]), c(0, 0, 1))
   expect_equal(unname(mask["Palmar Pinch", c("MCP2", "MCP3")]), c(1, 0))
-})
-
-test_that("largest-remainder rounding keeps the total exactly", {
-  x <- c(40.4, 38.7, 45.2, 41.9, 36.1)
-  n <- sim_round_to_total(x, 205)
-  expect_equal(sum(n), 205L)
-  expect_true(all(abs(n - x * 205 / sum(x)) < 1))
 })

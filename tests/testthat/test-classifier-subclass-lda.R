@@ -111,59 +111,6 @@ test_that("types with the same end posture are told apart by the shape of their 
   expect_gt(acc(fit_grasp_classifier(g)), 0.95)
 })
 
-# Two types that differ only between fixed fractions of the motion: on the
-# way to the same end posture, DoF 1 (which otherwise stays near rest)
-# overshoots by 15 (type Tripod: the hand opens before it closes, a
-# preshape) or undershoots by 15 (Ring) for three frames at a random moment.
-# Their travel is the same, and postures at fractions 1/8 apart (8 frames)
-# catch the moment in about three recordings of eight; the extremes of the
-# motion see it in every one.
-overshoot_types <- function(n_per = 30, subjects = 3, seed = 1) {
-  planted_set(c("Tripod", "Ring"), n_per, subjects, seed, function(ty, i) {
-    m <- sample(60:70, 1)
-    s <- (1 - cos(pi * seq(0, 1, length.out = m))) / 2
-    target <- c(0, stats::rnorm(15, 40, 3))
-    r <- outer(s, target) + matrix(stats::rnorm(m * 16, 0, 1), m)
-    at <- sample(10:(m - 10), 1) + -1:1
-    r[at, 1] <- r[at, 1] + if (ty == "Tripod") 15 else -15
-    r
-  })
-}
-
-test_that("the extremes of the motion are recovered, spikes aside, and tell apart a preshape", {
-  g <- overshoot_types(n_per = 4)
-  E <- extreme_features(g)
-  first <- g$dofs[1]
-  expect_identical(colnames(E)[c(1, 17)], paste0(first, c(".min", ".max")))
-  tripod <- g$meta$grasp == "Tripod"
-  # the planted 15 above (Tripod) or below (Ring) a DoF at rest (noise sd 1)
-  expect_true(all(abs(E[tripod, 17] - 15) < 3.5))
-  expect_true(all(abs(E[!tripod, 1] + 15) < 3.5))
-  # one frame's spike is not an extreme (flexglove's flex6 jumps to 886)
-  spiked <- g
-  spiked$recordings[[1]][20, 2] <- 900
-  expect_lt(extreme_features(spiked)[1, 18], 100)
-  # the running median of 3 frames, the ends the median of their three
-  r <- spiked$recordings[[1]]
-  ref <- apply(r, 2, function(v) {
-    n <- length(v)
-    vapply(seq_len(n), function(i) stats::median(v[min(max(i - 1, 1), n - 2) + 0:2]), numeric(1))
-  })
-  expect_equal(median3_channels(r), ref, ignore_attr = TRUE)
-
-  train <- overshoot_types()
-  test <- overshoot_types(seed = 2)
-  cl <- fit_grasp_classifier(train)
-  expect_gt(mean(as.character(predict(cl, test)$.pred_class) == test$meta$grasp), 0.95)
-  # without the extremes (postures at the same fractions, log duration and
-  # travel) the same discriminant misses the recordings whose moment falls
-  # between fractions
-  without <- function(x) cbind(motion_features(x, cl$at), travel_features(x))
-  fit <- fit_subclass_lda(without(train), factor(train$meta$grasp), "equal", 1L)
-  pred <- top_class(fit$types, subclass_lda_scores(fit, without(test)))
-  expect_lt(mean(pred == test$meta$grasp), 0.85)
-})
-
 # What the classifiers are invariant to: the glove's calibration per channel.
 # The same recordings read through another offset and gain per channel
 # (counts of another glove, degrees instead of counts), for training and new

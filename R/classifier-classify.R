@@ -5,7 +5,7 @@
 #               its FPCs, and scored by the L2 distance to that projection
 #               (eq. 4.4; computed by project()). Closest model wins.
 #   last_frame  the same idea on the last frame only, with one ordinary PCA per
-#               type (R/last-frame-pca.R).
+#               type (R/classifier-last-frame.R).
 # The distance matrix (recordings x models) is kept, so Table 5.3
 # (distance_table()) and the confusion matrices come from one computation.
 
@@ -146,7 +146,7 @@ fit_classifier <- function(train, method, fit_args) {
   # One Gaussian per DoF's scores (mixture_components = 1, closed form)
   # instead of the EM for two components halves the refit. Neither distance
   # reads the mixtures (the likelihood scores the joint score vector by a
-  # kernel density, R/fpca-likelihood.R) except for a type of fewer than
+  # kernel density, R/classifier-fpca-likelihood.R) except for a type of fewer than
   # three recordings.
   # Held-out classification needs no probabilities, so no temperature.
   if (is.null(fit_args$mixture_components)) fit_args$mixture_components <- 1L

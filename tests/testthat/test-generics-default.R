@@ -1,0 +1,12 @@
+test_that("the package's generics name the argument and the class they were given", {
+  f <- bad_fixture()
+  expect_error(generate(f$g), "grasps", class = "handmotion_error_bad_input")
+  expect_error(generate(list(f$m, f$m)), "fit_grasp_models", class = "handmotion_error_bad_input")
+  expect_error(generate("x", n = 1), "character", class = "handmotion_error_bad_input")
+  expect_error(predict(list(1, 2)), "object", class = "handmotion_error_bad_input")
+  expect_error(predict(f$g), "object", class = "handmotion_error_bad_input")
+  expect_error(stats::simulate(f$g), "simulate_grasps", class = "handmotion_error_bad_input")
+  expect_error(read_failures(list()), "x", class = "handmotion_error_bad_input")
+  cnd <- expect_error(simulate_grasps(glove = 42), "glove", class = "handmotion_error_bad_glove")
+  expect_identical(cnd$argument, "glove")
+})

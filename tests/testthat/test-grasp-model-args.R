@@ -1,0 +1,10 @@
+test_that("engines can be chosen per step", {
+  e <- resolve_engines(list(fpca = "reference"), call = NULL)
+  expect_identical(e, list(align = "fast", fpca = "reference", gmm = "fast"))
+  expect_identical(resolve_engines(c("fast", "reference"), NULL)$gmm, "fast")
+  expect_error(resolve_engines(list(dtw = "fast"), NULL), class = "handmotion_error_bad_input")
+  g <- planted_grasps(n = 20, p = 2, seed = 19)
+  m1 <- fit_grasp_model(g, warping = "linear", engine = list(fpca = "reference"), seed = 1)
+  m2 <- fit_grasp_model(g, warping = "linear", seed = 1)
+  expect_equal(model_basis(m1), model_basis(m2), tolerance = 1e-6)
+})
