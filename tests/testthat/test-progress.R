@@ -99,7 +99,7 @@ test_that("a fold on a worker counts nothing of its own: one step per fold reach
 })
 
 test_that("a progressor carries nothing of its caller to the workers (issue 43)", {
-  # progressors travel with every chunk of future_mapply(): one that closed
+  # progressors travel with every chunk of futures: one that closed
   # over its caller's frame shipped the whole data set to each worker
   shipped <- function(progress) {
     big <- numeric(1e6)   # 8 MB in the caller's frame
