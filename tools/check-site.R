@@ -149,6 +149,9 @@ animation_page <- "articles/graspdb14.html"
 tasks <- c(lapply(error_pages, function(pg) list(kind = "errors", page = pg)),
            lapply(search_pages, function(pg) list(kind = "search", page = pg, query = query)),
            list(list(kind = "search", page = "index.html", query = ranked[["query"]], key = "rank")),
+           # (on a phone's width the navbar is collapsed: the box is in its opened menu)
+           list(list(kind = "search", page = "index.html", query = ranked[["query"]], key = "rank narrow",
+                     width = 390L)),
            list(list(kind = "animation", page = animation_page)))
 tasks <- lapply(tasks, function(t) {
   t$url <- paste0(http_base, t$page)
@@ -163,6 +166,7 @@ function finish() { f.onload = null; f.src = "about:blank"; document.getElementB
 function next() { k++; if (k >= tasks.length) return finish(); run(tasks[k], all[tasks[k].key] = {}); }
 function run(t, out) {
   var phase = 0, moved = null;
+  f.width = t.width || 1200;
   f.onload = function() {
     try {
       var w = f.contentWindow, d = w.document;
@@ -183,6 +187,8 @@ function run(t, out) {
       }
       phase = 1;
       var $ = w.jQuery, input = $("#search-input");
+      var toggler = d.querySelector(".navbar-toggler");
+      if (toggler && w.getComputedStyle(toggler).display !== "none") toggler.click();
       input.trigger("focus");
       setTimeout(function() {
         out.toc = d.querySelectorAll("#toc a.nav-link").length;
@@ -219,7 +225,7 @@ function run(t, out) {
   f.src = t.url;
 }
 next();
-</script></body></html>', jsonlite::toJSON(lapply(tasks, function(t) t[c("kind", "url", "key", "query")]), auto_unbox = TRUE))
+</script></body></html>', jsonlite::toJSON(lapply(tasks, function(t) t[intersect(c("kind", "url", "key", "query", "width"), names(t))]), auto_unbox = TRUE))
 writeLines(harness, file.path(root, "harness.html"))
 # (virtual time: the harness's waits add up to about 25 s, which cost
 # little real time; the budget only bounds a page that never settles)
@@ -402,6 +408,13 @@ if (is.null(r$opened) || !grepl(ranked[["page"]], r$opened, fixed = TRUE)) {
 }
 if (!isTRUE(r$menu_fits)) fail(sprintf("search '%s': the list of results runs off the window", ranked[["query"]]))
 message(sprintf("site: search '%s': %d results within the window, the first opened %s", ranked[["query"]],
+                r$suggestions, ranked[["page"]]))
+r <- h[["rank narrow"]]
+if (!isTRUE(r$menu_fits)) fail(sprintf("search '%s' 390 px wide: the list of results runs off the window", ranked[["query"]]))
+if (is.null(r$opened) || !grepl(ranked[["page"]], r$opened, fixed = TRUE)) {
+  fail(sprintf("search '%s' 390 px wide opened %s first, not %s", ranked[["query"]], if (is.null(r$opened)) r$first else r$opened, ranked[["page"]]))
+}
+message(sprintf("site: search '%s' 390 px wide: %d results within the window, the first opened %s", ranked[["query"]],
                 r$suggestions, ranked[["page"]]))
 for (pg in search_pages) file_search_result(res[[paste("file search", pg)]], pg)
 check_animation(h[[paste("animation", animation_page)]], animation_page)

@@ -21,7 +21,9 @@ class RHandle:
 
     def __repr__(self):
         ro = r()
-        text = "\n".join(ro.r["capture.output"](ro.r["print"](self.robj)))
+        # print() called inside capture.output(): called from Python first, R's
+        # print wrote the whole object to the console and the repr showed it again
+        text = "\n".join(ro.r("function(x) utils::capture.output(print(x))")(self.robj))
         return f"<{type(self).__name__}>\n{text}"
 
     def to_r(self):
