@@ -275,6 +275,47 @@ for (k in seq_len(nrow(invariance))) {
   bench_record(sprintf("flexglove discriminant, %s", rownames(invariance)[k]), invariance[k, "pooled"], "fraction")
 }
 
+# The same invariances for the FPCA likelihood distance (issue 40: "decide
+# what the models should be invariant to"): every recording referred to a
+# rest level before fitting and classifying (its own, or its participant's
+# median), and also divided by the participant's median range per channel.
+# The per-participant forms use the held-out participant's unlabelled
+# recordings together; evaluate_loso() as in the table above.
+fpca_invariance <- local({
+  by_subject <- function(M) {
+    for (s in unique(g$meta$subject)) {
+      i <- g$meta$subject == s
+      M[i, ] <- matrix(apply(M[i, , drop = FALSE], 2, stats::median), sum(i), ncol(M), byrow = TRUE)
+    }
+    M
+  }
+  low <- t(vapply(g$recordings, function(r) apply(r, 2, min), numeric(length(g$dofs))))
+  referred <- function(level, scale = NULL) {
+    recs <- lapply(seq_along(g), function(i) {
+      r <- sweep(g$recordings[[i]], 2, level[i, ])
+      if (is.null(scale)) r else sweep(r, 2, scale[i, ], "/")
+    })
+    grasps(recs, meta = g$meta[c("id", "grasp", "subject", "object", "trial")], rate = g$rate)
+  }
+  acc <- function(x) {
+    ev <- evaluate_loso(x, method = "fpca", in_sample = FALSE)
+    ps <- ev$per_subject
+    c(pooled = ev$accuracy[["held_out"]], vapply(c("P1", "P2"), function(s) ps$accuracy[ps$subject == s], numeric(1)))
+  }
+  rbind(`as recorded` = acc(g), `each recording's rest level removed` = acc(referred(rest)),
+        `each participant's rest level removed` = acc(referred(by_subject(rest))),
+        `... and divided by the participant's range` = acc(referred(by_subject(rest), by_subject(rest - low))))
+})
+cat("The FPCA likelihood distance held out by participant, with the recordings referred to a rest level:\n")
+print(data.frame(recordings = rownames(fpca_invariance), pooled = fmt(fpca_invariance[, "pooled"]),
+                 `test P1` = fmt(fpca_invariance[, "P1"]), `test P2` = fmt(fpca_invariance[, "P2"]),
+                 check.names = FALSE), row.names = FALSE)
+cat("\n")
+for (k in seq_len(nrow(fpca_invariance))) {
+  bench_record(sprintf("flexglove fpca, %s", rownames(fpca_invariance)[k]), fpca_invariance[k, "pooled"], "fraction")
+}
+
+
 # The simulator's raw-count glove (bench/bench-glove.R's set): one person, 5 folds by recording
 objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)
 raw <- simulate_grasps(subjects = 1, grasps = objects[seq_len(bq(6, 3))], objects = 1, trials = bq(28, 8),
