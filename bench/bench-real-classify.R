@@ -315,7 +315,6 @@ for (k in seq_len(nrow(fpca_invariance))) {
   bench_record(sprintf("flexglove fpca, %s", rownames(fpca_invariance)[k]), fpca_invariance[k, "pooled"], "fraction")
 }
 
-
 # The simulator's raw-count glove (bench/bench-glove.R's set): one person, 5 folds by recording
 objects <- c(bottle = 1, mug = 9, ball = 17, pen = 22, card = 28, key = 31)
 raw <- simulate_grasps(subjects = 1, grasps = objects[seq_len(bq(6, 3))], objects = 1, trials = bq(28, 8),
