@@ -124,8 +124,9 @@ nested_ncomp <- function(g, K = 4L) {
   # recordings x (k = 1..K, then the sum over k): right or wrong
   correct <- function(ms, test) {
     d <- lapply(seq_len(K), function(k) {
-      set <- new_grasp_models(lapply(fitted_models(ms), cut_model, k), levels = attr(ms, "levels"),
-                              distance = "likelihood")
+      # (the residual scale pooled again over the cut models, as fit_model_set() pools it)
+      set <- new_grasp_models(pool_likelihood_residuals(lapply(fitted_models(ms), cut_model, k)),
+                              levels = attr(ms, "levels"), distance = "likelihood")
       suppressWarnings(fpca_distances(set, test)$distances)
     })
     d[[K + 1L]] <- Reduce(`+`, d)
