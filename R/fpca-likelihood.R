@@ -44,7 +44,7 @@
 # scale for all types. Held out by participant on flexglove 73.2% -> 76.8%
 # (P1 63.5% -> 68.0%, P2 86.4% -> 89.0%), on the default data held out by
 # subject 50.6% -> 61.4%; the wide simulated glove of bench/bench-real.R
-# 100% -> 99.4% (one of 168). Found on flexglove's participant folds after
+# (5 folds by recording) 98.2% -> 99.4% (3 -> 1 of 168 wrong). Found on flexglove's participant folds after
 # a set-wide number of FPCs chosen by nested folds (69.6%), rest-level and
 # range invariance and a wider kernel had not helped
 # (bench/bench-real-classify.R); it has no parameter. A model fitted before
