@@ -62,16 +62,21 @@ test_that("the likelihood distance is minus twice the log density of the residua
   ms <- fit_grasp_models(g, seed = 1, ncomp = 1, mixture_components = 1)
   d <- predict(ms, g, type = "distance")
   # by hand, for model A: project, then the scaled chi-square of each DoF's
-  # residual and the Gaussian kernel density of the joint score vector
+  # residual (its moments pooled over A and B, weighted by their recordings
+  # less one) and the Gaussian kernel density of the joint score vector
   m <- fitted_models(ms)[["A"]]
   pr <- project(m, g)
   ref <- numeric(length(g))
   for (j in seq_along(m$dofs)) {
-    ev <- m$fpca[[j]]$eigenvalues[-1]
-    ev <- ev[ev > 0]
-    a <- sum(ev^2) / sum(ev)
-    nu <- sum(ev)^2 / sum(ev^2)
-    ref <- ref - 2 * (stats::dchisq(pr$residual[, j]^2 / a, nu, log = TRUE) - log(a))
+    mom <- vapply(fitted_models(ms), function(mm) {
+      ev <- mm$fpca[[j]]$eigenvalues[-1]
+      ev <- ev[ev > 0]
+      (mm$n_used - 1) * c(sum(ev), sum(ev^2), 1)
+    }, numeric(3))
+    s <- rowSums(mom)
+    a <- s[2] / s[1]
+    nu <- s[1]^2 / s[2] / s[3]
+    ref <- ref + pr$residual[, j]^2 / a + nu * log(2 * pi * a)
   }
   X <- vapply(m$fpca, function(f) f$scores[, 1], numeric(m$n_used))   # training scores, n x 16
   S <- pr$scores[, , 1]
@@ -171,7 +176,7 @@ test_that("a type of fewer than three recordings keeps the DoF-by-DoF score mixt
     a <- max(if (length(ev)) sum(ev^2) / sum(ev) else 0, 1e-8 * max(f$eigenvalues, 1))
     nu <- if (length(ev)) max(sum(ev)^2 / sum(ev^2), 1) else 1
     mix <- m$gmm[[j]]
-    ref <- ref - 2 * (stats::dchisq(pmax(pr$residual[, j]^2, .Machine$double.xmin) / a, nu, log = TRUE) - log(a)) -
+    ref <- ref + pr$residual[, j]^2 / a + nu * log(2 * pi * a) -
       2 * gmm_log_density(mix$weights, mix$means, mix$covs, matrix(pr$scores[, j, ], ncol = 1))
   }
   expect_equal(unname(predict(ms, g, type = "distance")$.dist_A), unname(ref), tolerance = 1e-8)
@@ -189,4 +194,61 @@ test_that("distance is checked, kept by subsetting, and printed", {
   old <- ms
   attr(old, "distance") <- NULL
   expect_equal(predict(old, g, type = "distance"), predict(ms, g, type = "distance"))
+})
+
+# Type A's recordings are tidy (one shape, small noise); type B's have
+# another shape and loose, smooth detours of their own, so B's FPCs leave a
+# large residual on its own recordings. A new participant's A recordings
+# carry a small detour of their own that no FPC of A spans: under each
+# type's own residual scale B's loose scale makes their residual cheap and
+# B takes them; under the set's pooled scale they go to A, whose shape
+# fits them.
+loose_types <- function(n_a = 16, n_b = 16, n_new = 16, seed = 1) {
+  withr::with_seed(seed, {
+    p <- 4
+    base <- stats::runif(p, 20, 60)
+    curve <- function(ty, detour) {
+      n <- 30
+      s <- seq(0, 1, length.out = n)
+      shape <- if (ty == "A") (1 - cos(pi * s)) / 2 else sqrt(s)
+      bump <- vapply(seq_len(p), function(j) detour * stats::rnorm(1) * sin(pi * stats::runif(1, 1, 4) * s), numeric(n))
+      outer(shape, base * (1 + stats::rnorm(p, 0, 0.05))) + bump * rep(base, each = n) +
+        matrix(stats::rnorm(n * p, 0, 0.2), n, p)
+    }
+    recs <- c(lapply(seq_len(n_a), function(i) curve("A", 0.01)), lapply(seq_len(n_b), function(i) curve("B", 0.3)),
+              lapply(seq_len(n_new), function(i) curve("A", 0.08)))
+    grasps(recs, meta = data.frame(grasp = rep(c("A", "B", "A"), c(n_a, n_b, n_new)),
+                                   subject = rep(c("s1", "s1", "new"), c(n_a, n_b, n_new))))
+  })
+}
+
+test_that("the residual scale is pooled over types: a loose type does not take what another type's FPCs fit", {
+  g <- loose_types()
+  train <- g[g$meta$subject == "s1"]
+  test <- g[g$meta$subject == "new"]
+  ms <- fit_grasp_models(train, seed = 1, ncomp = 1, mixture_components = 1, motion = "as_recorded",
+                         warping = "linear")
+  m <- fitted_models(ms)
+  # the pooled moments: each DoF's discarded eigenvalues' sum and sum of
+  # squares, averaged over A and B weighted by their recordings less one
+  own <- lapply(m, function(mm) vapply(mm$fpca, function(f) {
+    ev <- f$eigenvalues[-1]
+    ev <- ev[ev > 0]
+    c(sum(ev), sum(ev^2))
+  }, numeric(2)))
+  w <- vapply(m, function(mm) mm$n_used - 1, numeric(1))
+  pooled <- (own$A * w[["A"]] + own$B * w[["B"]]) / sum(w)
+  for (mm in m) {
+    expect_equal(mm$likelihood_residual$s1, unname(pooled[1, ]), tolerance = 1e-10)
+    expect_equal(mm$likelihood_residual$s2, unname(pooled[2, ]), tolerance = 1e-10)
+  }
+  # B's own residual is far larger than A's (the plant)
+  expect_gt(min(own$B[1, ] / own$A[1, ]), 10)
+  right <- function(set) mean(as.character(predict(set, test)$.pred_class) == "A")
+  # pooled: the 16 new recordings go to A (at most one lost)
+  expect_gte(right(ms), 15 / 16)
+  # each type's own scale (the models without the pooled moments): B takes most
+  unpooled <- ms
+  for (t in names(m)) unpooled[[t]]$likelihood_residual <- NULL
+  expect_lte(right(unpooled), 0.5)
 })
