@@ -141,11 +141,7 @@ new_grasps <- function(recordings, meta, dofs, rate, unit, n_frames = NULL, glov
 }
 
 check_rate <- function(rate, call = rlang::caller_env()) {
-  if (!is.numeric(rate) || length(rate) != 1L || !is.finite(rate) || rate <= 0) {
-    hm_abort("{.arg rate} must be one positive number of frames per second, not {describe_value(rate)}.",
-             "bad_input", argument = "rate", call = call)
-  }
-  invisible(rate)
+  invisible(check_number(rate, "rate", min = 0, min_open = TRUE, unit = "frames per second", call = call))
 }
 
 # A grasps set a verb reads recordings from, with at least one recording:
@@ -170,11 +166,7 @@ check_new_recordings <- function(x, arg, verb, finite = TRUE, call = rlang::call
 }
 
 check_unit <- function(unit, call = rlang::caller_env()) {
-  if (!is.character(unit) || length(unit) != 1L || !unit %in% grasp_units) {
-    hm_abort("{.arg unit} must be one of {.val {grasp_units}}, not {.val {format(unit)}}.",
-             "bad_input", argument = "unit", call = call)
-  }
-  unit
+  check_choice(unit, grasp_units, "unit", call = call)
 }
 
 as_recording_matrix <- function(x, id, call = rlang::caller_env()) {
