@@ -10,8 +10,8 @@
 # `overlong`).
 overlong_rule <- function(iqr_mult = 3, median_mult = 1.5) {
   call <- rlang::caller_env()
-  overlong_check_mult(iqr_mult, "iqr_mult", call)
-  overlong_check_mult(median_mult, "median_mult", call)
+  check_number(iqr_mult, "iqr_mult", min = 0, min_open = TRUE, call = call)
+  check_number(median_mult, "median_mult", min = 0, min_open = TRUE, call = call)
   as_overlong_rule(c(iqr_mult = iqr_mult, median_mult = median_mult), call = call)
 }
 
@@ -66,15 +66,8 @@ as_overlong_rule <- function(x, allow_null = FALSE, arg = "overlong", call = rla
   }
   x <- as.list(x)
   rule <- list(iqr_mult = x$iqr_mult %||% 3, median_mult = x$median_mult %||% 1.5)
-  overlong_check_mult(rule$iqr_mult, "iqr_mult", call)
-  overlong_check_mult(rule$median_mult, "median_mult", call)
+  check_number(rule$iqr_mult, "iqr_mult", min = 0, min_open = TRUE, call = call)
+  check_number(rule$median_mult, "median_mult", min = 0, min_open = TRUE, call = call)
   structure(rule, class = "overlong_rule")
 }
 
-overlong_check_mult <- function(x, arg, call) {
-  if (!is.numeric(x) || length(x) != 1L || is.na(x) || x <= 0 || !is.finite(x)) {
-    hm_abort("{.arg {arg}} must be one positive number, not {.val {x}}.",
-             "bad_input", argument = arg, call = call)
-  }
-  invisible(x)
-}

@@ -143,8 +143,8 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
   L <- check_whole(target_length, "target_length", max = 1e6, allow_null = TRUE, call = call) %||%
     max(1L, as.integer(round(mean(n_frames))))
   check_whole(max_iter, "max_iter", min = 0, call = call)
-  overlong_check_mult(tol, "tol", call)
-  overlong_check_mult(max_stall, "max_stall", call)
+  check_number(tol, "tol", min = 0, min_open = TRUE, call = call)
+  check_number(max_stall, "max_stall", min = 0, min_open = TRUE, call = call)
   window <- check_number(window, "window", min = 0, allow_null = TRUE, call = call)
 
   al <- align_checked(recs, L, engine, max_iter, tol, max_stall, window, features, degenerate_warps)

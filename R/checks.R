@@ -54,10 +54,10 @@ check_flag <- function(x, arg, allow_na = FALSE, call = rlang::caller_env()) {
   x
 }
 
-# One non-missing string.
-check_string <- function(x, arg, call = rlang::caller_env()) {
+# One non-missing string; `what` it is, for the message ("one file path").
+check_string <- function(x, arg, what = "one string", call = rlang::caller_env()) {
   if (!is.character(x) || length(x) != 1L || is.na(x)) {
-    hm_abort("{.arg {arg}} must be one string, not {describe_value(x)}.",
+    hm_abort("{.arg {arg}} must be {what}, not {describe_value(x)}.",
              "bad_input", argument = arg, call = call)
   }
   x
@@ -282,8 +282,8 @@ check_sep <- function(sep, arg = "sep", allow_na = TRUE, call = rlang::caller_en
 # taken as 1.
 check_recording_pick <- function(recording, x, arg = "recording", several = FALSE, call = rlang::caller_env()) {
   idx <- if (is.character(recording)) match(recording, x$meta$id) else recording
-  check_indices(idx, length(x), arg, "recording", where = " (or ids) of `x`", one = !several,
-                given = recording, call = call)
+  where <- if (several) " or ids of `x`" else " or an id of `x`"
+  check_indices(idx, length(x), arg, "recording", where = where, one = !several, given = recording, call = call)
 }
 
 # Whole-number positions in 1..n, at least one (exactly one with `one`) and

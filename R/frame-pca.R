@@ -273,9 +273,7 @@ print.frame_pca_model <- function(x, ...) {
 autoplot.frame_pca_model <- function(object, type = c("weights", "loadings"), component = 1,
                                      max_recordings = 30, ...) {
   type <- check_choice(type, arg = "type", call = rlang::current_env())
-  if (!is.numeric(component) || length(component) != 1L || !component %in% seq_len(object$frame_ncomp)) {
-    hm_abort("{.arg component} must be one of 1 to {object$frame_ncomp}.", "bad_input", argument = "component")
-  }
+  component <- check_whole(component, "component", max = object$frame_ncomp, call = rlang::current_env())
   L <- dim(object$loadings)[1]
   flips <- which(object$flip_frames[, component])
   versions <- list(raw = list(w = object$weights_raw, l = object$loadings_raw))

@@ -103,10 +103,7 @@ gmm_fit <- function(X, k = 2, engine = c("fast", "reference"), max_iter = 500, t
   k <- check_whole(k, "k", max = max(1L, nrow(X)), call = call)
   max_iter <- check_whole(max_iter, "max_iter", call = call)
   tol <- tol %||% gmm_default_tol[[engine]]
-  if (!is.numeric(tol) || length(tol) != 1L || !is.finite(tol) || tol <= 0) {
-    hm_abort("{.arg tol} must be a positive number, not {.val {tol}}.", "bad_input",
-             argument = "tol", call = call)
-  }
+  tol <- check_number(tol, "tol", min = 0, min_open = TRUE, call = call)
   n <- nrow(X)
   d <- ncol(X)
   if (k == 1L && n >= 2L) {

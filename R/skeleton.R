@@ -52,9 +52,7 @@ skeleton_limit_cols <- c("rotx_min", "rotx_max", "roty_min", "roty_max", "rotz_m
 read_skeleton <- function(file, positions = c("absolute", "relative")) {
   call <- rlang::caller_env()
   positions <- check_choice(positions, arg = "positions", call = rlang::current_env())
-  if (!is.character(file) || length(file) != 1L || is.na(file)) {
-    hm_abort("{.arg file} must be one file path, not {describe_value(file)}.", "bad_input", argument = "file", call = call)
-  }
+  check_string(file, "file", what = "one file path", call = call)
   if (!file.exists(file) && !is_symlink(file)) {
     hm_abort("Skeleton file {.file {file}} does not exist.", "file_not_found", file = file,
              argument = "file", call = call)
