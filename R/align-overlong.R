@@ -17,8 +17,7 @@ overlong_rule <- function(iqr_mult = 3, median_mult = 1.5) {
 
 #' @export
 print.overlong_rule <- function(x, ...) {
-  cat(sprintf("<overlong_rule> remove n > max(Q3 + %g * IQR, %g * median)\n",
-              x$iqr_mult, x$median_mult))
+  cli::cat_line(sprintf("<overlong_rule> remove n > max(Q3 + %g * IQR, %g * median)", x$iqr_mult, x$median_mult))
   invisible(x)
 }
 

@@ -137,8 +137,7 @@ gmm_precheck <- function(X, k) {
   n <- nrow(X)
   d <- ncol(X)
   if (n < k * (d + 1L)) {
-    return(sprintf("too few points (%d) for %d components with full covariances in %d dimension%s",
-                   n, k, d, if (d == 1) "" else "s"))
+    return(as.character(cli::pluralize("too few points ({n}) for {as.integer(k)} components with full covariances in {d} dimension{?s}")))
   }
   ev <- eigen(stats::cov(X), symmetric = TRUE, only.values = TRUE)$values
   if (ev[1] <= 0 || ev[d] <= 1e-10 * ev[1]) {
