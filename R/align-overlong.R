@@ -10,15 +10,14 @@
 # `overlong`).
 overlong_rule <- function(iqr_mult = 3, median_mult = 1.5) {
   call <- rlang::caller_env()
-  overlong_check_mult(iqr_mult, "iqr_mult", call)
-  overlong_check_mult(median_mult, "median_mult", call)
+  check_number(iqr_mult, "iqr_mult", min = 0, min_open = TRUE, call = call)
+  check_number(median_mult, "median_mult", min = 0, min_open = TRUE, call = call)
   as_overlong_rule(c(iqr_mult = iqr_mult, median_mult = median_mult), call = call)
 }
 
 #' @export
 print.overlong_rule <- function(x, ...) {
-  cat(sprintf("<overlong_rule> remove n > max(Q3 + %g * IQR, %g * median)\n",
-              x$iqr_mult, x$median_mult))
+  cli::cat_line(sprintf("<overlong_rule> remove n > max(Q3 + %g * IQR, %g * median)", x$iqr_mult, x$median_mult))
   invisible(x)
 }
 
@@ -66,15 +65,8 @@ as_overlong_rule <- function(x, allow_null = FALSE, arg = "overlong", call = rla
   }
   x <- as.list(x)
   rule <- list(iqr_mult = x$iqr_mult %||% 3, median_mult = x$median_mult %||% 1.5)
-  overlong_check_mult(rule$iqr_mult, "iqr_mult", call)
-  overlong_check_mult(rule$median_mult, "median_mult", call)
+  check_number(rule$iqr_mult, "iqr_mult", min = 0, min_open = TRUE, call = call)
+  check_number(rule$median_mult, "median_mult", min = 0, min_open = TRUE, call = call)
   structure(rule, class = "overlong_rule")
 }
 
-overlong_check_mult <- function(x, arg, call) {
-  if (!is.numeric(x) || length(x) != 1L || is.na(x) || x <= 0 || !is.finite(x)) {
-    hm_abort("{.arg {arg}} must be one positive number, not {.val {x}}.",
-             "bad_input", argument = arg, call = call)
-  }
-  invisible(x)
-}

@@ -143,8 +143,8 @@ align_recordings <- function(recordings, target_length = NULL, engine = c("fast"
   L <- check_whole(target_length, "target_length", max = 1e6, allow_null = TRUE, call = call) %||%
     max(1L, as.integer(round(mean(n_frames))))
   check_whole(max_iter, "max_iter", min = 0, call = call)
-  overlong_check_mult(tol, "tol", call)
-  overlong_check_mult(max_stall, "max_stall", call)
+  check_number(tol, "tol", min = 0, min_open = TRUE, call = call)
+  check_number(max_stall, "max_stall", min = 0, min_open = TRUE, call = call)
   window <- check_number(window, "window", min = 0, allow_null = TRUE, call = call)
 
   al <- align_checked(recs, L, engine, max_iter, tol, max_stall, window, features, degenerate_warps)
@@ -180,8 +180,8 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
   if (length(fit$kept) < 2L) {
     return(align_linear_fallback(
       recs, L, engine,
-      reason = sprintf("fewer than 2 recordings left after dropping %d degenerate warp(s)",
-                       nrow(fit$degenerate))))
+      reason = as.character(cli::pluralize(
+        "fewer than 2 recordings left after dropping {nrow(fit$degenerate)} degenerate warp{?s}"))))
   }
   if (constrain && is.null(fit$step_pattern) && nrow(fit$degenerate) > 0L) {
     fit <- constrain_degenerate(fit, feats, L, engine, max_stall)
@@ -510,45 +510,47 @@ apply_warp <- function(x, warp) {
 print.grasp_alignment <- function(x, ...) {
   n <- length(x$ids)
   p <- dim(x$warped)[3]
-  cat(sprintf("<grasp_alignment> %d recording%s x %d DoF%s warped to L = %d frames\n",
-              n, if (n == 1) "" else "s", p, if (p == 1) "" else "s", x$target_length))
+  L <- as.integer(x$target_length)
+  cli::cat_line(cli::pluralize("<grasp_alignment> {n} recording{?s} x {p} DoF{?s} warped to L = {L} frames"))
   if (n > 0) {
-    cat(sprintf("  original frames: %d-%d (mean %.1f)\n", min(x$n_frames),
-                max(x$n_frames), mean(x$n_frames)))
+    cli::cat_line(sprintf("  original frames: %d-%d (mean %.1f)", min(x$n_frames), max(x$n_frames),
+                          mean(x$n_frames)))
   }
   if (x$method == "dtw") {
-    cat(sprintf("  method: DTW barycenter averaging (%s engine, %s features), %d iteration%s, %s\n",
-                x$engine, x$features, x$iterations, if (x$iterations == 1) "" else "s",
-                if (x$converged) "converged" else "not converged"))
+    it <- as.integer(x$iterations)
+    state <- if (x$converged) "converged" else "not converged"
+    cli::cat_line(cli::pluralize(
+      "  method: DTW barycenter averaging ({x$engine} engine, {x$features} features), {it} iteration{?s}, {state}"))
     if (identical(x$step_pattern, "symmetricP05")) {
-      cat("  most warps stalled at once: the whole type aligned by slope-constrained DTW\n")
+      cli::cat_line("  most warps stalled at once: the whole type aligned by slope-constrained DTW")
     }
   } else {
-    cat(sprintf("  method: LINEAR warping (fallback: %s)\n", x$fallback_reason))
+    cli::cat_line("  method: LINEAR warping (fallback: ", x$fallback_reason, ")")
   }
   # (the linear fallback has its own line above)
   notes <- x$degenerate_data
   if (!is.null(notes)) notes <- notes[notes$class != "linear_fallback", , drop = FALSE]
   dg <- format_degenerate(notes)
-  if (length(dg)) cat(dg, sep = "\n")
+  if (length(dg)) cli::cat_line(dg)
   deg <- x$degenerate
   # (alignments made before the fallback existed dropped them all)
   how <- deg$fallback %||% rep("dropped", nrow(deg))
   show_ids <- function(ids) {
     paste0(paste(utils::head(ids, 5), collapse = ", "), if (length(ids) > 5) ", ..." else "")
   }
+  stall <- sprintf("%g", x$max_stall)
   nd <- sum(how == "dropped")
   if (nd > 0) {
-    cat(sprintf("  dropped %d degenerate warp%s (held still > %g L): %s\n", nd,
-                if (nd == 1) "" else "s", x$max_stall, show_ids(deg$id[how == "dropped"])))
+    ids <- show_ids(deg$id[how == "dropped"])
+    cli::cat_line(cli::pluralize("  dropped {nd} degenerate warp{?s} (held still > {stall} L): {ids}"))
   }
   nc <- sum(how != "dropped")
   if (nc > 0) {
     nl <- sum(how == "linear")
-    cat(sprintf("  kept %d degenerate warp%s (held still > %g L) by a fallback: slope-constrained DTW%s: %s\n",
-                nc, if (nc == 1) "" else "s", x$max_stall,
-                if (nl > 0) sprintf(" (%d linear: no such path)", nl) else "",
-                show_ids(deg$id[how != "dropped"])))
+    linear <- if (nl > 0) sprintf(" (%d linear: no such path)", nl) else ""
+    ids <- show_ids(deg$id[how != "dropped"])
+    cli::cat_line(cli::pluralize(
+      "  kept {nc} degenerate warp{?s} (held still > {stall} L) by a fallback: slope-constrained DTW{linear}: {ids}"))
   }
   invisible(x)
 }

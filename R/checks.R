@@ -23,8 +23,9 @@ check_whole <- function(x, arg, min = 1, max = Inf, allow_null = FALSE, class = 
   if (abs(x) <= .Machine$integer.max) as.integer(x) else as.double(x)
 }
 
-# A single finite number in [min, max] (or (min, max] with `min_open`).
-check_number <- function(x, arg, min = -Inf, max = Inf, min_open = FALSE, allow_null = FALSE,
+# A single finite number in [min, max] (or (min, max] with `min_open`);
+# `unit` says what it counts, for the message ("frames per second").
+check_number <- function(x, arg, min = -Inf, max = Inf, min_open = FALSE, allow_null = FALSE, unit = NULL,
                          call = rlang::caller_env()) {
   if (is.null(x) && allow_null) return(NULL)
   ok <- is.numeric(x) && length(x) == 1L && is.finite(x) && x <= max &&
@@ -35,41 +36,50 @@ check_number <- function(x, arg, min = -Inf, max = Inf, min_open = FALSE, allow_
              else if (is.finite(min) || is.finite(max)) sprintf("a number %s %s%s", if (min_open) ">" else ">=",
                                                                 format(min), if (is.finite(max)) sprintf(" and <= %s", format(max)) else "")
              else "one finite number"
+    if (!is.null(unit)) bound <- paste(bound, "of", unit)
     hm_abort("{.arg {arg}} must be {bound}, not {describe_value(x)}.",
              "bad_input", argument = arg, call = call)
   }
   as.double(x)
 }
 
-# TRUE or FALSE.
-check_flag <- function(x, arg, call = rlang::caller_env()) {
-  if (!is.logical(x) || length(x) != 1L || is.na(x)) {
-    hm_abort("{.arg {arg}} must be {.code TRUE} or {.code FALSE}, not {describe_value(x)}.",
+# TRUE or FALSE (or NA with `allow_na`: "decide for me", as read_hust()'s
+# `recursive`).
+check_flag <- function(x, arg, allow_na = FALSE, call = rlang::caller_env()) {
+  if (!is.logical(x) || length(x) != 1L || (is.na(x) && !allow_na)) {
+    hm_abort(if (allow_na) "{.arg {arg}} must be {.code TRUE}, {.code FALSE} or {.code NA}, not {describe_value(x)}."
+             else "{.arg {arg}} must be {.code TRUE} or {.code FALSE}, not {describe_value(x)}.",
              "bad_input", argument = arg, call = call)
   }
   x
 }
 
-# One non-missing string.
-check_string <- function(x, arg, call = rlang::caller_env()) {
+# One non-missing string; `what` it is, for the message ("one file path").
+check_string <- function(x, arg, what = "one string", call = rlang::caller_env()) {
   if (!is.character(x) || length(x) != 1L || is.na(x)) {
-    hm_abort("{.arg {arg}} must be one string, not {describe_value(x)}.",
+    hm_abort("{.arg {arg}} must be {what}, not {describe_value(x)}.",
              "bad_input", argument = arg, call = call)
   }
   x
 }
 
 # One of `choices` (by default the default of argument `arg` of the calling
-# function, as match.arg() does). The whole `choices` vector (an argument
-# left at its default) means the first choice. A misspelt choice gets a
-# classed error with the valid values and the closest one.
-check_choice <- function(x, choices = NULL, arg, call = rlang::caller_env()) {
+# function, as match.arg() does): strings, or numbers (a speed of 0.5 or 1).
+# The whole `choices` vector (an argument left at its default, here or in the
+# verb that passed it on) means the first choice; `whole = FALSE` where the
+# choices are no argument's default (fk_input()'s `unit`: `c("deg", "rad")`
+# is two units, an error). A misspelt choice gets a classed error with the
+# valid values and the closest one; `info` adds bullets saying why only these
+# (plain text).
+check_choice <- function(x, choices = NULL, arg, info = NULL, whole = TRUE, call = rlang::caller_env()) {
   if (is.null(choices)) {
     caller <- sys.function(sys.parent())
     choices <- eval(formals(caller)[[arg]], envir = environment(caller))
   }
-  if (identical(x, choices)) return(choices[1])
-  if (is.character(x) && length(x) == 1L && !is.na(x) && x %in% choices) return(x)
+  if (whole && identical(x, choices)) return(choices[1])
+  # (of the choices' own type: "1" is not the speed 1, nor 1 the string "1")
+  same_type <- if (is.numeric(choices)) is.numeric(x) else is.character(x)
+  if (same_type && length(x) == 1L && !is.na(x) && x %in% choices) return(x)
   hint <- NULL
   if (is.character(x) && length(x) == 1L && !is.na(x)) {
     d <- utils::adist(x, choices, ignore.case = TRUE)[1, ]
@@ -79,7 +89,9 @@ check_choice <- function(x, choices = NULL, arg, call = rlang::caller_env()) {
       hint <- c(i = "Did you mean {.val {choices[which.min(d)]}}?")
     }
   }
-  hm_abort(c("{.arg {arg}} must be one of {.or {.val {choices}}}, not {describe_value(x)}.", hint),
+  # (`info` is text, not a template: its braces are escaped)
+  info <- if (length(info)) stats::setNames(gsub("([{}])", "\\1\\1", info), rep("i", length(info)))
+  hm_abort(c("{.arg {arg}} must be one of {.or {.val {choices}}}, not {describe_value(x)}.", hint, info),
            "bad_input", argument = arg, call = call)
 }
 
@@ -264,16 +276,30 @@ check_sep <- function(sep, arg = "sep", allow_na = TRUE, call = rlang::caller_en
   sep
 }
 
-# One recording of the grasps set `x` picked by index (a whole number from
-# 1 to length(x)) or id; returns its index. A fractional index (2.5) used to
-# be truncated silently, TRUE taken as 1.
-check_recording_pick <- function(recording, x, arg = "recording", call = rlang::caller_env()) {
-  idx <- if (is.character(recording) && length(recording) == 1L) match(recording, x$meta$id) else recording
-  if (!is.numeric(idx) || length(idx) != 1L || is.na(idx) || idx != round(idx) || idx < 1 || idx > length(x)) {
-    hm_abort("{.arg {arg}} must pick one of the {length(x)} recording{?s} by index or id, not {describe_value(recording)}.",
-             "bad_input", argument = arg, call = call)
+# Recordings of the grasps set `x` picked by index (whole numbers from 1 to
+# length(x)) or id; returns their indices; `several` lets more than one
+# through. A fractional index (2.5) used to be truncated silently, TRUE
+# taken as 1.
+check_recording_pick <- function(recording, x, arg = "recording", several = FALSE, call = rlang::caller_env()) {
+  idx <- if (is.character(recording)) match(recording, x$meta$id) else recording
+  where <- if (several) " or ids of `x`" else " or an id of `x`"
+  check_indices(idx, length(x), arg, "recording", where = where, one = !several, given = recording, call = call)
+}
+
+# Whole-number positions in 1..n, at least one (exactly one with `one`) and
+# no NA, as integers: the frames of a recording, the recordings of a set.
+# `what` names one position ("frame"); `where` (plain text) says whose
+# positions; `given` is what the user gave (ids before they were matched);
+# `...` are the error's fields (recording = id). A fractional position (2.5)
+# used to be truncated silently.
+check_indices <- function(i, n, arg, what, where = "", one = FALSE, given = i, ...,
+                          call = rlang::caller_env()) {
+  if (!is.numeric(i) || !length(i) || (one && length(i) != 1L) || anyNA(i) || any(i != round(i)) ||
+      any(i < 1 | i > n)) {
+    hm_abort("{.arg {arg}} must be {if (one) 'one whole' else 'whole'} {what} number{if (one) '' else 's'} from 1 to {n}{where}, not {describe_value(given)}.",
+             "bad_input", argument = arg, ..., call = call)
   }
-  as.integer(idx)
+  as.integer(i)
 }
 
 # Numeric subscripts of a set of `n` `what`s (`[` methods): whole numbers,

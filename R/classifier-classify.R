@@ -242,19 +242,23 @@ print.grasp_classification <- function(x, ...) {
   p <- x$predictions
   lab <- !is.na(p$truth) & !is.na(p$predicted)
   ok <- sum(as.character(p$truth[lab]) == as.character(p$predicted[lab]))
-  cat(sprintf("<grasp_classification> %s, %d recording%s x %d model%s\n",
-              switch(x$method, fpca = if (identical(x$fpca_distance, "likelihood")) "FPCA likelihood distance" else "FPCA projection distance", last_frame = "last-frame PCA distance",
-                     discriminant = "shrinkage LDA (distance = -log posterior)",
-                     weighted_fpca = "weighted FPCA distance",
-                     recognizer = "early recogniser, whole recordings (distance = -log posterior)",
-                     paste(x$method, "distance")),
-              nrow(p), if (nrow(p) == 1) "" else "s", ncol(x$distances),
-              if (ncol(x$distances) == 1) "" else "s"))
-  if (sum(lab) > 0)
-    cat(sprintf("  accuracy %.1f%% (%d of %d labelled recordings)\n", 100 * ok / sum(lab), ok, sum(lab)))
-  if (any(is.na(p$truth))) cat(sprintf("  %d unlabelled recording(s)\n", sum(is.na(p$truth))))
-  if (any(is.na(p$predicted))) cat(sprintf("  %d recording(s) without a prediction\n", sum(is.na(p$predicted))))
-  if (nrow(x$failures) > 0) cat("  failed models:", paste(x$failures$model, collapse = ", "), "\n")
+  method <- switch(x$method,
+                   fpca = if (identical(x$fpca_distance, "likelihood")) "FPCA likelihood distance" else "FPCA projection distance",
+                   last_frame = "last-frame PCA distance",
+                   discriminant = "shrinkage LDA (distance = -log posterior)",
+                   weighted_fpca = "weighted FPCA distance",
+                   recognizer = "early recogniser, whole recordings (distance = -log posterior)",
+                   paste(x$method, "distance"))
+  cli::cat_line(cli::pluralize("<grasp_classification> {method}, {nrow(p)} recording{?s} x {ncol(x$distances)} model{?s}"))
+  n_lab <- sum(lab)
+  if (n_lab > 0) {
+    cli::cat_line(cli::pluralize("  accuracy {sprintf('%.1f%%', 100 * ok / n_lab)} ({ok} of {n_lab} labelled recording{?s})"))
+  }
+  n_unlab <- sum(is.na(p$truth))
+  if (n_unlab > 0) cli::cat_line(cli::pluralize("  {n_unlab} unlabelled recording{?s}"))
+  n_unpred <- sum(is.na(p$predicted))
+  if (n_unpred > 0) cli::cat_line(cli::pluralize("  {n_unpred} recording{?s} without a prediction"))
+  if (nrow(x$failures) > 0) cli::cat_line("  failed models: ", paste(x$failures$model, collapse = ", "))
   invisible(x)
 }
 

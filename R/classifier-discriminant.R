@@ -286,18 +286,21 @@ classifier_log_posterior <- function(object, x, call = rlang::caller_env()) {
 
 #' @export
 print.grasp_discriminant <- function(x, ...) {
-  cat(sprintf("<grasp_discriminant> shrinkage LDA, %d grasp types, %d training recordings\n",
-              length(x$classes), sum(x$n)))
-  cat(sprintf("  features: %d DoFs at %d fractions of the motion (%s) + log duration + travel and extremes per DoF\n",
-              length(x$dofs), length(x$at), paste(signif(x$at, 3), collapse = ", ")))
-  cat(sprintf("  correlation shrinkage %s; %s priors\n", paste(sprintf("%.3f", x$fit$shrinkage), collapse = ", "), x$prior))
-  used <- x$fit$subclasses_used
-  cat(if (identical(x$fit$subclasses, "auto")) {
-    sprintf("  subclasses per type: an average of the fits with up to %s (the finest uses %d to %d, %d in all)\n",
-            paste(discriminant_subclass_choices, collapse = ", "), min(used), max(used), sum(used))
+  cli::cat_line(cli::pluralize(
+    "<grasp_discriminant> shrinkage LDA, {length(x$classes)} grasp type{?s}, {sum(x$n)} training recording{?s}"))
+  at <- paste(signif(x$at, 3), collapse = ", ")
+  cli::cat_line(cli::pluralize(paste(
+    "  features: {length(x$dofs)} DoF{?s} at {length(x$at)} fraction{?s} of the motion ({at})",
+    "+ log duration + travel and extremes per DoF")))
+  cli::cat_line("  correlation shrinkage ", paste(sprintf("%.3f", x$fit$shrinkage), collapse = ", "), "; ",
+                x$prior, " priors")
+  used <- as.integer(x$fit$subclasses_used)
+  range <- sprintf("%d to %d", min(used), max(used))
+  cli::cat_line(if (identical(x$fit$subclasses, "auto")) {
+    paste0("  subclasses per type: an average of the fits with up to ", paste(discriminant_subclass_choices, collapse = ", "),
+           " (the finest uses ", range, ", ", sum(used), " in all)")
   } else {
-    sprintf("  subclasses per type: up to %d (given); used %d to %d (%d in all)\n", x$fit$subclasses,
-            min(used), max(used), sum(used))
+    paste0("  subclasses per type: up to ", x$fit$subclasses, " (given); used ", range, " (", sum(used), " in all)")
   })
   invisible(x)
 }

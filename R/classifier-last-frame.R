@@ -162,14 +162,16 @@ last_frame_distances <- function(fit, x, call = rlang::caller_env()) {
 print.last_frame_pca <- function(x, ...) {
   n <- vapply(x$models, function(m) m$n, integer(1))
   cv <- vapply(x$models, function(m) m$cumvar[x$ncomp], numeric(1))
-  cat(sprintf("<last_frame_pca> %d grasp type%s, %d DoFs, %d PCs\n", length(x$models),
-              if (length(x$models) == 1) "" else "s", length(x$dofs), x$ncomp))
-  cat(sprintf("  recordings per type: %d to %d; variance explained by %d PCs: %s to %s\n",
-              min(n), max(n), x$ncomp, fmt_pct(min(cv, na.rm = TRUE)), fmt_pct(max(cv, na.rm = TRUE))))
+  k <- as.integer(x$ncomp)
+  cli::cat_line(cli::pluralize("<last_frame_pca> {length(x$models)} grasp type{?s}, {length(x$dofs)} DoF{?s}, {k} PC{?s}"))
+  cli::cat_line(cli::pluralize("  recordings per type: {min(n)} to {max(n)}; variance explained by {k} PC{?s}: "),
+                fmt_pct(min(cv, na.rm = TRUE)), " to ", fmt_pct(max(cv, na.rm = TRUE)))
   short <- names(x$ncomp_used)[x$ncomp_used < x$ncomp]
-  if (length(short) > 0)
-    cat(sprintf("  fewer than %d PCs (too few recordings): %s\n", x$ncomp, paste(short, collapse = ", ")))
-  if (x$n_unlabelled > 0) cat(sprintf("  ignored %d unlabelled recording(s)\n", x$n_unlabelled))
+  if (length(short) > 0) {
+    cli::cat_line(cli::pluralize("  fewer than {k} PC{?s} (too few recordings): "), paste(short, collapse = ", "))
+  }
+  n_unlab <- as.integer(x$n_unlabelled)
+  if (n_unlab > 0) cli::cat_line(cli::pluralize("  ignored {n_unlab} unlabelled recording{?s}"))
   invisible(x)
 }
 

@@ -243,8 +243,8 @@ print.grasp_predictions <- function(x, ..., n = 10L) {
   type <- if (identical(names(x), ".pred_class")) "class" else if (all(startsWith(names(x), ".dist_"))) "distance" else "prob"
   what <- switch(type, class = "predicted class", prob = "class probabilities",
                  distance = "distances to each class")
-  cat(sprintf("<grasp_predictions> %s of %d recording%s%s\n", what, nrow(x), if (nrow(x) == 1L) "" else "s",
-              if (type == "class") "" else sprintf(", %d classes", ncol(x))))
+  classes <- if (type != "class") cli::pluralize(", {ncol(x)} class{?es}")
+  cli::cat_line(cli::pluralize("<grasp_predictions> {what} of {nrow(x)} recording{?s}"), classes)
   shown <- as.data.frame(unclass(x)[names(x)], row.names = rownames(x), check.names = FALSE,
                          stringsAsFactors = FALSE)
   cols <- names(shown)
@@ -252,14 +252,12 @@ print.grasp_predictions <- function(x, ..., n = 10L) {
   # (three decimals, "<0.001" and ">0.999" beyond: see format_probability())
   if (type == "prob") shown[] <- lapply(shown, function(v) if (is.numeric(v)) format_probability(v) else v)
   print(utils::head(shown, n), digits = 3)
-  more <- c(if (nrow(x) > n) sprintf("%d more row%s", nrow(x) - n, if (nrow(x) - n == 1L) "" else "s"),
-            if (length(cols) > 8L) sprintf("%d more column%s: %s", length(cols) - 8L,
-                                             if (length(cols) - 8L == 1L) "" else "s", name_list(cols[-(1:8)], 3L)))
-  if (length(more)) cat("# ...", paste(more, collapse = "; "), "\n")
+  more <- c(if (nrow(x) > n) cli::pluralize("{nrow(x) - n} more row{?s}"),
+            if (length(cols) > 8L) cli::pluralize("{length(cols) - 8L} more column{?s}: {name_list(cols[-(1:8)], 3L)}"))
+  if (length(more)) cli::cat_line("# ... ", paste(more, collapse = "; "))
   r <- attr(x, "reasons")
   if (length(r)) {
-    cat(sprintf("# %d recording%s not classified: %s\n", length(r), if (length(r) == 1L) "" else "s",
-                name_list(paste0(names(r), " (", r, ")"), 3L)))
+    cli::cat_line(cli::pluralize("# {length(r)} recording{?s} not classified: {name_list(paste0(names(r), ' (', r, ')'), 3L)}"))
   }
   invisible(x)
 }

@@ -40,8 +40,9 @@ print.grasp_probabilities <- function(x, ...) {
   print(format(x), quote = FALSE, right = TRUE)
   ms <- attr(x, "ms")
   if (!is.null(ms)) {
-    cat(sprintf("# after %d frame%s (%.0f ms)%s\n", attr(x, "frames"), if (identical(attr(x, "frames"), 1L)) "" else "s",
-                ms, if (isFALSE(attr(x, "motion"))) ", before the motion started: the prior" else ""))
+    frames <- as.integer(attr(x, "frames"))
+    cli::cat_line(cli::pluralize("# after {frames} frame{?s} ({sprintf('%.0f', ms)} ms)"),
+                  if (isFALSE(attr(x, "motion"))) ", before the motion started: the prior")
   }
   invisible(x)
 }

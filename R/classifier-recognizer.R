@@ -184,10 +184,11 @@ recognizer_scores <- function(object, x, seen) {
 
 #' @export
 print.grasp_recognizer <- function(x, ...) {
-  cat(sprintf("<grasp_recognizer> %d grasp types, %d training recordings, horizons 1-%d frames (%.0f ms at %g Hz)\n",
-              length(x$classes), sum(x$n), x$horizon, 1000 * x$horizon / x$rate, x$rate))
-  cat(sprintf("  features: postures at %s of the frames seen + travel per DoF; shrinkage LDA per horizon\n",
-              paste(signif(x$at, 3), collapse = ", ")))
+  cli::cat_line(cli::pluralize(
+    "<grasp_recognizer> {length(x$classes)} grasp type{?s}, {sum(x$n)} training recording{?s}, "),
+    sprintf("horizons 1-%d frames (%.0f ms at %g Hz)", as.integer(x$horizon), 1000 * x$horizon / x$rate, x$rate))
+  cli::cat_line("  features: postures at ", paste(signif(x$at, 3), collapse = ", "),
+                " of the frames seen + travel per DoF; shrinkage LDA per horizon")
   invisible(x)
 }
 

@@ -94,12 +94,9 @@ update.grasp_stream <- function(object, frame, ...) {
 #' @export
 print.grasp_stream <- function(x, ...) {
   st <- x$state
-  cat(sprintf("<grasp_stream> %d frame%s seen (%.0f ms)", st$h, if (st$h == 1L) "" else "s",
-              1000 * st$h / st$recognizer$rate))
-  if (!is.null(st$probs)) {
-    top <- utils::head(sort(st$probs, decreasing = TRUE), 3)
-    cat("; most likely:", paste(sprintf("%s %.0f%%", names(top), 100 * top), collapse = ", "))
-  }
-  cat("\n")
+  ms <- sprintf("%.0f", 1000 * st$h / st$recognizer$rate)
+  top <- if (!is.null(st$probs)) utils::head(sort(st$probs, decreasing = TRUE), 3)
+  likely <- if (length(top)) paste("; most likely:", paste(sprintf("%s %.0f%%", names(top), 100 * top), collapse = ", "))
+  cli::cat_line(cli::pluralize("<grasp_stream> {st$h} frame{?s} seen ({ms} ms)"), likely)
   invisible(x)
 }

@@ -103,13 +103,12 @@ weighted_fpca_log_floor <- -50
 
 #' @export
 print.weighted_fpca <- function(x, ...) {
-  cat(sprintf("<weighted_fpca> %d grasp models, %s time weights, per-type DoF weights\n",
-              nrow(x$scale), if (x$time == "end") "end-of-motion" else "uniform"))
+  time <- if (x$time == "end") "end-of-motion" else "uniform"
+  cli::cat_line(cli::pluralize("<weighted_fpca> {nrow(x$scale)} grasp model{?s}, {time} time weights, per-type DoF weights"))
   w <- 1 / x$scale
   w <- w / rowMeans(w)
   top <- apply(w, 1L, function(v) paste(names(sort(v, decreasing = TRUE))[1:2], collapse = "+"))
-  cat(sprintf("  most weighted DoFs: %s\n",
-              paste(utils::head(sprintf("%s (%s)", names(top), top), 4), collapse = "; ")))
+  cli::cat_line("  most weighted DoFs: ", paste(utils::head(sprintf("%s (%s)", names(top), top), 4), collapse = "; "))
   invisible(x)
 }
 

@@ -173,16 +173,14 @@ print.grasp_confusion <- function(x, ...) {
   tab <- x$table
   k <- length(x$levels)
   acc <- if (x$n > 0) sum(diag(tab)) / x$n else NA_real_
-  cat(sprintf("<grasp_confusion> %d class%s, %d recording%s, accuracy %s\n", k,
-              if (k == 1) "" else "es", x$n, if (x$n == 1) "" else "s",
-              if (is.na(acc)) "NA" else sprintf("%.1f%%", 100 * acc)))
-  cat("  rows = predicted type (model), columns = true type\n")
-  if (x$n_missing_truth > 0)
-    cat(sprintf("  not tabulated: %d unlabelled recording%s\n", x$n_missing_truth,
-                if (x$n_missing_truth == 1) "" else "s"))
-  if (x$n_missing_predicted > 0)
-    cat(sprintf("  not tabulated: %d recording%s without a prediction\n", x$n_missing_predicted,
-                if (x$n_missing_predicted == 1) "" else "s"))
+  acc <- if (is.na(acc)) "NA" else sprintf("%.1f%%", 100 * acc)
+  n <- as.integer(x$n)
+  cli::cat_line(cli::pluralize("<grasp_confusion> {k} class{?es}, {n} recording{?s}, accuracy {acc}"))
+  cli::cat_line("  rows = predicted type (model), columns = true type")
+  n_truth <- as.integer(x$n_missing_truth)
+  if (n_truth > 0) cli::cat_line(cli::pluralize("  not tabulated: {n_truth} unlabelled recording{?s}"))
+  n_pred <- as.integer(x$n_missing_predicted)
+  if (n_pred > 0) cli::cat_line(cli::pluralize("  not tabulated: {n_pred} recording{?s} without a prediction"))
   m <- unclass(tab)
   if (k > 10) {
     # 33 classes do not fit a console as a matrix: one line per true type with
@@ -193,8 +191,7 @@ print.grasp_confusion <- function(x, ...) {
     if (max(nchar(lab)) > 10) {
       # long type names would wrap the matrix: short labels plus a legend
       lab <- confusion_labels(x$levels)
-      cat(strwrap(paste0(lab, " = ", x$levels, collapse = ", "), prefix = "  ", initial = "  labels: "),
-          sep = "\n")
+      cli::cat_line(strwrap(paste0(lab, " = ", x$levels, collapse = ", "), prefix = "  ", initial = "  labels: "))
     }
     dimnames(m) <- stats::setNames(list(lab, lab), names(dimnames(m)))
     print(m)
@@ -217,7 +214,7 @@ print_confusion_compact <- function(m, levels) {
                   correct = as.integer(correct), recall = fmt_pct(ifelse(n_truth > 0, correct / n_truth, NA)),
                   `most often predicted instead` = wrong, check.names = FALSE, stringsAsFactors = FALSE)
   d <- d[n_truth > 0, , drop = FALSE]
-  cat("  per true type (full matrix: `x$table`, `autoplot(x)`):\n")
+  cli::cat_line("  per true type (full matrix: `x$table`, `autoplot(x)`):")
   print(d, row.names = FALSE, right = FALSE)
 }
 
@@ -276,10 +273,8 @@ mean_or_na <- function(v) if (all(is.na(v))) NA_real_ else mean(v, na.rm = TRUE)
 print.summary_grasp_confusion <- function(x, ...) {
   d <- as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE)
   ov <- d[is.na(d$class), , drop = FALSE]
-  cat("Confusion-matrix metrics\n")
-  for (i in seq_len(nrow(ov))) {
-    cat(sprintf("  %-18s %s  (n = %d)\n", ov$.metric[i], fmt_pct(ov$.estimate[i]), as.integer(ov$n[i])))
-  }
+  cli::cat_line("Confusion-matrix metrics")
+  if (nrow(ov)) cli::cat_line(sprintf("  %-18s %s  (n = %d)", ov$.metric, fmt_pct(ov$.estimate), as.integer(ov$n)))
   pc <- d[!is.na(d$class), , drop = FALSE]
   if (nrow(pc) > 0) {
     lev <- unique(pc$class)
@@ -291,7 +286,7 @@ print.summary_grasp_confusion <- function(x, ...) {
                        predicted_n = as.integer(pre$n[match(lev, pre$class)]),
                        precision = fmt_pct(pre$.estimate[match(lev, pre$class)]),
                        stringsAsFactors = FALSE)
-    cat("Per class:\n")
+    cli::cat_line("Per class:")
     print(wide, row.names = FALSE, right = FALSE)
   }
   invisible(x)

@@ -42,15 +42,14 @@ model_degeneracies <- function(model, n_frames) {
   # (n_frames named by recording id: the notes name the recordings)
   which_ones <- function(sel) if (is.null(names(n_frames))) "" else paste0(" (", name_list(names(n_frames)[sel]), ")")
   if (single > 0L) {
-    notes <- add_degenerate_note(notes, "one_frame", sprintf(
-      "%d of %d recordings ha%s a single frame%s: no motion to align or model",
-      single, length(n_frames), if (single == 1L) "s" else "ve", which_ones(n_frames < 2L)))
+    notes <- add_degenerate_note(notes, "one_frame", as.character(cli::pluralize(
+      "{single} of {length(n_frames)} recordings {cli::qty(single)}ha{?s/ve} a single frame{which_ones(n_frames < 2L)}: no motion to align or model")))
   }
   short <- n_frames >= 2L & n_frames < min_motion_frames
   if (any(short)) {
-    notes <- add_degenerate_note(notes, "short_recordings", sprintf(
-      "%d of %d recordings ha%s fewer than %d frames%s: too short to show a motion, fitted all the same",
-      sum(short), length(n_frames), if (sum(short) == 1L) "s" else "ve", min_motion_frames, which_ones(short)))
+    notes <- add_degenerate_note(notes, "short_recordings", as.character(cli::pluralize(paste(
+      "{sum(short)} of {length(n_frames)} recordings {cli::qty(sum(short))}ha{?s/ve} fewer than {min_motion_frames}",
+      "frames{which_ones(short)}: too short to show a motion, fitted all the same"))))
   }
   fb <- model$fallbacks
   # channels flagged stuck when the data were built were said once there
@@ -59,15 +58,14 @@ model_degeneracies <- function(model, n_frames) {
     notes <- add_degenerate_note(notes, "identical_recordings",
       "the recordings do not vary: every DoF and the warps are constant, so every generated grasp is the mean")
   } else if (length(const)) {
-    notes <- add_degenerate_note(notes, "constant_dofs", sprintf(
-      "%d DoF%s do%s not vary (%s): FPCs set to zero", length(const),
-      if (length(const) == 1L) "" else "s", if (length(const) == 1L) "es" else "", name_list(const)))
+    notes <- add_degenerate_note(notes, "constant_dofs", as.character(cli::pluralize(
+      "{length(const)} DoF{?s} do{?es/} not vary ({name_list(const)}): FPCs set to zero")))
   }
   rank <- fb$dof[fb$step == "fpca_rank"]
   if (length(rank)) {
-    notes <- add_degenerate_note(notes, "rank_deficient", sprintf(
-      "more FPCs (%d) than the rank of the curves for %d DoF%s (%s): the extra components are zero",
-      model$settings$ncomp, length(rank), if (length(rank) == 1L) "" else "s", name_list(rank)))
+    notes <- add_degenerate_note(notes, "rank_deficient", as.character(cli::pluralize(paste(
+      "more FPCs ({as.integer(model$settings$ncomp)}) than the rank of the curves for {length(rank)} DoF{?s}",
+      "({name_list(rank)}): the extra components are zero"))))
   }
   lin <- fb$reason[fb$step == "warping"]
   if (length(lin)) notes <- add_degenerate_note(notes, "linear_fallback", lin[1])
@@ -75,10 +73,10 @@ model_degeneracies <- function(model, n_frames) {
     grepl("too few points|all points identical|singular sample covariance", fb$reason)
   if (any(small)) {
     where <- ifelse(is.na(fb$dof[small]), "warps", fb$dof[small])
-    notes <- add_degenerate_note(notes, "small_mixture", sprintf(
-      "%d mixture%s cannot carry %d components and %s one Gaussian (%s): %s",
-      sum(small), if (sum(small) == 1L) "" else "s", model$settings$mixture_components,
-      if (sum(small) == 1L) "is" else "are", name_list(where), sub("^single Gaussian: ", "", fb$reason[small][1])))
+    why <- sub("^single Gaussian: ", "", fb$reason[small][1])
+    notes <- add_degenerate_note(notes, "small_mixture", as.character(cli::pluralize(paste(
+      "{sum(small)} mixture{?s} cannot carry {as.integer(model$settings$mixture_components)} components",
+      "and {cli::qty(sum(small))}{?is/are} one Gaussian ({name_list(where)}): {why}"))))
   }
   notes
 }
@@ -89,15 +87,14 @@ alignment_degeneracies <- function(al, recs, window) {
   n_frames <- vapply(recs, nrow, integer(1))
   single <- sum(n_frames < 2L)
   if (single > 0L) {
-    notes <- add_degenerate_note(notes, "one_frame", sprintf(
-      "%d of %d recordings ha%s a single frame: no motion to align", single, length(recs),
-      if (single == 1L) "s" else "ve"))
+    notes <- add_degenerate_note(notes, "one_frame", as.character(cli::pluralize(
+      "{single} of {length(recs)} recordings {cli::qty(single)}ha{?s/ve} a single frame: no motion to align")))
   }
   bad <- names(recs)[!vapply(recs, function(r) all(is.finite(r)), logical(1))]
   if (length(bad)) {
-    notes <- add_degenerate_note(notes, "non_finite", sprintf(
-      "%d of %d recordings hold%s NaN or infinite values (%s): their warped curves do too",
-      length(bad), length(recs), if (length(bad) == 1L) "s" else "", name_list(bad)))
+    notes <- add_degenerate_note(notes, "non_finite", as.character(cli::pluralize(paste(
+      "{length(bad)} of {length(recs)} recordings {cli::qty(length(bad))}hold{?s/} NaN or infinite values",
+      "({name_list(bad)}): their warped curves do too"))))
   }
   if (!is.null(window) && window == 0) {
     notes <- add_degenerate_note(notes, "zero_window",

@@ -204,8 +204,8 @@ early_horizon_predictions <- function(prefix, h, at, cls, levels, folds) {
 
 #' @export
 print.early_recognition <- function(x, ...) {
-  cat(sprintf("<early_recognition> %d classes, held out: %s\n",
-              attr(x, "classes"), attr(x, "scheme")))
+  k <- as.integer(attr(x, "classes"))
+  cli::cat_line(cli::pluralize("<early_recognition> {k} class{?es}, held out: {attr(x, 'scheme')}"))
   d <- as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE)
   d$value <- format(d$value, drop0trailing = TRUE, scientific = FALSE)
   d$accuracy <- sprintf("%.1f%%", 100 * d$accuracy)

@@ -437,16 +437,16 @@ print.generation_evaluation <- function(x, ...) {
   }
   ov <- as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE)
   ov <- ov[ov$grasp == "overall", setdiff(need, "grasp")]
-  cat(sprintf("<generation_evaluation> %d grasp type%s, model%s %s\n",
-              length(setdiff(unique(x$grasp), "overall")),
-              if (length(setdiff(unique(x$grasp), "overall")) == 1) "" else "s",
-              if (length(unique(x$model)) == 1) "" else "s", paste(unique(x$model), collapse = ", ")))
-  cat("Overall (median over types; baseline = real recordings of the training subjects):\n")
+  n_types <- length(setdiff(unique(x$grasp), "overall"))
+  models <- unique(x$model)
+  cli::cat_line(cli::pluralize(
+    "<generation_evaluation> {n_types} grasp type{?s}, {cli::qty(models)}model{?s} {paste(models, collapse = ', ')}"))
+  cli::cat_line("Overall (median over types; baseline = real recordings of the training subjects):")
   print(as.data.frame(ov), digits = 3, row.names = FALSE)
   ex <- attr(x, "excluded")
   if (is.data.frame(ex) && nrow(ex)) {
-    cat(sprintf("Over-long recordings left out of the real samples: %d held-out, %d training.\n",
-                sum(ex$held_out), sum(ex$training)))
+    cli::cat_line(sprintf("Over-long recordings left out of the real samples: %d held-out, %d training.",
+                          sum(ex$held_out), sum(ex$training)))
   }
   invisible(x)
 }

@@ -227,31 +227,37 @@ per_subject_accuracy <- function(pred) {
 
 #' @export
 print.grasp_evaluation <- function(x, ...) {
-  cat(sprintf("<grasp_evaluation> %s classifier, %s\n",
-              switch(x$method, fpca = "FPCA projection-distance", last_frame = "last-frame PCA",
-                     discriminant = "shrinkage-LDA", weighted_fpca = "weighted FPCA-distance",
-                     x$method), x$scheme))
-  ci <- x$accuracy_ci %||% c(NA_real_, NA_real_)
-  cat(sprintf("  held-out accuracy:  %s (95%% CI %s to %s; %d recordings, %d subject%s)\n",
-              fmt_pct(x$accuracy[["held_out"]]), fmt_pct(ci[1]), fmt_pct(ci[2]),
-              x$confusion$n, nrow(x$per_subject), if (nrow(x$per_subject) == 1) "" else "s"))
-  if (!is.null(x$in_sample))
-    cat(sprintf("  in-sample accuracy: %s (the thesis' figure: fit and classify the same recordings)\n",
-                fmt_pct(x$accuracy[["in_sample"]])))
+  method <- switch(x$method, fpca = "FPCA projection-distance", last_frame = "last-frame PCA",
+                   discriminant = "shrinkage-LDA", weighted_fpca = "weighted FPCA-distance", x$method)
+  cli::cat_line("<grasp_evaluation> ", method, " classifier, ", x$scheme)
+  ci <- fmt_pct(x$accuracy_ci %||% c(NA_real_, NA_real_))
+  held_out <- fmt_pct(x$accuracy[["held_out"]])
+  n <- as.integer(x$confusion$n)
+  cli::cat_line(cli::pluralize(
+    "  held-out accuracy:  {held_out} (95% CI {ci[1]} to {ci[2]}; {n} recording{?s}, {nrow(x$per_subject)} subject{?s})"))
+  if (!is.null(x$in_sample)) {
+    cli::cat_line("  in-sample accuracy: ", fmt_pct(x$accuracy[["in_sample"]]),
+                  " (the thesis' figure: fit and classify the same recordings)")
+  }
   acc <- x$per_subject$accuracy
-  if (length(acc) > 1)
-    cat(sprintf("  per-subject held-out accuracy: %s to %s (median %s)\n", fmt_pct(min(acc)),
-                fmt_pct(max(acc)), fmt_pct(stats::median(acc))))
-  miss <- x$folds$missing_types[nzchar(x$folds$missing_types)]
-  if (length(miss) > 0) cat(sprintf("  %d fold(s) held out a type absent from training\n", length(miss)))
-  unfit <- x$folds$unfitted_types[nzchar(x$folds$unfitted_types)]
-  if (length(unfit) > 0)
-    cat(sprintf("  %d fold(s) could not fit every type's model (see $folds$unfitted_types)\n", length(unfit)))
-  if (any(!is.na(x$folds$error))) cat(sprintf("  %d fold(s) failed to fit\n", sum(!is.na(x$folds$error))))
-  if (x$confusion$n_missing_predicted > 0)
-    cat(sprintf("  %d recording(s) without prediction\n", x$confusion$n_missing_predicted))
-  if (x$n_unlabelled > 0) cat(sprintf("  %d unlabelled recording(s) not used\n", x$n_unlabelled))
-  if (x$n_no_subject > 0) cat(sprintf("  %d recording(s) without subject used for training only\n", x$n_no_subject))
+  if (length(acc) > 1) {
+    cli::cat_line("  per-subject held-out accuracy: ", fmt_pct(min(acc)), " to ", fmt_pct(max(acc)),
+                  " (median ", fmt_pct(stats::median(acc)), ")")
+  }
+  # what a fold or recording could not do, each line only when it happened
+  counts <- c(missing = sum(nzchar(x$folds$missing_types)), unfit = sum(nzchar(x$folds$unfitted_types)),
+              failed = sum(!is.na(x$folds$error)), unpredicted = as.integer(x$confusion$n_missing_predicted),
+              unlabelled = as.integer(x$n_unlabelled), no_subject = as.integer(x$n_no_subject))
+  lines <- c(missing = "  {n} fold{?s} held out a type absent from training",
+             unfit = "  {n} fold{?s} could not fit every type's model (see $folds$unfitted_types)",
+             failed = "  {n} fold{?s} failed to fit",
+             unpredicted = "  {n} recording{?s} without prediction",
+             unlabelled = "  {n} unlabelled recording{?s} not used",
+             no_subject = "  {n} recording{?s} without subject used for training only")
+  for (what in names(counts)[counts > 0]) {
+    n <- counts[[what]]
+    cli::cat_line(cli::pluralize(lines[[what]]))
+  }
   invisible(x)
 }
 

@@ -245,9 +245,9 @@ fpca_finish <- function(raw, Yc, cur, mean, ncomp, delta, weights, score_rule = 
     var_explained[] <- NA_real_
     notes <- c(notes, "the curves do not vary: all components are zero and var_explained is NA")
   } else if (any(!live)) {
-    notes <- c(notes, sprintf(
-      "component%s %s: zero variance (the centred curves have rank %d), returned as zero",
-      if (sum(!live) > 1) "s" else "", paste(which(!live), collapse = ", "), sum(nonzero)))
+    dead <- paste(which(!live), collapse = ", ")
+    notes <- c(notes, as.character(cli::pluralize(
+      "{cli::qty(sum(!live))}component{?s} {dead}: zero variance (the centred curves have rank {sum(nonzero)}), returned as zero")))
   }
   new_fpca_fit(mean = mean, components = comps, scores = scores,
                eigenvalues = s2[nonzero] * delta^2 / n, var_explained = var_explained,
@@ -299,14 +299,14 @@ fpca_sign <- function(phi, weights) {
 #' @export
 print.fpca_fit <- function(x, ...) {
   k <- ncol(x$components)
-  cat(sprintf("<fpca_fit> %d curve%s x %d points, %d component%s (%s engine%s)\n",
-              x$n, if (x$n == 1) "" else "s", length(x$mean), k, if (k == 1) "" else "s",
-              x$engine, if (identical(x$score_rule, "least_squares")) ", least-squares scores" else ""))
+  n <- as.integer(x$n)
+  scores <- if (identical(x$score_rule, "least_squares")) ", least-squares scores" else ""
+  cli::cat_line(cli::pluralize(
+    "<fpca_fit> {n} curve{?s} x {length(x$mean)} points, {k} component{?s} ({x$engine} engine{scores})"))
   ve <- x$var_explained
-  cat(sprintf("  variance explained: %s (total %s)\n",
-              paste(sprintf("%.2f%%", 100 * ve), collapse = ", "),
-              sprintf("%.2f%%", 100 * sum(ve))))
-  for (note in x$notes) cat("  note: ", note, "\n", sep = "")
+  cli::cat_line("  variance explained: ", paste(sprintf("%.2f%%", 100 * ve), collapse = ", "),
+                " (total ", sprintf("%.2f%%", 100 * sum(ve)), ")")
+  if (length(x$notes)) cli::cat_line("  note: ", x$notes)
   invisible(x)
 }
 

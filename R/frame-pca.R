@@ -237,15 +237,15 @@ per_dof_fpca_rmse <- function(W, argvals, k) {
 
 #' @export
 print.frame_pca_model <- function(x, ...) {
-  cat(sprintf("<frame_pca_model> %s: %d recordings, %d PCs per frame, %d FPCs per PC%s\n",
-              if (is.na(x$grasp)) "alignment" else x$grasp, length(x$ids), x$frame_ncomp, x$ncomp,
-              if (x$align_signs) ", signs aligned" else ""))
-  cat("  sign flips between frames (raw / after repair): ",
-      paste0(x$sign_flips$component, " ", x$sign_flips$raw, "/", x$sign_flips$aligned, collapse = ", "),
-      "\n", sep = "")
+  what <- if (is.na(x$grasp)) "alignment" else x$grasp
+  signs <- if (x$align_signs) ", signs aligned" else ""
+  cli::cat_line(cli::pluralize(
+    "<frame_pca_model> {what}: {length(x$ids)} recording{?s}, {x$frame_ncomp} PC{?s} per frame, {x$ncomp} FPC{?s} per PC{signs}"))
+  cli::cat_line("  sign flips between frames (raw / after repair): ",
+                paste0(x$sign_flips$component, " ", x$sign_flips$raw, "/", x$sign_flips$aligned, collapse = ", "))
   r <- x$reconstruction
-  cat(sprintf("  reconstruction RMSE: frame-PCA %.3g vs per-DoF FPCA %.3g (mean over recordings)\n",
-              mean(r$frame_pca_rmse), mean(r$fpca_rmse)))
+  cli::cat_line(sprintf("  reconstruction RMSE: frame-PCA %.3g vs per-DoF FPCA %.3g (mean over recordings)",
+                        mean(r$frame_pca_rmse), mean(r$fpca_rmse)))
   invisible(x)
 }
 
@@ -273,9 +273,7 @@ print.frame_pca_model <- function(x, ...) {
 autoplot.frame_pca_model <- function(object, type = c("weights", "loadings"), component = 1,
                                      max_recordings = 30, ...) {
   type <- check_choice(type, arg = "type", call = rlang::current_env())
-  if (!is.numeric(component) || length(component) != 1L || !component %in% seq_len(object$frame_ncomp)) {
-    hm_abort("{.arg component} must be one of 1 to {object$frame_ncomp}.", "bad_input", argument = "component")
-  }
+  component <- check_whole(component, "component", max = object$frame_ncomp, call = rlang::current_env())
   L <- dim(object$loadings)[1]
   flips <- which(object$flip_frames[, component])
   versions <- list(raw = list(w = object$weights_raw, l = object$loadings_raw))
@@ -306,8 +304,7 @@ autoplot.frame_pca_model <- function(object, type = c("weights", "loadings"), co
   p <- base + lines +
     ggplot2::facet_wrap(~version, ncol = 1, scales = "free_y") +
     ggplot2::labs(x = "warped frame", y = ylab, colour = "DoF",
-                  title = sprintf("Per-frame PCA: %d sign flip%s of PC%d", length(flips),
-                                  if (length(flips) == 1) "" else "s", component)) +
+                  title = as.character(cli::pluralize("Per-frame PCA: {length(flips)} sign flip{?s} of PC{as.integer(component)}"))) +
     ggplot2::theme_minimal()
   if (length(flips)) {
     p <- p + ggplot2::geom_vline(xintercept = flips - 0.5, linetype = "dashed", colour = "red", alpha = 0.6)

@@ -190,13 +190,13 @@ print.glove_profile <- function(x, ...) {
   ch <- x$channels
   drawn <- !is.na(ch$axis)
   units <- table(ch$unit)
-  cat(sprintf("<glove_profile> %s: %d channel%s (%s)\n", x$name, nrow(ch), if (nrow(ch) == 1) "" else "s",
-              paste(sprintf("%d %s", as.integer(units), names(units)), collapse = ", ")))
-  cat(sprintf("  drawn: %d; not drawn: %s\n", sum(drawn),
-              if (any(!drawn)) paste(ch$channel[!drawn], collapse = " ") else "none"))
-  if (any(ch$stuck)) cat(sprintf("  stuck (constant, left out of models): %s\n", paste(ch$channel[ch$stuck], collapse = " ")))
+  by_unit <- paste(sprintf("%d %s", as.integer(units), names(units)), collapse = ", ")
+  cli::cat_line(cli::pluralize("<glove_profile> {x$name}: {nrow(ch)} channel{?s} ({by_unit})"))
+  cli::cat_line("  drawn: ", sum(drawn), "; not drawn: ",
+                if (any(!drawn)) paste(ch$channel[!drawn], collapse = " ") else "none")
+  if (any(ch$stuck)) cli::cat_line("  stuck (constant, left out of models): ", paste(ch$channel[ch$stuck], collapse = " "))
   print(utils::head(ch[c("channel", "joint", "axis", "sign", "unit", "min", "max")], 8), row.names = FALSE)
-  if (nrow(ch) > 8) cat(sprintf("  ... and %d more channels\n", nrow(ch) - 8))
+  if (nrow(ch) > 8) cli::cat_line(cli::pluralize("  ... and {nrow(ch) - 8} more channel{?s}"))
   invisible(x)
 }
 

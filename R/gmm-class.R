@@ -39,14 +39,13 @@ check_gmm_fit <- function(fit, call) {
 print.gmm_fit <- function(x, ...) {
   k <- length(x$weights)
   d <- ncol(x$means)
-  cat(sprintf("<gmm_fit> %d component%s in %d dimension%s, n = %s (%s engine)\n", k,
-              if (k == 1) "" else "s", d, if (d == 1) "" else "s",
-              if (is.null(x$n)) "?" else x$n, x$engine))
-  cat(sprintf("  log-likelihood %.4f after %s EM iteration%s%s\n", x$loglik,
-              if (is.na(x$iterations)) "?" else x$iterations,
-              if (identical(x$iterations, 1L)) "" else "s",
-              if (isTRUE(x$converged)) " (converged)" else ""))
-  if (isTRUE(x$fallback)) cat("  fallback: single Gaussian -- ", x$reason, "\n", sep = "")
+  n <- if (is.null(x$n)) "?" else format(x$n, scientific = FALSE)
+  cli::cat_line(cli::pluralize("<gmm_fit> {k} component{?s} in {d} dimension{?s}, n = {n} ({x$engine} engine)"))
+  it <- x$iterations
+  its <- if (is.na(it)) "? EM iterations" else cli::pluralize("{it} EM iteration{?s}")
+  cli::cat_line(sprintf("  log-likelihood %.4f after %s", x$loglik, its),
+                if (isTRUE(x$converged)) " (converged)" else "")
+  if (isTRUE(x$fallback)) cli::cat_line("  fallback: single Gaussian -- ", x$reason)
   tab <- data.frame(weight = x$weights, x$means, check.names = FALSE)
   names(tab)[-1] <- paste0("mean_", if (is.null(colnames(x$means))) seq_len(d) else colnames(x$means))
   print(tab, digits = 4, row.names = FALSE)

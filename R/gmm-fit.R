@@ -103,10 +103,7 @@ gmm_fit <- function(X, k = 2, engine = c("fast", "reference"), max_iter = 500, t
   k <- check_whole(k, "k", max = max(1L, nrow(X)), call = call)
   max_iter <- check_whole(max_iter, "max_iter", call = call)
   tol <- tol %||% gmm_default_tol[[engine]]
-  if (!is.numeric(tol) || length(tol) != 1L || !is.finite(tol) || tol <= 0) {
-    hm_abort("{.arg tol} must be a positive number, not {.val {tol}}.", "bad_input",
-             argument = "tol", call = call)
-  }
+  tol <- check_number(tol, "tol", min = 0, min_open = TRUE, call = call)
   n <- nrow(X)
   d <- ncol(X)
   if (k == 1L && n >= 2L) {
@@ -140,8 +137,7 @@ gmm_precheck <- function(X, k) {
   n <- nrow(X)
   d <- ncol(X)
   if (n < k * (d + 1L)) {
-    return(sprintf("too few points (%d) for %d components with full covariances in %d dimension%s",
-                   n, k, d, if (d == 1) "" else "s"))
+    return(as.character(cli::pluralize("too few points ({n}) for {as.integer(k)} components with full covariances in {d} dimension{?s}")))
   }
   ev <- eigen(stats::cov(X), symmetric = TRUE, only.values = TRUE)$values
   if (ev[1] <= 0 || ev[d] <= 1e-10 * ev[1]) {

@@ -52,10 +52,11 @@ prepare_alignment <- function(x, settings, engines, call) {
   rownames(kept_degenerate) <- NULL
   if (nrow(kept_degenerate)) {
     nl <- sum(kept_degenerate$fallback == "linear")
-    fallbacks <- add_fallback(fallbacks, "degenerate_warp", NA_character_, sprintf(
-      "%d recording%s held still > %g L by DTW kept with a slope-constrained DTW warp%s: %s",
-      nrow(kept_degenerate), if (nrow(kept_degenerate) == 1L) "" else "s", aln$max_stall,
-      if (nl) sprintf(" (%d linear: no such path)", nl) else "", paste(kept_degenerate$id, collapse = ", ")))
+    stall <- sprintf("%g", aln$max_stall)
+    linear <- if (nl) sprintf(" (%d linear: no such path)", nl) else ""
+    fallbacks <- add_fallback(fallbacks, "degenerate_warp", NA_character_, as.character(cli::pluralize(paste(
+      "{nrow(kept_degenerate)} recording{?s} held still > {stall} L by DTW kept with a slope-constrained DTW",
+      "warp{linear}: {paste(kept_degenerate$id, collapse = ', ')}"))))
     if (identical(aln$step_pattern, "symmetricP05")) {
       fallbacks <- add_fallback(fallbacks, "slope_warping", NA_character_,
                                 "most warps stalled at once: every recording aligned by slope-constrained DTW")

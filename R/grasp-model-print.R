@@ -2,37 +2,39 @@
 
 #' @export
 print.grasp_model <- function(x, ...) {
-  cat(sprintf("<grasp_model> %s%s: %d DoFs x %d FPCs + %d warp FPC%s, %d-component mixtures\n",
-              x$grasp, if (!is.na(x$grasp_id)) sprintf(" (type %d)", x$grasp_id) else "",
-              length(x$dofs), x$settings$ncomp, x$settings$warp_ncomp,
-              if (x$settings$warp_ncomp == 1) "" else "s", x$settings$mixture_components))
+  s <- x$settings
+  id <- if (!is.na(x$grasp_id)) sprintf(" (type %d)", as.integer(x$grasp_id)) else ""
+  cli::cat_line(cli::pluralize(paste0(
+    "<grasp_model> {x$grasp}{id}: {length(x$dofs)} DoF{?s} x {s$ncomp} FPC{?s} + {s$warp_ncomp} warp FPC{?s}, ",
+    "{s$mixture_components}-component mixtures")))
   rm <- table(factor(x$removed$reason, levels = c("overlong", "degenerate warp")))
   nk <- NROW(x$warping$degenerate)
-  cat(sprintf("  recordings: %d in, %d used (%d over-long, %d degenerate warps removed%s)\n",
-              x$n_input, x$n_used, rm[["overlong"]], rm[["degenerate warp"]],
-              if (nk) sprintf("; %d degenerate warp%s kept by a fallback", nk, if (nk == 1) "" else "s") else ""))
-  cat(sprintf("  target length: %d frames at %g Hz; warping: %s%s\n", x$target_length, x$rate,
-              x$warping$method, if (identical(x$settings$motion, "trim")) "; recordings trimmed to the motion" else ""))
+  kept <- if (nk) cli::pluralize("; {nk} degenerate warp{?s} kept by a fallback") else ""
+  cli::cat_line(cli::pluralize(paste0(
+    "  recordings: {x$n_input} in, {x$n_used} used ({rm[['overlong']]} over-long, ",
+    "{rm[['degenerate warp']]} degenerate warp{?s} removed{kept})")))
+  trimmed <- if (identical(s$motion, "trim")) "; recordings trimmed to the motion" else ""
+  cli::cat_line(sprintf("  target length: %d frames at %g Hz; warping: %s%s", as.integer(x$target_length), x$rate,
+                        x$warping$method, trimmed))
   if (!is.null(x$glove) && any(x$glove$channels$stuck)) {
-    cat(sprintf("  stuck channels held constant: %s\n", paste(x$glove$channels$channel[x$glove$channels$stuck], collapse = " ")))
+    cli::cat_line("  stuck channels held constant: ", paste(x$glove$channels$channel[x$glove$channels$stuck], collapse = " "))
   }
   ve <- 100 * rowSums(model_var_explained(x))
   if (any(is.finite(ve))) {
-    cat(sprintf("  variance explained by %d FPCs per DoF: min %.1f%%, median %.1f%%, max %.1f%%\n",
-                x$settings$ncomp, min(ve, na.rm = TRUE), stats::median(ve, na.rm = TRUE),
-                max(ve, na.rm = TRUE)))
+    cli::cat_line(cli::pluralize("  variance explained by {s$ncomp} FPC{?s} per DoF: "),
+                  sprintf("min %.1f%%, median %.1f%%, max %.1f%%", min(ve, na.rm = TRUE),
+                          stats::median(ve, na.rm = TRUE), max(ve, na.rm = TRUE)))
   }
-  cat("  ", format_dependence(x), "\n", sep = "")
-  cat(format_settings(x$settings), sep = "\n")
+  cli::cat_line("  ", format_dependence(x))
+  cli::cat_line(format_settings(s))
   dg <- format_degenerate(x$degenerate_data)
-  if (length(dg)) cat(dg, sep = "\n")
-  if (nrow(x$fallbacks) == 0L) {
-    cat("  fallbacks: none\n")
+  if (length(dg)) cli::cat_line(dg)
+  fb <- x$fallbacks
+  if (nrow(fb) == 0L) {
+    cli::cat_line("  fallbacks: none")
   } else {
-    cat("  fallbacks:\n")
-    fb <- x$fallbacks
-    cat(paste0("    ", fb$step, ifelse(is.na(fb$dof), "", paste0(" [", fb$dof, "]")), ": ", fb$reason,
-               collapse = "\n"), "\n", sep = "")
+    cli::cat_line("  fallbacks:")
+    cli::cat_line("    ", fb$step, ifelse(is.na(fb$dof), "", paste0(" [", fb$dof, "]")), ": ", fb$reason)
   }
   invisible(x)
 }
@@ -94,18 +96,18 @@ format_dependence <- function(model) {
 
 #' @export
 print.summary_grasp_model <- function(x, ...) {
-  cat(sprintf("Grasp model %s: %d of %d recordings used, %d frames, %s warping\n",
-              attr(x, "grasp"), attr(x, "n_used"), attr(x, "n_input"), attr(x, "target_length"),
-              attr(x, "warping")))
-  cat(attr(x, "dependence") %||% "", "\n", sep = "")
+  a <- attributes(x)
+  cli::cat_line(cli::pluralize(
+    "Grasp model {a$grasp}: {a$n_used} of {a$n_input} recording{?s} used, {a$target_length} frames, {a$warping} warping"))
+  cli::cat_line(a$dependence %||% "")
   print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
   rm <- attr(x, "removed")
   if (nrow(rm)) {
-    cat("Removed recordings:\n")
+    cli::cat_line("Removed recordings:")
     print(rm, row.names = FALSE)
   }
   fb <- attr(x, "fallbacks")
-  cat(if (nrow(fb)) "Fallbacks:\n" else "Fallbacks: none\n")
+  cli::cat_line(if (nrow(fb)) "Fallbacks:" else "Fallbacks: none")
   if (nrow(fb)) print(fb, row.names = FALSE)
   invisible(x)
 }

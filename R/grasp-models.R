@@ -387,7 +387,8 @@ new_grasp_model_failed <- function(grasp, error) {
 
 #' @export
 print.grasp_model_failed <- function(x, ...) {
-  cat(sprintf("<grasp_model_failed> %s: %s\n  (%s)\n", x$grasp, x$message, x$class))
+  cli::cat_line("<grasp_model_failed> ", x$grasp, ": ", x$message)
+  cli::cat_line("  (", x$class, ")")
   invisible(x)
 }
 
@@ -463,38 +464,39 @@ print.grasp_models <- function(x, ...) {
   s <- summary(x)
   f <- failed_types(x)
   s <- s[is.na(s$failed), , drop = FALSE]
-  cat(sprintf("<grasp_models> %d grasp type model%s%s\n", nrow(s), if (nrow(s) == 1) "" else "s",
-              if (nrow(f)) sprintf(", %d failed", nrow(f)) else ""))
+  failed <- if (nrow(f)) sprintf(", %d failed", nrow(f)) else ""
+  cli::cat_line(cli::pluralize("<grasp_models> {nrow(s)} grasp type model{?s}{failed}"))
   if (nrow(s)) {
-    cat(sprintf("  recordings used: %d of %d; target lengths %d to %d frames\n",
-                sum(s$n_used), sum(s$n_input), min(s$target_length), max(s$target_length)))
-    cat(sprintf("  linear warping: %d type%s; EM fallbacks: %d DoF%s in %d type%s\n",
-                sum(s$warping == "linear"), if (sum(s$warping == "linear") == 1) "" else "s",
-                sum(s$n_em_fallback), if (sum(s$n_em_fallback) == 1) "" else "s",
-                sum(s$n_em_fallback > 0), if (sum(s$n_em_fallback > 0) == 1) "" else "s"))
+    cli::cat_line(sprintf("  recordings used: %d of %d; target lengths %d to %d frames", sum(s$n_used),
+                          sum(s$n_input), as.integer(min(s$target_length)), as.integer(max(s$target_length))))
+    n_linear <- sum(s$warping == "linear")
+    n_em <- sum(s$n_em_fallback)
+    cli::cat_line(cli::pluralize(
+      "  linear warping: {n_linear} type{?s}; EM fallbacks: {n_em} DoF{?s} in {sum(s$n_em_fallback > 0)} type{?s}"))
     # (models whose DoFs are all constant have no variance to explain)
     if (any(is.finite(s$min_var))) {
-      cat(sprintf("  variance explained by the FPCs per DoF: min %.1f%%, mean %.1f%%\n",
-                  min(s$min_var, na.rm = TRUE), mean(s$mean_var, na.rm = TRUE)))
+      cli::cat_line(sprintf("  variance explained by the FPCs per DoF: min %.1f%%, mean %.1f%%",
+                            min(s$min_var, na.rm = TRUE), mean(s$mean_var, na.rm = TRUE)))
     }
     dep <- table(s$dependence)
-    cat(sprintf("  dependence: %s; mixtures replaced by one Gaussian by the guard: %d\n",
-                paste0(names(dep), " (", dep, " type", ifelse(dep == 1, "", "s"), ")", collapse = ", "),
-                sum(s$n_guarded)))
+    by_dependence <- paste(vapply(names(dep), function(d) cli::pluralize("{d} ({dep[[d]]} type{?s})"), ""),
+                           collapse = ", ")
+    cli::cat_line("  dependence: ", by_dependence, "; mixtures replaced by one Gaussian by the guard: ",
+                  sum(s$n_guarded))
     # every type is fitted with the same arguments: the first model's say them
-    cat(format_settings(unclass(fitted_models(x))[[1]]$settings), sep = "\n")
+    cli::cat_line(format_settings(unclass(fitted_models(x))[[1]]$settings))
   }
   dg <- models_degeneracies(x)
   if (nrow(dg)) {
     types <- unique(sub(": .*", "", dg$message))
-    cat(sprintf("  degenerate data in %d type%s: %s (see each model's print())\n", length(types),
-                if (length(types) == 1L) "" else "s", name_list(types, 5L)))
+    cli::cat_line(cli::pluralize(
+      "  degenerate data in {length(types)} type{?s}: {name_list(types, 5L)} (see each model's print())"))
   }
   if (!is.null(attr(x, "temperature")) && nrow(s) > 1L) {
-    cat(sprintf("  class probabilities: softmax(-distance / %.3g), distance: %s (see ?fit_grasp_models)\n",
-                attr(x, "temperature"), models_distance(x)))
+    cli::cat_line(sprintf("  class probabilities: softmax(-distance / %.3g), distance: %s (see ?fit_grasp_models)",
+                          attr(x, "temperature"), models_distance(x)))
   }
-  if (nrow(f)) cat(sprintf("  failed: %s\n", paste0(f$grasp, " (", f$message, ")", collapse = "; ")))
+  if (nrow(f)) cli::cat_line("  failed: ", paste0(f$grasp, " (", f$message, ")", collapse = "; "))
   invisible(x)
 }
 
@@ -569,11 +571,11 @@ summary.grasp_models <- function(object, ...) {
 print.summary_grasp_models <- function(x, ...) {
   d <- as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE)
   bad <- !is.na(d$failed)
-  cat(sprintf("Grasp models: %d type%s%s\n", sum(!bad), if (sum(!bad) == 1) "" else "s",
-              if (any(bad)) sprintf(", %d failed", sum(bad)) else ""))
+  failed <- if (any(bad)) sprintf(", %d failed", sum(bad)) else ""
+  cli::cat_line(cli::pluralize("Grasp models: {sum(!bad)} type{?s}{failed}"))
   print(d[!bad, setdiff(names(d), "failed"), drop = FALSE], digits = 4, row.names = FALSE)
   if (any(bad)) {
-    cat("Failed types:\n")
+    cli::cat_line("Failed types:")
     print(d[bad, c("grasp", "failed"), drop = FALSE], row.names = FALSE)
   }
   invisible(x)

@@ -141,11 +141,7 @@ new_grasps <- function(recordings, meta, dofs, rate, unit, n_frames = NULL, glov
 }
 
 check_rate <- function(rate, call = rlang::caller_env()) {
-  if (!is.numeric(rate) || length(rate) != 1L || !is.finite(rate) || rate <= 0) {
-    hm_abort("{.arg rate} must be one positive number of frames per second, not {describe_value(rate)}.",
-             "bad_input", argument = "rate", call = call)
-  }
-  invisible(rate)
+  invisible(check_number(rate, "rate", min = 0, min_open = TRUE, unit = "frames per second", call = call))
 }
 
 # A grasps set a verb reads recordings from, with at least one recording:
@@ -170,11 +166,7 @@ check_new_recordings <- function(x, arg, verb, finite = TRUE, call = rlang::call
 }
 
 check_unit <- function(unit, call = rlang::caller_env()) {
-  if (!is.character(unit) || length(unit) != 1L || !unit %in% grasp_units) {
-    hm_abort("{.arg unit} must be one of {.val {grasp_units}}, not {.val {format(unit)}}.",
-             "bad_input", argument = "unit", call = call)
-  }
-  unit
+  check_choice(unit, grasp_units, "unit", call = call)
 }
 
 as_recording_matrix <- function(x, id, call = rlang::caller_env()) {
@@ -403,20 +395,17 @@ length.grasps <- function(x) length(x$recordings)
 #' @export
 print.grasps <- function(x, ...) {
   m <- x$meta
-  cat(sprintf("<grasps> %d recording%s of %d DoF%s at %g Hz, in %s\n",
-              length(x), if (length(x) == 1) "" else "s", length(x$dofs),
-              if (length(x$dofs) == 1) "" else "s", x$rate, x$unit))
+  rate <- sprintf("%g", x$rate)
+  cli::cat_line(cli::pluralize("<grasps> {length(x)} recording{?s} of {length(x$dofs)} DoF{?s} at {rate} Hz, in {x$unit}"))
   if (length(x) > 0) {
     nf <- m$n_frames
-    cat(sprintf("  frames: %d to %d (mean %.1f)\n", min(nf), max(nf), mean(nf)))
+    cli::cat_line(sprintf("  frames: %d to %d (mean %.1f)", min(nf), max(nf), mean(nf)))
     ntypes <- length(unique(stats::na.omit(m$grasp)))
-    cat(sprintf("  grasp types: %d%s; %s\n", ntypes,
-                if (anyNA(m$grasp)) sprintf(" (+%d unlabelled)", sum(is.na(m$grasp))) else "",
-                origin_line(m)))
-    cat("  DoFs: ", paste(utils::head(x$dofs, 16), collapse = " "),
-        if (length(x$dofs) > 16) " ..." else "", "\n", sep = "")
+    unlabelled <- if (anyNA(m$grasp)) sprintf(" (+%d unlabelled)", sum(is.na(m$grasp))) else ""
+    cli::cat_line("  grasp types: ", ntypes, unlabelled, "; ", origin_line(m))
+    cli::cat_line("  DoFs: ", paste(utils::head(x$dofs, 16), collapse = " "), if (length(x$dofs) > 16) " ...")
     note <- resampled_note(m, x$rate)
-    if (!is.null(note)) cat("  ", note, "\n", sep = "")
+    if (!is.null(note)) cli::cat_line("  ", note)
   }
   print_glove_line(x)
   invisible(x)
@@ -466,12 +455,12 @@ summary.grasps <- function(object, ...) {
 
 #' @export
 print.summary_grasps <- function(x, ...) {
-  cat(sprintf("Grasps by type (%d DoFs at %g Hz, %s)\n", length(attr(x, "dofs")),
-              attr(x, "rate"), attr(x, "unit")))
+  rate <- sprintf("%g", attr(x, "rate"))
+  cli::cat_line(cli::pluralize("Grasps by type ({length(attr(x, 'dofs'))} DoF{?s} at {rate} Hz, {attr(x, 'unit')})"))
   print(as.data.frame(unclass(x)[names(x)], stringsAsFactors = FALSE), digits = 4, row.names = FALSE)
   stuck <- attr(x, "stuck")
-  if (length(stuck)) cat(sprintf("Stuck channels (constant, left out of models): %s\n", paste(stuck, collapse = " ")))
-  if (!is.null(attr(x, "resampled"))) cat("Recordings ", attr(x, "resampled"), "\n", sep = "")
+  if (length(stuck)) cli::cat_line("Stuck channels (constant, left out of models): ", paste(stuck, collapse = " "))
+  if (!is.null(attr(x, "resampled"))) cli::cat_line("Recordings ", attr(x, "resampled"))
   invisible(x)
 }
 
@@ -512,8 +501,7 @@ print_glove_line <- function(x) {
   if (is.null(g)) return(invisible())
   ch <- g$channels
   undrawn <- ch$channel[is.na(ch$axis)]
-  cat(sprintf("  glove: %s%s\n", g$name,
-              if (length(undrawn)) sprintf("; not drawn: %s", paste(utils::head(undrawn, 6), collapse = " ")) else ""))
-  if (any(ch$stuck)) cat(sprintf("  stuck channels (constant, left out of models): %s\n", paste(ch$channel[ch$stuck], collapse = " ")))
+  cli::cat_line("  glove: ", g$name, if (length(undrawn)) paste("; not drawn:", paste(utils::head(undrawn, 6), collapse = " ")))
+  if (any(ch$stuck)) cli::cat_line("  stuck channels (constant, left out of models): ", paste(ch$channel[ch$stuck], collapse = " "))
   invisible()
 }

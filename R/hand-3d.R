@@ -82,11 +82,7 @@ hand_3d <- function(x, recording = NULL, layout = c("side", "overlay"), limits =
   check_flag(limits, "limits", call = call)
   check_flag(autoplay, "autoplay", call = call)
   check_flag(loop, "loop", call = call)
-  speeds <- c(0.1, 0.25, 0.5, 1, 2)
-  if (!is.numeric(speed) || length(speed) != 1L || !speed %in% speeds) {
-    hm_abort("{.arg speed} must be one of {.val {speeds}}, not {describe_value(speed)}.", "bad_input",
-             argument = "speed", call = call)
-  }
+  speed <- check_choice(speed, animation_speeds, "speed", call = call)
   bg <- if (is.character(background) && length(background) == 1L) {
     tryCatch(grDevices::col2rgb(background), error = function(e) NULL)
   }
@@ -173,7 +169,7 @@ hand_3d_max <- 8L
 hand_3d_inputs <- function(x, recording, rate, call) {
   from_grasps <- function(g, label_prefix = NULL, pick = NULL) {
     check_some_recordings(g, if (is.null(label_prefix)) "x" else paste0("x$", label_prefix), call = call)
-    idx <- if (is.null(pick)) seq_along(g) else resolve_recordings(g, pick, call)
+    idx <- if (is.null(pick)) seq_along(g) else check_recording_pick(pick, g, several = TRUE, call = call)
     lapply(idx, function(i) {
       m <- g$meta[i, ]
       lab <- paste0(m$id, if (!is.null(m$grasp) && !is.na(m$grasp)) paste0(" (", m$grasp, ")") else "")
@@ -211,14 +207,6 @@ hand_3d_inputs <- function(x, recording, rate, call) {
   hands
 }
 
-resolve_recordings <- function(g, pick, call) {
-  idx <- if (is.character(pick)) match(pick, g$meta$id) else pick
-  if (!is.numeric(idx) || !length(idx) || anyNA(idx) || any(idx < 1 | idx > length(g) | idx != round(idx))) {
-    hm_abort("{.arg recording} must pick recordings of {.arg x} by index (1 to {length(g)}) or id, not {describe_value(pick)}.",
-             "bad_input", argument = "recording", call = call)
-  }
-  as.integer(idx)
-}
 
 # Per frame and joint, 1 where a DoF turning that joint is outside its limit.
 joint_limit_flags <- function(h, joint_names, skeleton) {

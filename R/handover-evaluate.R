@@ -218,7 +218,7 @@ compare_marker_sets <- function(reference, test, sets = NULL, search = TRUE, ...
 
 #' @export
 print.handover_comparison <- function(x, ...) {
-  cat("<handover_comparison> mean joint-angle error per frame (degrees)\n")
+  cli::cat_line("<handover_comparison> mean joint-angle error per frame (degrees)")
   print(as.data.frame(unclass(x)[c("set", "method", "n_markers", "error", "error_sd")]),
         digits = 3, row.names = FALSE)
   invisible(x)

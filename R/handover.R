@@ -250,16 +250,17 @@ lwr_predict <- function(ref_x, ref_y, query, k, ridge, eps) {
 #' @export
 print.handover_model <- function(x, ...) {
   r <- x$reference
-  cat(sprintf("<handover_model> %s reconstruction from %d marker%s\n",
-              if (x$method == "pca") "PCA + locally weighted regression" else "direct (no-PCA) linear",
-              length(x$markers), if (length(x$markers) == 1) "" else "s"))
-  cat("  markers:", paste(x$markers, collapse = ", "), "\n")
-  cat(sprintf("  reference: %d frames in %d recordings (%d grasp types, %d subjects), %g Hz\n",
-              r$frames, r$recordings, r$grasp_types, r$subjects, x$rate))
+  method <- if (x$method == "pca") "PCA + locally weighted regression" else "direct (no-PCA) linear"
+  cli::cat_line(cli::pluralize("<handover_model> {method} reconstruction from {length(x$markers)} marker{?s}"))
+  cli::cat_line("  markers: ", paste(x$markers, collapse = ", "))
+  counts <- lapply(r[c("frames", "recordings", "grasp_types", "subjects")], as.integer)
+  cli::cat_line(cli::pluralize(paste0(
+    "  reference: {counts$frames} frame{?s} in {counts$recordings} recording{?s} ",
+    "({counts$grasp_types} grasp type{?s}, {counts$subjects} subject{?s}), {sprintf('%g', x$rate)} Hz")))
   if (x$method == "pca") {
-    cat(sprintf("  components: %d of %d; neighbours per frame: %d; cone filter: %s\n",
-                x$ncomp, length(x$dofs), x$neighbours_used,
-                if (x$smooth) paste(x$filter_size, "frames") else "off"))
+    cli::cat_line(sprintf("  components: %d of %d; neighbours per frame: %d; cone filter: %s",
+                          as.integer(x$ncomp), length(x$dofs), as.integer(x$neighbours_used),
+                          if (x$smooth) paste(x$filter_size, "frames") else "off"))
   }
   invisible(x)
 }

@@ -327,36 +327,24 @@ fk_input <- function(x, unit, call) {
                x = if (length(dup)) "Repeated: {.val {dup}}." else "Some names are empty or NA."),
              "bad_input", argument = "x", call = call)
   }
-  if (!is.character(unit) || length(unit) != 1L || !unit %in% c("deg", "rad")) {
-    hm_abort(c("{.arg unit} must be {.val deg} or {.val rad}, not {describe_value(unit)}: a hand cannot be posed from such angles.",
-               i = "Forward kinematics needs degrees or radians; raw sensor counts must be calibrated first."),
-             "bad_input", argument = "unit", call = call)
-  }
+  unit <- check_choice(unit, c("deg", "rad"), "unit", whole = FALSE, call = call,
+                       info = "Forward kinematics needs degrees or radians: raw sensor counts must be calibrated first.")
   # a NaN angle would pose the hand at NaN (an empty picture, a page of NaN):
   # refuse it here, naming the recording, frame and DoF
   for (id in names(recs)) if (anyNA(recs[[id]]) || any(is.infinite(recs[[id]]))) as_recording_matrix(recs[[id]], id, call)
   list(recordings = recs, dofs = dofs, factor = if (unit == "rad") 180 / pi else 1, mapping = mapping)
 }
 
-fk_frames <- function(frames, n, id, call) {
+fk_frames <- function(frames, n, id, call, arg = "frames") {
   if (is.null(frames)) return(seq_len(n))
   if (is.character(frames)) {
     if (identical(frames, "last")) return(n)
     if (identical(frames, "first")) return(1L)
-    hm_abort("{.arg frames} must be indices, {.val first} or {.val last}, not {.val {frames}}.",
-             "bad_input", argument = "frames", call = call)
+    hm_abort("{.arg {arg}} must be indices, {.val first} or {.val last}, not {.val {frames}}.",
+             "bad_input", argument = arg, call = call)
   }
-  # (a fractional frame used to be truncated silently)
-  if (!is.numeric(frames) || anyNA(frames) || any(frames != round(frames))) {
-    hm_abort("{.arg frames} must be whole frame numbers, {.val first} or {.val last}, not {describe_value(frames)}.",
-             "bad_input", argument = "frames", recording = id, call = call)
-  }
-  frames <- as.integer(frames)
-  if (any(frames < 1L | frames > n)) {
-    hm_abort("{.arg frames} must lie in 1..{n} (recording {.val {id}} has {n} frame{?s}).",
-             "bad_input", argument = "frames", recording = id, call = call)
-  }
-  frames
+  check_indices(frames, n, arg, "frame", where = sprintf(" (recording \"%s\" has %d)", id, n),
+                recording = id, call = call)
 }
 
 # Everything that does not depend on the frames: which columns drive which
@@ -390,12 +378,7 @@ fk_plan <- function(dofs, skeleton, mapping, mode, deactivate, call) {
 resolve_deactivate <- function(deactivate, dofs, used, joint_names, call) {
   if (is.null(deactivate) || length(deactivate) == 0L) return(character(0))
   if (is.numeric(deactivate)) {
-    bad <- deactivate[is.na(deactivate) | deactivate < 1 | deactivate > length(dofs)]
-    if (length(bad)) {
-      hm_abort("{.arg deactivate} column{?s} {.val {bad}} out of range 1..{length(dofs)}.", "bad_input",
-               argument = "deactivate", call = call)
-    }
-    return(dofs[deactivate])
+    return(dofs[check_indices(deactivate, length(dofs), "deactivate", "DoF column", call = call)])
   }
   deactivate <- as.character(deactivate)
   as_dof <- dofs[match(dof_key(deactivate), dof_key(dofs))]

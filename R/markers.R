@@ -285,8 +285,9 @@ marker_names_of <- function(m, arg = "reference", call = rlang::caller_env()) {
 
 #' @export
 print.marker_ranking <- function(x, ...) {
-  cat(sprintf("<marker_ranking> %d markers, %s-weighted PCA of %d coordinates\n",
-              nrow(x), attr(x, "weighting"), length(attr(x, "eigenvalues"))))
+  cli::cat_line(cli::pluralize(paste(
+    "<marker_ranking> {nrow(x)} marker{?s}, {attr(x, 'weighting')}-weighted PCA of",
+    "{length(attr(x, 'eigenvalues'))} coordinate{?s}")))
   print(as.data.frame(unclass(x)[names(x)]), digits = 3, row.names = FALSE)
   invisible(x)
 }

@@ -16,7 +16,7 @@ hand_pose <- function(x, frame = "last", skeleton = hand_skeleton(), ..., call =
     meta <- x$meta
     arrays <- lapply(seq_along(x), function(i) {
       rec <- as_recording_matrix(x$recordings[[i]], x$meta$id[i], call)  # names the recording
-      fr <- fk_frames(frame, nrow(rec), x$meta$id[i], call)
+      fr <- fk_frames(frame, nrow(rec), x$meta$id[i], call, arg = "frame")
       v <- glove_recording(x, i)   # degrees and joints through the set's glove
       a <- fk_mapped(v$angles, skeleton, v$unit, v$mapping, frames = fr, ...)
       attr(a, "frames") <- fr
@@ -31,7 +31,7 @@ hand_pose <- function(x, frame = "last", skeleton = hand_skeleton(), ..., call =
     names(arrays) <- ids
   } else if (is.matrix(x) || is.data.frame(x)) {
     x <- as.matrix(x)
-    fr <- fk_frames(frame, nrow(x), "x", call)
+    fr <- fk_frames(frame, nrow(x), "x", call, arg = "frame")
     a <- forward_kinematics(x, skeleton, frames = fr, ...)
     attr(a, "frames") <- fr
     arrays <- list(x = a)
@@ -50,7 +50,7 @@ hand_pose <- function(x, frame = "last", skeleton = hand_skeleton(), ..., call =
 }
 
 pose_frames <- function(a, frame, id, call) {
-  fr <- fk_frames(frame, dim(a)[1], id, call)
+  fr <- fk_frames(frame, dim(a)[1], id, call, arg = "frame")
   out <- a[fr, , , drop = FALSE]
   attr(out, "frames") <- fr
   out

@@ -91,12 +91,8 @@ strip_recording_index <- function(g, which, set, call) {
     }
     return(i)
   }
-  if (!is.numeric(which) || length(which) != 1L || is.na(which) || which < 1 || which > length(g) ||
-      which != round(which)) {
-    hm_abort("{.arg recording} must be an index from 1 to {length(g)} or an id of set {.val {set}}, not {.val {format(which)}}.",
-             "bad_input", argument = "recording", call = call)
-  }
-  as.integer(which)
+  check_indices(which, length(g), "recording", "recording", where = sprintf(" or an id of set \"%s\"", set),
+                one = TRUE, call = call)
 }
 
 # Grasp types to draw: the requested ones (present in x) or every labelled one.

@@ -233,11 +233,11 @@ project_recordings <- function(model, x, details = TRUE, time_weights = NULL, di
 
 #' @export
 print.grasp_projection <- function(x, ...) {
-  cat(sprintf("<grasp_projection> %d recording%s onto the %s model (%d frames)\n",
-              length(x$ids), if (length(x$ids) == 1) "" else "s", x$grasp, x$target_length))
+  cli::cat_line(cli::pluralize(
+    "<grasp_projection> {length(x$ids)} recording{?s} onto the {x$grasp} model ({as.integer(x$target_length)} frames)"))
   if (length(x$distance)) {
     q <- stats::quantile(x$distance, c(0, 0.5, 1), names = FALSE)
-    cat(sprintf("  L2 distance to the projection: min %.3g, median %.3g, max %.3g\n", q[1], q[2], q[3]))
+    cli::cat_line(sprintf("  L2 distance to the projection: min %.3g, median %.3g, max %.3g", q[1], q[2], q[3]))
   }
   invisible(x)
 }

@@ -118,10 +118,7 @@ read_hust <- function(path, manifest = NULL, pattern = NULL, header = NA, sep = 
   truncated <- check_choice(truncated, arg = "truncated", call = call)
   pattern <- check_regex(pattern, "pattern", perl = TRUE, allow_null = TRUE, call = call)
   time <- check_time_arg(time, time_unit, call = call)
-  if (!is.logical(recursive) || length(recursive) != 1L) {
-    hm_abort("{.arg recursive} must be {.code TRUE}, {.code FALSE} or {.code NA}, not {describe_value(recursive)}.",
-             "bad_input", argument = "recursive", call = call)
-  }
+  check_flag(recursive, "recursive", allow_na = TRUE, call = call)
   # a pattern about folders means the files are in folders
   if (is.na(recursive)) recursive <- is_path_pattern(pattern)
   if (!is.null(rate)) check_rate(rate, call = call)

@@ -102,10 +102,7 @@ resampled_note <- function(meta, rate) {
 # Returns the folder's normalised path, or NULL.
 timestamps_dir <- function(timestamps, time, base_dir, call = rlang::caller_env()) {
   if (is.null(timestamps)) return(NULL)
-  if (!is.character(timestamps) || length(timestamps) != 1L || is.na(timestamps)) {
-    hm_abort("{.arg timestamps} must be the folder of the time stamp files, not {describe_value(timestamps)}.",
-             "bad_input", argument = "timestamps", call = call)
-  }
+  check_string(timestamps, "timestamps", what = "the folder of the time stamp files", call = call)
   if (is.null(time)) {
     hm_abort("{.arg timestamps} needs {.arg time}: the name of the time column in its files.",
              "bad_input", argument = "time", call = call)

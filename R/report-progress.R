@@ -153,10 +153,10 @@ report_progress <- function(enabled = TRUE, out = stderr(), every = 15,
       }
       eta <<- report_eta(cost, report_step_kinds(names(cost)))
       if (is.function(trace)) trace(now() - start, sum(cost), "begin")
-      say(sprintf("handmotion: reproducing the thesis' chapter 5 (%d subjects x %d grasp types, %s) on %d worker%s",
-                  settings$subjects, length(settings$grasps),
-                  if (is.null(settings$folds)) "leave-one-subject-out" else paste(settings$folds, "folds"),
-                  workers, if (workers == 1L) "" else "s"))
+      scheme <- if (is.null(settings$folds)) "leave-one-subject-out" else paste(settings$folds, "folds")
+      say(sprintf("handmotion: reproducing the thesis' chapter 5 (%d subjects x %d grasp types, %s) on ",
+                  settings$subjects, length(settings$grasps), scheme),
+          cli::pluralize("{as.integer(workers)} worker{?s}"))
       say(sprintf("  (about %s by the design at this machine's pace%s; the estimate follows the measured pace)",
                   clock_text(sum(cost)), if (is.null(p)) "" else paste0(": ", pace_text(p))))
     },

@@ -52,9 +52,7 @@ skeleton_limit_cols <- c("rotx_min", "rotx_max", "roty_min", "roty_max", "rotz_m
 read_skeleton <- function(file, positions = c("absolute", "relative")) {
   call <- rlang::caller_env()
   positions <- check_choice(positions, arg = "positions", call = rlang::current_env())
-  if (!is.character(file) || length(file) != 1L || is.na(file)) {
-    hm_abort("{.arg file} must be one file path, not {describe_value(file)}.", "bad_input", argument = "file", call = call)
-  }
+  check_string(file, "file", what = "one file path", call = call)
   if (!file.exists(file) && !is_symlink(file)) {
     hm_abort("Skeleton file {.file {file}} does not exist.", "file_not_found", file = file,
              argument = "file", call = call)
@@ -393,15 +391,14 @@ print.hand_skeleton <- function(x, ...) {
   pos <- skeleton_rest_positions(x)
   root <- which(is.na(pidx))
   reach <- sqrt(rowSums(sweep(pos, 2, pos[root, ])^2))
-  cat(sprintf("<hand_skeleton> %d joints (%d end effectors), root %s\n", nrow(j),
-              sum(n_child == 0L), j$name[root]))
-  cat(sprintf("  file units: angle %s, length %s (stored in deg and mm)\n", x$units$angle, x$units$length))
-  if (!is.na(x$file)) cat("  file:", basename(x$file), "\n")
+  cli::cat_line(cli::pluralize(
+    "<hand_skeleton> {nrow(j)} joint{?s} ({sum(n_child == 0L)} end effector{?s}), root {j$name[root]}"))
+  cli::cat_line("  file units: angle ", x$units$angle, ", length ", x$units$length, " (stored in deg and mm)")
+  if (!is.na(x$file)) cli::cat_line("  file: ", basename(x$file))
   chains <- skeleton_chains(x)
   for (ch in setdiff(unique(chains), j$name[root])) {
     idx <- which(chains == ch)
-    cat(sprintf("  %-4s %s (%.0f mm from root)\n", ch, paste(j$name[idx], collapse = " > "),
-                max(reach[idx])))
+    cli::cat_line(sprintf("  %-4s %s (%.0f mm from root)", ch, paste(j$name[idx], collapse = " > "), max(reach[idx])))
   }
   invisible(x)
 }

@@ -52,10 +52,7 @@ write_hust <- function(x, dir, file_names = NULL, sep = ",", header = FALSE, dig
   # fewer significant digits would round angles by whole degrees (the file
   # would read back as other grasps); more than 17 add nothing to a double
   digits <- check_whole(digits, "digits", min = 6, max = 17, call = call)
-  if (!is.character(sep) || length(sep) != 1L || !sep %in% c(",", ";")) {
-    hm_abort("{.arg sep} must be {.val ,} or {.val ;}, not {.val {sep}}.", "bad_input",
-             argument = "sep", call = call)
-  }
+  sep <- check_choice(sep, c(",", ";"), "sep", whole = FALSE, call = call)
   if (is.null(file_names)) file_names <- paste0(gsub("[^A-Za-z0-9._-]", "_", x$meta$id), ".csv")
   if (length(file_names) != length(x) || anyDuplicated(tolower(file_names))) {
     hm_abort("{.arg file_names} must be {length(x)} distinct name{?s} (case-insensitively).",

@@ -141,3 +141,16 @@ test_that("the key writes a label that is its own abbreviation once", {
   expect_false(any(grepl("^(\\S+) \\1$", key)))
   expect_true(any(grepl("^bttl bottle$", key)))
 })
+
+test_that("print() says its counts in the singular or plural, on stdout", {
+  # (cli::cat_line() writes to stdout: capture.output() and snapshots see it)
+  one <- utils::capture.output(print(grasp_confusion("Ring", "Ring")))
+  expect_identical(one[1], "<grasp_confusion> 1 class, 1 recording, accuracy 100.0%")
+  two <- grasp_confusion(c("Ring", "Tripod", "Tripod", NA), c("Ring", "Ring", NA, "Ring"))
+  out <- utils::capture.output(r <- print(two))
+  expect_identical(r, two)
+  expect_identical(out[1], "<grasp_confusion> 2 classes, 2 recordings, accuracy 50.0%")
+  expect_true(all(c("  not tabulated: 1 unlabelled recording", "  not tabulated: 1 recording without a prediction")
+                  %in% out))
+  expect_silent(utils::capture.output(print(two)))
+})
