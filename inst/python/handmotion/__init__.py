@@ -35,8 +35,11 @@ and argument names (a test compares this list with R's NAMESPACE):
 
 Argument names and their order are R's (``tests/test_signatures.py`` compares every
 function here with R's ``formals()``): ``generate(x, n, grasps, ...)``,
-``project(object, new_data)``, ``fit_handover(reference, markers, n_markers, ...)``; further R
-arguments pass by keyword. An argument R renamed (``?handmotion-renamed``) is a
+``project(object, new_data)``, ``fit_handover(reference, markers, n_markers, ...)``. Each
+function names the arguments users set (those added after R's positional ones are
+keyword-only, so a positional call keeps its meaning) with R's defaults (the test compares
+them too); R's other arguments, which each function's docstring lists, pass through
+``**kwargs`` by their R names. An argument R renamed (``?handmotion-renamed``) is a
 :class:`BadInputError` naming the new one.
 
 What comes back: a fitted model is a handle (:class:`GraspModels`, :class:`GraspClassifier`,

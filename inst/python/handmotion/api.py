@@ -43,6 +43,12 @@ def _check_seed(seed):
     return int(seed)
 
 
+def _given(**kwargs):
+    """The arguments that are not None: what goes on through R's ``...`` (there R's ``NULL``
+    is the default, so leaving it out is the same call and the same cache key)."""
+    return {k: v for k, v in kwargs.items() if v is not None}
+
+
 def _grasps_arg(grasps):
     if isinstance(grasps, dict):
         # {label: Feix type}: the labels of the simulated recordings
@@ -69,19 +75,24 @@ def _grasps_arg(grasps):
 # ---------------------------------------------------------------- data
 
 
-def simulate_grasps(subjects=30, grasps=None, objects=3, trials=3, rate=50, seed=1, **kwargs):
+def simulate_grasps(subjects=30, grasps=None, objects=3, trials=3, rate=50, seed=1, plant_overlong=True,
+                    rest=0, hold=0, **kwargs):
     """Simulate HUST-like grasp recordings (the package's embedded default data).
 
     Parameters mirror R's ``simulate_grasps()``: counts of ``subjects``, ``objects``
     and ``trials``; ``grasps`` as Feix names or ids (default all 33); ``rate`` in Hz;
-    ``seed`` for reproducibility (identical to R for the same seed).
+    ``seed`` for reproducibility (identical to R for the same seed); ``plant_overlong``
+    plants the over-long recordings the thesis removed; ``rest`` and ``hold`` (seconds)
+    add the still hand before and after the motion a real glove records. R's other
+    arguments (``params``, ``glove``, ``stuck``, ``session_sd``) pass by keyword.
 
     Returns
     -------
     Grasps
     """
     args = dict(subjects=_check_count(subjects, "subjects"), objects=_check_count(objects, "objects"),
-                trials=_check_count(trials, "trials"), rate=float(rate), seed=_check_seed(seed))
+                trials=_check_count(trials, "trials"), rate=float(rate), seed=_check_seed(seed),
+                plant_overlong=bool(plant_overlong), rest=float(rest), hold=float(hold))
     if grasps is not None:
         args["grasps"] = _grasps_arg(grasps)
     args.update(kwargs)
@@ -123,13 +134,14 @@ def extdata(*parts):
     return path
 
 
-def read_graspdb14(path, **kwargs):
+def read_graspdb14(path, recursive=False, pattern=r"\.txt$", datatype=None, truncated="error"):
     """Read a GraspDB14 motion file or a directory of them into a :class:`Grasps`.
 
     Files that fail to parse are listed in ``result.failures`` (a DataFrame of file,
     line, class and message) rather than dropped silently.
     """
-    return _with_failures(call("read_graspdb14", path, **kwargs))
+    return _with_failures(call("read_graspdb14", path, recursive=bool(recursive), pattern=pattern,
+                               datatype=datatype, truncated=truncated))
 
 
 def write_hust(x, dir, **kwargs):
@@ -230,13 +242,20 @@ def write_hand_animation(x, file, recording=1, overwrite=False, **kwargs):
 # ---------------------------------------------------------------- models
 
 
-def fit_grasp_model(x, grasp=None, seed=1, **kwargs):
+def fit_grasp_model(x, grasp=None, seed=1, *, ncomp=None, warp_ncomp=None, mixture_components=None,
+                    warping=None, dependence="independent", motion="auto", **kwargs):
     """Fit the generative model of one grasp type (R's ``fit_grasp_model()``, same arguments);
-    a :class:`GraspModel` for :func:`generate` and :func:`project`."""
-    return GraspModel(call("fit_grasp_model", _as_grasps(x), grasp=grasp, seed=_check_seed(seed), **kwargs))
+    a :class:`GraspModel` for :func:`generate` and :func:`project`. ``None`` is R's
+    ``NULL``: the default of ``dependence`` (two FPCs per DoF and DTW for the thesis' model).
+    R's other arguments (``engine``, ``overlong``, ``max_stall``, ``keep_data``,
+    ``mixture_guard``, ``fpc_scores``, ``residuals``, ``degenerate_warps``) pass by keyword."""
+    return GraspModel(call("fit_grasp_model", _as_grasps(x), grasp=grasp, ncomp=ncomp, warp_ncomp=warp_ncomp,
+                           mixture_components=mixture_components, warping=warping, seed=_check_seed(seed),
+                           dependence=dependence, motion=motion, **kwargs))
 
 
-def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", **kwargs):
+def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", *, ncomp=None, mixture_components=None,
+                     warping=None, motion="auto", cache=None, distance="likelihood", **kwargs):
     """Fit one generative model per grasp type (time warping + FPCA + score distributions); returns a :class:`GraspModels`.
 
     ``dependence="independent"`` is the thesis' model (DTW, two FPCs per DoF, a mixture per
@@ -244,15 +263,21 @@ def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", **kwargs)
     Gaussian copula so that generated fingers move together (linear time normalisation, four
     least-squares FPCs per DoF); ``"kernel"`` draws that joint score vector from a kernel
     density on the training recordings' own vectors (same basis; keeps the clusters of a type
-    grasped round a few objects). Other keyword arguments (``ncomp``, ``mixture_components``, ``warping``,
-    ``fpc_scores``, ``mixture_guard``, ...) go to R's ``fit_grasp_model()``, which documents
-    both models and their defaults.
+    grasped round a few objects). ``ncomp``, ``mixture_components``, ``warping`` and ``motion``
+    (and, by keyword, R's other arguments of ``fit_grasp_model()``: ``fpc_scores``,
+    ``mixture_guard``, ...) go to R's ``fit_grasp_model()``, which documents both models and
+    their defaults; ``None`` is R's ``NULL``, the default. ``cache`` is a folder for resumable
+    fits; ``distance`` (``"likelihood"`` or ``"residual"``) what :func:`classify` ranks by.
     """
     if dependence not in ("independent", "copula", "kernel"):
         raise BadInputError(f"dependence must be 'independent', 'copula' or 'kernel', not {dependence!r}")
     g = _as_grasps(x)
+    if distance not in ("likelihood", "residual"):
+        raise BadInputError(f"distance must be 'likelihood' or 'residual', not {distance!r}")
     return GraspModels(call("fit_grasp_models", g, grasps=_grasps_arg(grasps), seed=_check_seed(seed),
-                            dependence=dependence, **kwargs))
+                            dependence=dependence, motion=motion, cache=None if cache is None else str(cache),
+                            distance=distance, **_given(ncomp=ncomp, mixture_components=mixture_components,
+                                                        warping=warping), **kwargs))
 
 
 def evaluate_generation(models=None, held_out=None, training=None, n=None, reps=5, seed=1, recordings=None,
@@ -296,9 +321,12 @@ def evaluate_generation(models=None, held_out=None, training=None, n=None, reps=
             "evaluation": RHandle(res)}
 
 
-def generate(x, n=1, grasps=None, seed=1, limits=None, **kwargs):
+def generate(x, n=1, grasps=None, seed=1, limits=None, *, warp=True, phases=True, **kwargs):
     """Generate new grasps by sampling component scores (thesis eq. 2.5); R's
-    ``generate(x, n, grasps, seed, limits, ...)``.
+    ``generate(x, n, grasps, seed, warp, limits, ...)``. ``warp=False`` keeps every grasp on
+    the model's template time; ``phases`` adds the rest and hold of a model fitted to
+    recordings that have them. R's ``chunk`` and ``callback`` (streaming to an R function)
+    pass by keyword.
 
     ``x`` is a :class:`GraspModels` (``grasps`` selects the types, all by default) or a
     :class:`GraspModel`. ``seed`` defaults to 1 as in every handmotion verb that draws random
@@ -317,7 +345,7 @@ def generate(x, n=1, grasps=None, seed=1, limits=None, **kwargs):
     n = _check_count(n, "n")
     if limits not in (None, True, False):
         raise BadInputError(f"limits must be None, True or False, not {limits!r}")
-    kw = dict(n=n, seed=_check_seed(seed), limits=limits, **kwargs)
+    kw = dict(n=n, seed=_check_seed(seed), warp=bool(warp), limits=limits, phases=bool(phases), **kwargs)
     if grasps is not None:
         kw["grasps"] = _grasps_arg(grasps)
     return r_to_py(call("generate", x, **kw))
@@ -374,10 +402,13 @@ def classify(models, x, method=None, **kwargs):
             "metrics": summ}
 
 
-def evaluate_loso(x, method="fpca", folds=None, seed=1, split="auto", **kwargs):
+def evaluate_loso(x, method="fpca", folds=None, seed=1, split="auto", *, fit_args=None, subjects=None,
+                  in_sample=True, **kwargs):
     """Held-out evaluation of a classifier: by subject (leave-one-subject-out, or ``folds``
     groups of subjects) with two or more subjects, else ``folds`` (default 5) stratified folds of
-    recordings; ``split`` is ``"auto"``, ``"subject"`` or ``"recording"``.
+    recordings; ``split`` is ``"auto"``, ``"subject"`` or ``"recording"``. ``fit_args`` (a dict)
+    go to the method's fit, ``subjects`` restricts the held-out subjects, ``in_sample=False``
+    skips the in-sample accuracy.
 
     Returns a dict with ``accuracy`` (held-out and in-sample), ``accuracy_ci`` (95% interval of
     the held-out accuracy), ``confusion`` (held-out, DataFrame) and ``evaluation`` (a handle on
@@ -386,6 +417,11 @@ def evaluate_loso(x, method="fpca", folds=None, seed=1, split="auto", **kwargs):
     if split not in ("auto", "subject", "recording"):
         raise BadInputError(f"split must be 'auto', 'subject' or 'recording', not {split!r}")
     kwargs["split"] = split
+    if fit_args is not None:
+        kwargs["fit_args"] = r().r["list"](**{str(k): v for k, v in dict(fit_args).items()})
+    if subjects is not None:
+        kwargs["subjects"] = [str(v) for v in subjects]
+    kwargs["in_sample"] = bool(in_sample)
     if method not in _classify_methods():
         raise BadInputError(f"method must be one of {_classify_methods()}, not {method!r}")
     ro = r()
@@ -496,24 +532,27 @@ def select_markers(x=None, n=6, method="ranked", **kwargs):
     return [str(v) for v in call("select_markers", ref, n=_check_count(n, "n"), method=method, **kwargs)]
 
 
-def fit_handover(reference, markers=None, n_markers=6, **kwargs):
+def fit_handover(reference, markers=None, n_markers=6, *, ncomp=None, neighbours=256, method="pca", **kwargs):
     """Fit the PCA + locally weighted regression reconstruction model; returns a :class:`HandoverModel`.
 
     ``markers`` is a list of marker names (a marker set, as in :func:`forward_kinematics`);
-    ``None`` (default) takes the ``n_markers`` top-ranked markers of ``reference``.
+    ``None`` (default) takes the ``n_markers`` top-ranked markers of ``reference``. ``ncomp``
+    (PCs of the reconstruction, ``None``: chosen), ``neighbours`` (of the locally weighted
+    regression) and ``method`` (``"pca"`` or ``"direct"``) as in R; R's other arguments
+    (``smooth``, ``filter_size``, ``ridge``, ``eps``, ``skeleton``) pass by keyword.
     """
     return HandoverModel(call("fit_handover", _as_grasps(reference, "reference"), markers=markers,
-                              n_markers=_check_count(n_markers, "n_markers"), **kwargs))
+                              n_markers=_check_count(n_markers, "n_markers"), ncomp=ncomp,
+                              neighbours=neighbours, method=method, **kwargs))
 
 
-def handover_error(truth, recon=None, by="overall", **kwargs):
+def handover_error(truth, recon=None, by="overall", reference=None, sets=None, **kwargs):
     """Reconstruction error in degrees (R's ``handover_error()``): a number for
     ``by="overall"``, else a DataFrame (``by`` = ``"recording"``, ``"frame"``, ``"dof"``,
     ``"ncomp"`` or ``"markers"``; ``reference``, ``sets`` as in R)."""
-    if "reference" in kwargs and kwargs["reference"] is not None:
-        kwargs["reference"] = _as_grasps(kwargs["reference"], "reference")
     res = call("handover_error", _as_grasps(truth, "truth"), None if recon is None else _as_grasps(recon, "recon"),
-               by=by, **kwargs)
+               by=by, reference=None if reference is None else _as_grasps(reference, "reference"), sets=sets,
+               **kwargs)
     out = r_to_py(res)
     return float(out) if by == "overall" else out
 
@@ -615,10 +654,10 @@ def calibrate(x, poses=None, angles=None, ranges=None):
     return out
 
 
-def find_motion(x, **kwargs):
+def find_motion(x, min_move=12, min_still=0.1):
     """Where the grasping motion starts and ends in each recording (R's ``find_motion()``): a
     DataFrame with id, start, end, n_frames, rest, hold, found."""
-    return r_to_py(call("find_motion", _as_grasps(x), **kwargs))
+    return r_to_py(call("find_motion", _as_grasps(x), min_move=float(min_move), min_still=float(min_still)))
 
 
 def trim_motion(x, **kwargs):
@@ -626,9 +665,10 @@ def trim_motion(x, **kwargs):
     return r_to_py(call("trim_motion", _as_grasps(x), **kwargs))
 
 
-def cut_motion(x, **kwargs):
-    """A continuous stream cut into one recording per motion."""
-    return r_to_py(call("cut_motion", _as_grasps(x), **kwargs))
+def cut_motion(x, min_motion=0.3, min_gap=0.3, min_move=12):
+    """A continuous stream cut into one recording per motion (R's ``cut_motion()``)."""
+    return r_to_py(call("cut_motion", _as_grasps(x), min_motion=float(min_motion), min_gap=float(min_gap),
+                        min_move=float(min_move)))
 
 
 def calibration_pose_angles(glove, pose="flat"):

@@ -34,7 +34,7 @@ class HandView:
         return f"<HandView: 3D hand page, {len(self.html) // 1024} KB>"
 
 
-def hand_3d(x, layout="side", limits=False, markers=None, speed=1, autoplay=True, loop=True,
+def hand_3d(x, layout="side", limits=False, markers=None, speed=1, autoplay=True, loop=False,
             width=None, height=None, **kwargs):
     """An interactive 3D hand: solid hands that play at the recordings' own rate.
 
