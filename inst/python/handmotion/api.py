@@ -280,14 +280,16 @@ def fit_grasp_models(x, grasps=None, seed=1, dependence="independent", *, ncomp=
                                                         warping=warping), **kwargs))
 
 
-def evaluate_generation(models=None, held_out=None, training=None, n=None, reps=5, seed=1, recordings=None,
-                        **kwargs):
+def evaluate_generation(models=None, held_out=None, training=None, n=None, reps=5, seed=1, recordings=None, *,
+                        fit=None, split="auto", folds=None, **kwargs):
     """How natural generated grasps are, against a real-vs-real baseline (R's ``evaluate_generation()``).
 
     Either ``models`` (a :class:`GraspModels` or a dict of them by name, e.g.
     ``{"thesis": m1, "copula": m2}``) with ``held_out``, the recordings of new subjects, and
     ``training``, those the models were fitted on; or ``recordings`` alone, evaluated by folds
-    (``fit``, ``split``, ``folds`` as in R; ``folds=None`` is one fold per subject). Returns a
+    (``fit``, a dict of argument dicts for :func:`fit_grasp_models` by model name, ``None``: R's
+    three models; ``split``, ``folds`` as in R; ``folds=None`` is one fold per subject; R's
+    ``overlong`` passes by keyword). Returns a
     dict with ``table`` (one row per model, type and measure: ``generated``, ``baseline``,
     ``better``, ``ratio``), ``overall`` (the rows of grasp ``"overall"``) and ``evaluation`` (a
     handle on the R result, for plotting in R).
@@ -299,11 +301,13 @@ def evaluate_generation(models=None, held_out=None, training=None, n=None, reps=
     if recordings is not None:
         if models is not None or held_out is not None or training is not None:
             raise BadInputError("give either recordings (folds) or models with held_out and training, not both")
-        fit = kwargs.pop("fit", None)
         if fit is not None:
             kwargs["fit"] = ro.r["list"](**{str(k): ro.r["list"](**v) for k, v in fit.items()})
-        if kwargs.get("folds") is not None:
-            kwargs["folds"] = _check_count(kwargs["folds"], "folds")
+        if split not in ("auto", "subject", "recording"):
+            raise BadInputError(f"split must be 'auto', 'subject' or 'recording', not {split!r}")
+        kwargs["split"] = split
+        if folds is not None:
+            kwargs["folds"] = _check_count(folds, "folds")
         res = call("evaluate_generation", recordings=_as_grasps(recordings, "recordings"), n=n,
                    reps=_check_count(reps, "reps"), seed=_check_seed(seed), **kwargs)
     else:
@@ -313,6 +317,8 @@ def evaluate_generation(models=None, held_out=None, training=None, n=None, reps=
             rmodels = ro.r["list"](**{str(k): v.robj for k, v in models.items()})
         else:
             raise BadInputError("models must be a GraspModels or a dict of them by name")
+        if fit is not None or folds is not None or split != "auto":
+            raise BadInputError("fit, split and folds are for recordings evaluated by folds, not for models")
         res = call("evaluate_generation", rmodels, _as_grasps(held_out, "held_out"),
                    _as_grasps(training, "training"), n=n, reps=_check_count(reps, "reps"),
                    seed=_check_seed(seed), **kwargs)
@@ -492,10 +498,13 @@ def grasp_confusion(truth, predicted=None, levels=None):
     return r_to_py(table).set_axis(list(ro.r["rownames"](table)), axis=0)
 
 
-def evaluate_early_recognition(x, ms=None, fractions=None, folds=None, seed=1, **kwargs):
+def evaluate_early_recognition(x, ms=None, fractions=None, folds=None, seed=1, split="auto", **kwargs):
     """Held-out accuracy of early recognition against time (ms) and fraction of the motion
-    (R's ``evaluate_early_recognition()``); a DataFrame (scale, value, accuracy, n, frames)."""
-    kw = dict(kwargs)
+    (R's ``evaluate_early_recognition()``); a DataFrame (scale, value, accuracy, n, frames).
+    ``split`` as in :func:`evaluate_loso`; other keyword arguments go to the recogniser's fit."""
+    if split not in ("auto", "subject", "recording"):
+        raise BadInputError(f"split must be 'auto', 'subject' or 'recording', not {split!r}")
+    kw = dict(kwargs, split=split)
     if ms is not None:
         kw["ms"] = [float(v) for v in ms]
     if fractions is not None:
