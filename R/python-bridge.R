@@ -27,6 +27,8 @@
 #'   HTML page (text).
 #' * `"progress_setup"`: `(terminal)` progress bars on standard output in a
 #'   terminal, none elsewhere (called once as Python starts R).
+#' * `"print_text"`: `(x)` what `print(x)` writes, as lines of text (a
+#'   Python handle's `repr()`).
 #'
 #' @param part Which step of the bridge (see above).
 #' @param ... The step's arguments.
@@ -41,12 +43,12 @@
 #' length(flat$values)
 #' python_bridge("call", "simulate_grasps", list(subjects = -1))$class
 python_bridge <- function(part = c("call", "grasps_out", "grasps_in", "default_dofs", "fitted_types",
-                                   "dependence_matrix", "widget_html", "progress_setup"), ...) {
+                                   "dependence_matrix", "widget_html", "progress_setup", "print_text"), ...) {
   part <- check_choice(part, arg = "part")
   step <- switch(part, call = py_call, grasps_out = py_grasps_out, grasps_in = py_grasps_in,
                  default_dofs = py_default_dofs, fitted_types = py_fitted_types,
                  dependence_matrix = py_dependence_matrix, widget_html = py_widget_html,
-                 progress_setup = py_progress_setup)
+                 progress_setup = py_progress_setup, print_text = py_print_text)
   step(...)
 }
 
@@ -137,3 +139,8 @@ py_progress_setup <- function(terminal) {
   }
   invisible(isTRUE(terminal))
 }
+
+# What print(x) writes, as lines: print() runs inside capture.output() (called
+# from Python, R's print() ran first and wrote the whole object to the
+# console, and the repr then showed it again).
+py_print_text <- function(x) utils::capture.output(print(x))

@@ -97,3 +97,10 @@ test_that("py_widget_html() gives the widget as one self-contained page", {
   # self-contained: no script is loaded from a file beside the page
   expect_false(grepl("<script src=\"(?!data:)[^\"]*\\.js\"", page, perl = TRUE))
 })
+
+test_that("print_text is what print() writes, and writes nothing itself", {
+  g <- simulate_grasps(subjects = 1, grasps = 17, objects = 1, trials = 1, seed = 1)
+  out <- capture.output(lines <- python_bridge("print_text", g))
+  expect_identical(out, character(0))
+  expect_identical(lines, capture.output(print(g)))
+})

@@ -20,10 +20,9 @@ class RHandle:
         self.robj = robj
 
     def __repr__(self):
-        ro = r()
-        # print() called inside capture.output(): called from Python first, R's
-        # print wrote the whole object to the console and the repr showed it again
-        text = "\n".join(ro.r("function(x) utils::capture.output(print(x))")(self.robj))
+        # (print() runs inside capture.output(), on the R side of the bridge:
+        # called from Python first, R's print wrote the object to the console too)
+        text = "\n".join(bridge("print_text")(self.robj))
         return f"<{type(self).__name__}>\n{text}"
 
     def to_r(self):
