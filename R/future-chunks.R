@@ -29,6 +29,12 @@ future_map_chunks <- function(elements, FUN, more = list(), each = list(), strea
   if (n == 0L) return(list())
   stopifnot(is.function(FUN), is.list(more), is.list(each), all(lengths(each) == n),
             is.null(streams) || length(streams) == n, length(work) == n)
+  # (under a sequential plan the streams are set in this session: give the
+  # caller back their RNG)
+  if (!is.null(streams)) {
+    old_rng <- save_rng()
+    on.exit(restore_rng(old_rng), add = TRUE)
+  }
   chunks <- balanced_chunks(work, min(n, chunks_per_worker * future::nbrOfWorkers()))
   more <- lapply(more, pack_for_worker)
   fs <- vector("list", length(chunks))

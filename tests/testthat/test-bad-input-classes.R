@@ -120,7 +120,7 @@ test_that("fractional, out-of-range and recycled indices are refused", {
     expect_error(write_hand_animation(g, file.path(dir, "a.html"), recording = r), "recording", class = "handmotion_error_bad_input")
   }
   expect_error(forward_kinematics(g$recordings[[1]], frames = 2.5), "frames", class = "handmotion_error_bad_input")
-  expect_error(autoplot(g, type = "hand", frame = 2.5), "frames", class = "handmotion_error_bad_input")
+  expect_error(autoplot(g, type = "hand", frame = 2.5), "`frame`", class = "handmotion_error_bad_input")
   expect_error(g[2.5], "whole", class = "handmotion_error_bad_input")
   expect_error(g[-99], "1..18", class = "handmotion_error_bad_input")
   expect_error(g[c(-1, 2)], "mix signs", class = "handmotion_error_bad_input")
