@@ -44,7 +44,7 @@ future_map_chunks <- function(elements, FUN, more = list(), each = list(), strea
     # the package's functions is left to the worker's loaded package, where
     # an internal function is not found from the future's environment)
     fs[[k]] <- future::future(
-      .run_chunk(FUN, payload, each_k, streams_k, more),
+      quote(.run_chunk(FUN, payload, each_k, streams_k, more)), substitute = FALSE,
       globals = list(.run_chunk = run_chunk, FUN = FUN, payload = lapply(elements[i], pack_for_worker),
                      each_k = lapply(each, `[`, i), streams_k = streams[i], more = more),
       packages = "handmotion", seed = NULL, label = sprintf("handmotion-%d", k))
