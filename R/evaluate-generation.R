@@ -1,7 +1,8 @@
 # How natural are generated grasps? Each measure compares generated grasps
 # with held-out recordings of new subjects, always beside the same measure
 # for real recordings of the training subjects against the same held-out
-# recordings, at the same sample size: different people grasp differently,
+# recordings, at the same sample size (every training recording against as
+# many generated grasps, by default): different people grasp differently,
 # so "as natural as recorded" means "no further from new subjects than the
 # training subjects themselves are".
 
@@ -52,9 +53,9 @@
 #' result's `excluded` attribute and printed; `overlong = NULL` keeps them.
 #'
 #' Every measure is averaged over `reps` repetitions (a fresh generated batch
-#' and a fresh subsample of training recordings each time; the subsamples are
-#' drawn before anything is generated, so every model set is compared with
-#' the same real recordings). The `overall` rows
+#' each time and, with `n` smaller than the training recordings, a fresh
+#' subsample of them, drawn before anything is generated, so every model set
+#' is compared with the same real recordings). The `overall` rows
 #' give the median over types (pooled shares for `recognised` and
 #' `outside_limits`).
 #'
@@ -88,7 +89,15 @@
 #'   recordings). Each fold fits every model of `fit`, so fewer folds
 #'   (`folds = 2`) are much cheaper.
 #' @param n Generated grasps (and training recordings) per type and
-#'   repetition; by default the number of held-out recordings of each type.
+#'   repetition; by default every training recording of the type (over-long
+#'   ones left out) against as many generated grasps. Both comparisons use
+#'   the same sizes, so every measure is fair; the MMD estimate is unbiased
+#'   whatever the sizes, and the larger samples make it steadier: with five
+#'   folds of one person's recordings (a few held-out recordings a type) the
+#'   MMD ratio of a model moved by 0.3-0.7 between seeds at the held-out size
+#'   and by 0.05-0.3 at the training size (`bench/bench-real-generation.R`).
+#'   A number `n` draws `n` training recordings at random in each repetition
+#'   (at most all of them).
 #' @param reps Repetitions averaged.
 #' @param overlong The over-long rule of [fit_grasp_model()], `c(iqr_mult = ,
 #'   median_mult = )`, whose over-long recordings are left out of the real
@@ -201,16 +210,19 @@ evaluate_generation_impl <- function(sets, held_out, training, types, n, reps, o
 
 # The real recordings of one type: held-out and training recordings without
 # the over-long ones (threshold from the training frame counts, as the model
-# has it), and `reps` training subsamples of the comparison size.
+# has it), and the training sample: every recording (one sample), or `reps`
+# subsamples of `n`.
 generation_real_samples <- function(ho, tr, type, n, reps, overlong) {
   threshold <- if (is.null(overlong)) Inf else overlong_threshold(tr$meta$n_frames, overlong)
   long_ho <- ho$meta$n_frames > threshold
   long_tr <- tr$meta$n_frames > threshold
   ho <- ho[!long_ho]
   tr <- tr[!long_tr]
-  n_ty <- min(n %||% length(ho), length(tr))
+  # (by default every training recording: the same sample in each
+  # repetition, so it is measured once; see `n` in ?evaluate_generation)
+  n_ty <- min(n %||% length(tr), length(tr))
   list(held_out = ho,
-       training = lapply(seq_len(reps), function(r) tr[sample.int(length(tr), n_ty)]),
+       training = if (n_ty < length(tr)) lapply(seq_len(reps), function(r) tr[sample.int(length(tr), n_ty)]) else list(tr),
        excluded = data.frame(grasp = type, threshold = threshold, held_out = sum(long_ho),
                              training = sum(long_tr), stringsAsFactors = FALSE))
 }
@@ -344,14 +356,18 @@ cor_gap <- function(a, b) {
 # Log10 mean squared jerk (third difference, per second cubed) of every
 # recording, from the recordings stacked: the third differences of the
 # stacked frames are each recording's own wherever the four frames belong to
-# one recording (the same arithmetic as diff(r, differences = 3)).
+# one recording (each recording's diff(r, differences = 3), to rounding).
 log_jerk <- function(x) {
   nk <- vapply(x$recordings, nrow, integer(1))
   out <- stats::setNames(rep(NA_real_, length(nk)), names(x$recordings))
   use <- nk >= 5L
   if (!any(use)) return(out)
   S <- do.call(rbind, x$recordings[use])
-  j <- diff(S, differences = 3) * x$rate^3
+  # (the third difference in one pass: diff(S, differences = 3) copies S
+  # three times and was a sixth of evaluate_generation()'s time)
+  m <- nrow(S) - 3L
+  j <- (S[4:nrow(S), , drop = FALSE] - S[seq_len(m), , drop = FALSE] -
+          3 * (S[3:(m + 2L), , drop = FALSE] - S[2:(m + 1L), , drop = FALSE])) * x$rate^3
   n <- nk[use]
   rec <- rep(seq_along(n), n)
   # row t of j spans frames t..t+3: keep those inside one recording

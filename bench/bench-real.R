@@ -130,14 +130,28 @@ report("LOPO accuracy, best classifier", best, "fraction", published = 0.80, goa
 report("  published CNN-BiLSTM (window-level, optimistic)", NA, "fraction", published = 0.695)
 
 # --- generation: generated against real grasps, by participant folds ------------
-gen <- timed(evaluate_generation(recordings = g, split = "subject", folds = 2, reps = bq(5, 2)))
-ov <- gen$value[gen$value$grasp == "overall" & gen$value$metric == "mmd", ]
-for (k in seq_len(nrow(ov))) {
-  report(sprintf("generated / real-vs-real MMD, %s", ov$model[k]), ov$ratio[k], "x",
-         goal = 1.25, better = "lower")
+# (one seed's MMD ratio moves by about 0.05-0.1 with the seed on flexglove's
+# two participants: the full run gives the mean of three seeds and their
+# range, the quick run one seed)
+gen_seeds <- bq(1:3, 1L)
+gens <- lapply(gen_seeds, function(s) {
+  timed(evaluate_generation(recordings = g, split = "subject", folds = 2, reps = bq(5, 2), seed = s))
+})
+ratios <- do.call(rbind, lapply(gens, function(x) {
+  v <- x$value
+  v[v$grasp == "overall" & v$metric == "mmd", c("model", "ratio")]
+}))
+for (mod in unique(ratios$model)) {
+  r <- ratios$ratio[ratios$model == mod]
+  report(sprintf("generated / real-vs-real MMD, %s", mod), mean(r), "x", goal = 1.25, better = "lower",
+         shown = if (length(r) > 1L) sprintf("generated / real-vs-real MMD, %s (mean of seeds %s; %.2f-%.2f)",
+                                              mod, paste(range(gen_seeds), collapse = "-"), min(r), max(r))
+                 else sprintf("generated / real-vs-real MMD, %s (seed %d)", mod, gen_seeds))
 }
-oot <- gen$value[gen$value$grasp == "overall" & gen$value$metric == "outside_limits", ]
-report("generated frames outside the sensors' range", max(oot$generated), "fraction", goal = 0,
+oot <- unlist(lapply(gens, function(x) {
+  x$value$generated[x$value$grasp == "overall" & x$value$metric == "outside_limits"]
+}))
+report("generated frames outside the sensors' range", max(oot), "fraction", goal = 0,
        better = "lower")
 
 # --- the second glove's checks, on its simulated stand-in: 5 folds by recording ----

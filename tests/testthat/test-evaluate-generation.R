@@ -175,3 +175,29 @@ test_that("evaluate_generation() takes model sets as models and recordings to fo
   expect_s3_class(ev, "generation_evaluation")
   expect_identical(unique(ev$model), "copula")
 })
+
+test_that("the default compares every training recording: the same MMD in expectation, steadier", {
+  # why the default sample is the training set, not the held-out size: the
+  # unbiased MMD^2 of a shifted sample (a planted gap of 0.5 sd in one of
+  # three features) against 6 held-out points has the same mean with 6 or 30
+  # draws on the other side, and a smaller spread with 30
+  withr::local_seed(7)
+  draw <- function(m, shift) cbind(stats::rnorm(m, shift), stats::rnorm(m), stats::rnorm(m))
+  one <- function(m) {
+    Y <- draw(6, 0)
+    mmd_test(draw(m, 0.5), Y, bandwidth = 1.5, permutations = 1L)$mmd
+  }
+  small <- replicate(400, one(6))
+  large <- replicate(400, one(30))
+  expect_lt(abs(mean(small) - mean(large)), 3 * sqrt(stats::var(small) / 400 + stats::var(large) / 400))
+  expect_lt(stats::sd(large), 0.8 * stats::sd(small))
+  # and evaluate_generation() draws nothing for it: one sample, every recording
+  g <- simulate_grasps(subjects = 3, grasps = 1, objects = 2, trials = 3, seed = 2, plant_overlong = FALSE)
+  tr <- g[g$meta$subject != "S03"]
+  ho <- g[g$meta$subject == "S03"]
+  all_tr <- generation_real_samples(ho, tr, "x", n = NULL, reps = 5, overlong = NULL)
+  expect_length(all_tr$training, 1L)
+  expect_identical(names(all_tr$training[[1]]$recordings), names(tr$recordings))
+  some <- generation_real_samples(ho, tr, "x", n = 5, reps = 3, overlong = NULL)
+  expect_equal(vapply(some$training, length, integer(1)), rep(5L, 3))
+})
