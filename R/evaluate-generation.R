@@ -94,8 +94,8 @@
 #'   the same sizes, so every measure is fair; the MMD estimate is unbiased
 #'   whatever the sizes, and the larger samples make it steadier: with five
 #'   folds of one person's recordings (a few held-out recordings a type) the
-#'   MMD ratio of a model moved by 0.3-0.7 between seeds at the held-out size
-#'   and by 0.05-0.3 at the training size (`bench/bench-real-generation.R`).
+#'   MMD ratio of a model moved by 0.35-0.7 between seeds at the held-out size
+#'   and by 0.2-0.4 at the training size (NEWS).
 #'   A number `n` draws `n` training recordings at random in each repetition
 #'   (at most all of them).
 #' @param reps Repetitions averaged.
