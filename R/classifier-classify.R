@@ -171,28 +171,24 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
                                            message = paste("not fitted:", unfitted$message)))
   }
   likelihood <- identical(models_distance(models), "likelihood")
-  # the likelihood distance needs each projection's scores and residuals;
-  # they are reduced to the distances model by model
-  keep <- if (likelihood) {
-    function(pr) list(distance = fpca_likelihood_distance(fitted_models(models)[[pr$grasp]], pr), ids = pr$ids)
-  } else function(pr) pr[c("distance", "ids")]
-  projections <- project_models(models, x, "models", details = FALSE, call = call,
-                                keep = keep, keep_going = TRUE, distance_only = !likelihood,
-                                progress = hm_progressor(length(fitted_models(models))))
-  types <- names(projections)
+  fitted <- fitted_models(models)
+  input <- projection_input(fitted, x)
+  columns <- project_models(fitted, input, "models", details = FALSE, call = call,
+                            keep = function(pr, m) fpca_model_distance(m, pr, likelihood, x$meta$id),
+                            keep_going = TRUE, distance_only = !likelihood,
+                            progress = hm_progressor(length(fitted)))
+  types <- names(columns)
   ids <- x$meta$id
   d <- matrix(NA_real_, length(ids), length(types), dimnames = list(ids, types))
   first_error <- NULL
   for (j in seq_along(types)) {
-    pr <- projections[[j]]
-    if (inherits(pr, "error")) {
-      first_error <- first_error %||% pr
+    dist <- columns[[j]]
+    if (inherits(dist, "error")) {
+      first_error <- first_error %||% dist
       failures <- rbind(failures, data.frame(model = types[j],
-                                             message = cli::ansi_strip(conditionMessage(pr))))
+                                             message = cli::ansi_strip(conditionMessage(dist))))
       next
     }
-    dist <- unname(pr$distance)
-    if (!is.null(pr$ids)) dist <- dist[match(ids, pr$ids)]
     if (length(dist) != length(ids)) {
       failures <- rbind(failures, data.frame(model = types[j],
                                              message = "projection returned the wrong number of distances"))
@@ -208,15 +204,33 @@ fpca_distances <- function(models, x, call = rlang::caller_env()) {
               i = "See {.field failures} of the result."),
             "projection_failed")
   }
-  tl <- vapply(fitted_models(models), function(m) as.numeric(m$target_length %||% NA_real_), numeric(1))
+  tl <- vapply(fitted, function(m) as.numeric(m$target_length %||% NA_real_), numeric(1))
   names(tl) <- types
-  # the thesis' norm: its curves were fda.usc objects on frames 1..T_i, where
-  # the L2 norm integrates with spacing 1; ours integrates over [0, 1]
-  # (spacing 1 / (T_i - 1)), so the two differ by sqrt(T_i - 1) per model.
-  # The rescaling changes which model is nearest whenever lengths differ.
-  # (A likelihood has no such scale: it is not rescaled.)
-  if (!likelihood) d <- sweep(d, 2L, thesis_norm_scale(tl), `*`)
   list(distances = d, target_length = tl, failures = failures)
+}
+
+# The FPCA distance of every recording under one model, from its projection
+# `pr`, in the order of `ids`: minus twice the log-likelihood (a set fitted
+# with distance = "likelihood"), or the residual norm of eq. 4.4 as the
+# thesis measured it. The one per-model step of fpca_distances() and of the
+# temperature's sample (sample_distance(), R/grasp-models.R).
+fpca_model_distance <- function(model, pr, likelihood, ids, terms = FALSE) {
+  at <- if (is.null(pr$ids)) seq_along(ids) else match(ids, pr$ids)
+  # (`terms`: the likelihood's score term and its residual curves apart, for
+  # a set whose residual scale is not pooled yet: fit_grasp_models()'s
+  # temperature sample, scored on the workers as each type is fitted)
+  if (likelihood && terms) {
+    return(list(score = likelihood_score_term(model, pr)[at], residual = pr$residual[at, , drop = FALSE]))
+  }
+  d <- unname(if (likelihood) fpca_likelihood_distance(model, pr) else pr$distance)
+  d <- d[at]
+  if (likelihood) return(d)
+  # the thesis' norm: its curves were fda.usc objects on frames 1..T_i,
+  # where the L2 norm integrates with spacing 1; ours integrates over
+  # [0, 1] (spacing 1 / (T_i - 1)), so the two differ by sqrt(T_i - 1) per
+  # model. The rescaling changes which model is nearest whenever lengths
+  # differ. (A likelihood has no such scale: it is not rescaled.)
+  d * thesis_norm_scale(as.numeric(model$target_length %||% NA_real_))
 }
 
 # The factor that turns our residual norm into the thesis' (see above), per

@@ -194,6 +194,5 @@ score_kernel_log_density <- function(kern, scores) {
   lse - log(nrow(kern$Y)) - 0.5 * kern$logdet - 0.5 * ncol(kern$Y) * log(2 * pi)
 }
 
-# The distance a model set ranks by: sets from before the choice existed
-# were ranked by the residual.
-models_distance <- function(models) attr(models, "distance") %||% "residual"
+# The distance a model set ranks by (its field, see new_grasp_models()).
+models_distance <- function(models) models$distance

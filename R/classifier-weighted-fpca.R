@@ -28,7 +28,7 @@ fit_weighted_fpca <- function(x, models = NULL, time = c("uniform", "end"), ...,
              "bad_input", argument = "models", call = call)
   }
   # the types that have a model (a failed type cannot be a class)
-  models <- new_grasp_models(fitted_models(models), seed = attr(models, "seed"))
+  models <- new_grasp_models(fitted_models(models), seed = models$seed)
   types <- names(models)
   missing <- setdiff(types, as.character(unique(x$meta$grasp)))
   if (length(missing)) {
@@ -74,13 +74,14 @@ distance_time_weights <- function(L, time) {
 # The weighted distances, recordings x models.
 weighted_fpca_distances <- function(object, x, call = rlang::caller_env()) {
   types <- rownames(object$scale)
-  d <- project_models(object$models, x, "models", details = FALSE, call = call,
-                      progress = hm_progressor(length(object$models)),
+  models <- fitted_models(object$models)
+  d <- project_models(models, projection_input(models, x), "models", details = FALSE, call = call,
+                      progress = hm_progressor(length(models)),
                       time_weights = function(m) distance_time_weights(m$target_length, object$time),
-                      keep = function(r) {
+                      keep = function(r, m) {
                         s2 <- object$scale[r$grasp, ]
                         drop(r$residual^2 %*% (1 / s2)) + sum(log(s2)) -
-                          2 * score_log_density(object$models[[r$grasp]], r$scores)
+                          2 * score_log_density(m, r$scores)
                       })
   matrix(unlist(d[types], use.names = FALSE), length(x$recordings), length(types),
          dimnames = list(x$meta$id, types))

@@ -12,8 +12,9 @@
 #   classifier_classes(), classifier_levels(), classifier_temperature():
 #                           the family fields, read alike for every member
 #
-# The members: the FPCA model set (R/grasp-models.R, class grasp_models),
-# the discriminant (R/classifier-discriminant.R, grasp_discriminant), the
+# The members: the FPCA model set (R/grasp-models.R, class grasp_models,
+# which also reads as the list of its models: R/grasp-models-list.R), the
+# discriminant (R/classifier-discriminant.R, grasp_discriminant), the
 # last-frame PCA (R/classifier-last-frame.R, last_frame_pca), the weighted FPCA
 # distance (R/classifier-weighted-fpca.R, weighted_fpca) and the early recogniser
 # (R/classifier-recognizer.R, grasp_recognizer).
@@ -38,11 +39,13 @@ new_grasp_classifier <- function(..., classes, levels = classes, n, temperature 
 }
 
 # The family fields agree with one another: unique classes, all of them
-# among the levels, a count for each, a positive temperature or none.
+# among the levels, a count for each, a positive temperature or none. (A
+# model set whose every type failed has no class: it is kept as the record
+# of why, and refuses to predict.)
 validate_grasp_classifier <- function(x) {
   cls <- x$classes
   t <- x$temperature
-  stopifnot(is.character(cls), length(cls) >= 1L, !anyNA(cls), !anyDuplicated(cls),
+  stopifnot(is.character(cls), !anyNA(cls), !anyDuplicated(cls),
             is.character(x$levels), all(cls %in% x$levels),
             is.integer(x$n), length(x$n) == length(cls), all(x$n >= 0L),
             is.null(t) || (is.numeric(t) && length(t) == 1L && is.finite(t) && t > 0))

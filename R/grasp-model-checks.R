@@ -75,18 +75,18 @@ check_grasp_models <- function(x, arg, action, each = TRUE, call = rlang::caller
                i = "Was it changed after fitting? Refit it with {.fn fit_grasp_models}."),
              "bad_model", argument = arg, call = call, .envir = parent.frame())
   }
-  m <- unclass(x)
-  if (!is.list(m)) bad("it is not a list of models")
+  m <- if (is.list(x)) .subset2(x, "models")
+  if (!is.list(m) || is.object(m)) bad("it holds no list of models (a set saved by an earlier version of handmotion?)")
   ok <- vapply(m, function(e) inherits(e, "grasp_model") || inherits(e, "grasp_model_failed"), logical(1))
   if (!all(ok)) {
     i <- which(!ok)[1]
-    what <- sprintf("%s[[%d]]%s", arg, i, if (!is.null(names(m)) && nzchar(names(m)[i])) sprintf(" (%s)", names(m)[i]) else "")
+    what <- sprintf("%s$models[[%d]]%s", arg, i, if (!is.null(names(m)) && nzchar(names(m)[i])) sprintf(" (%s)", names(m)[i]) else "")
     bad("element {.code {what}} is not a fitted model but {.obj_type_friendly {m[[i]]}}")
   }
   if (length(m) && (is.null(names(m)) || anyDuplicated(names(m)))) bad("its models are not named by unique grasp types")
-  temp <- attr(x, "temperature")
+  temp <- x$temperature
   if (!is.null(temp) && (!is.numeric(temp) || length(temp) != 1L || !is.finite(temp) || temp <= 0)) {
-    bad("its attribute {.field temperature} is not a positive number")
+    bad("its {.field temperature} is not a positive number")
   }
   if (each) for (e in m[vapply(m, inherits, logical(1), "grasp_model")]) check_grasp_model(e, arg, action, call)
   invisible(x)

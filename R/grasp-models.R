@@ -188,11 +188,12 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   if (length(bad_input)) stop(fits[[bad_input[1]]])
   fits[failed] <- mapply(new_grasp_model_failed, types[failed], fits[failed], SIMPLIFY = FALSE)
   # the likelihood's residual scale is the set's, pooled over its types
-  # (R/fpca-likelihood.R); the sample's residual terms are added under it
+  # (R/classifier-fpca-likelihood.R); the sample's residual terms are added
+  # under it
   fits <- pool_likelihood_residuals(fits)
   sample_d <- Map(finish_sample_distance, fits, sample_d)
-  out <- new_grasp_models(fits, seed = seed, levels = grasp_levels(x), distance = distance)
-  if (calibrate) attr(out, "temperature") <- models_temperature(out, sample, sample_d)
+  temperature <- if (calibrate) models_temperature(types[!failed], sample, sample_d)
+  out <- new_grasp_models(fits, seed = seed, levels = grasp_levels(x), temperature = temperature, distance = distance)
   dg <- models_degeneracies(out)
   n_dg <- length(unique(sub(": .*", "", dg$message)))
   warn_degenerate(dg, sprintf("%d of the %d grasp type models rest%s on degenerate data:", n_dg,
@@ -236,7 +237,7 @@ fit_one_type <- function(part, save_to, args, progress, sample = NULL, distance 
     file.rename(tmp, save_to)
   }
   progress(as.character(part$meta$grasp[1]))
-  list(model = res, sample_distance = sample_distance(res, unpack_on_worker(sample), distance))
+  list(model = res, sample_distance = sample_distance(res, sample, distance))
 }
 
 # The cache file of each type, or NULL without a cache: <type>-<hash>.rds,
@@ -262,10 +263,9 @@ cache_paths <- function(cache, parts, args, streams, call) {
 # The temperature of the set's class probabilities (see ?predict.grasp_models):
 # fitted by maximum likelihood on the in-sample distances of a sample of the
 # training recordings (temperature_sample()) under every fitted type's model
-# (sample_distance(), one vector per type). NULL (no probabilities) when no
-# model could score the sample.
-models_temperature <- function(models, sample, distances) {
-  types <- names(fitted_models(models))
+# (sample_distance(), one vector per type; `types`, the fitted ones). NULL
+# (no probabilities) when no model could score the sample.
+models_temperature <- function(types, sample, distances) {
   if (length(types) < 2L) return(1)
   lab <- as.character(sample$meta$grasp)
   rows <- lab %in% types
@@ -294,23 +294,18 @@ temperature_sample <- function(x, types, motion) {
 
 # The distances of the sample's recordings under one fitted model (in the
 # order of the sample; NA where one could not be projected), an error where
-# the model cannot score them at all, NULL without a sample or a model. What
-# fpca_distances() would give in this model's column; for the likelihood,
-# its two terms apart (list(score, residual)) until the set is pooled.
+# the model cannot score them at all, NULL without a sample or a model: the
+# model's column of fpca_distances(), by the same per-model step
+# (fpca_model_distance()); for the likelihood its two terms apart
+# (list(score, residual)) until the set's residual scale is pooled.
 sample_distance <- function(model, sample, distance) {
   if (is.null(sample) || !inherits(model, "grasp_model") || inherits(model, "grasp_model_failed")) return(NULL)
+  likelihood <- distance == "likelihood"
+  input <- list(x = sample, recs = double_recordings(sample))
   tryCatch(withCallingHandlers({
-    validate_projection_model(model, rlang::current_env())
-    check_projection_dofs(model, sample, rlang::current_env())
-    pr <- project_recordings(model, sample, details = FALSE, distance_only = distance != "likelihood",
-                             recs = double_recordings(sample))
-    at <- if (is.null(pr$ids)) seq_along(sample$meta$id) else match(sample$meta$id, pr$ids)
-    # the likelihood's residual term waits for the set's pooled scale
-    # (finish_sample_distance()); the score term is computed here, on the worker
-    if (distance == "likelihood") {
-      return(list(score = likelihood_score_term(model, pr)[at], residual = pr$residual[at, , drop = FALSE]))
-    }
-    unname(pr$distance)[at] * thesis_norm_scale(as.numeric(model$target_length %||% NA_real_))
+    project_models(list(model), input, "model", details = FALSE, call = rlang::current_env(),
+                   keep = function(pr, m) fpca_model_distance(m, pr, likelihood, sample$meta$id, terms = likelihood),
+                   distance_only = !likelihood)[[1]]
   }, handmotion_warning_projection_failed = function(w) invokeRestart("muffleWarning")),
   error = function(e) e)
 }
@@ -323,25 +318,30 @@ finish_sample_distance <- function(model, d) {
   d$score + likelihood_residual_term(model, d$residual)
 }
 
-# The one constructor of class "grasp_models": a list named by grasp type of
-# fitted models and failed ones; attributes `seed`, `levels` (of the training
-# labels: the levels predictions carry) and `temperature` (of the class
-# probabilities) and `distance` (what classify() ranks: "likelihood" or
-# "residual", see fit_grasp_models(); NULL, from older sets, is "residual").
-#
-# A member of the classifier family (R/classifier.R, parent class
-# "grasp_classifier"), but not built by its constructor: the set is the
-# list of its models, indexed by type (`ms[["Tripod"]]`, `names(ms)`) by
-# users, generate(), the thesis tables and the Python front end, so its
-# family fields cannot be elements beside the models; they are attributes,
-# read only through the family's generics below.
-new_grasp_models <- function(models, seed = NULL, levels = NULL, temperature = NULL, distance = NULL) {
-  validate_grasp_models(structure(models, class = c("grasp_models", "grasp_classifier"), seed = seed,
-                                  levels = levels, temperature = temperature, distance = distance))
+# The one constructor of class "grasp_models", a member of the classifier
+# family built by its constructor (R/classifier.R): `models`, a list named
+# by grasp type of fitted models and failed ones, is a field beside the
+# family's (classes: the fitted types; n: the recordings each was fitted
+# on; levels: of the training labels, which predictions carry, by default
+# those of the first fitted model; temperature: of the class
+# probabilities) and the set's own `seed` and `distance` (what classify()
+# ranks: "likelihood" or "residual", see fit_grasp_models()). The set still
+# reads as the list of its models (R/grasp-models-list.R): `ms[["Tripod"]]`,
+# `names(ms)`, `length(ms)`, `ms[types]`, lapply().
+new_grasp_models <- function(models, seed = NULL, levels = NULL, temperature = NULL, distance = "residual") {
+  stopifnot(is.list(models), !is.object(models))
+  fitted <- models[vapply(models, inherits, logical(1), "grasp_model")]
+  levels <- levels %||% if (length(fitted)) model_levels(fitted[[1]]) else names(models)
+  validate_grasp_models(new_grasp_classifier(
+    models = models, seed = seed, distance = distance,
+    classes = names(fitted) %||% character(0), levels = levels %||% character(0),
+    n = vapply(fitted, function(m) as.integer(m$n_used), integer(1), USE.NAMES = FALSE),
+    temperature = temperature, class = "grasp_models"))
 }
 
 # The set in the classifier family: its distances are the FPCA distances
-# (fpca_distances(), R/classifier-classify.R), its classes the fitted types.
+# (fpca_distances(), R/classifier-classify.R); its classes, levels and temperature are
+# the family's fields, read by the family's default methods.
 #' @export
 classifier_distances.grasp_models <- function(object, new_data, ..., call = rlang::caller_env()) {
   fpca_distances(object, new_data, call = call)
@@ -349,15 +349,6 @@ classifier_distances.grasp_models <- function(object, new_data, ..., call = rlan
 
 #' @export
 classifier_method.grasp_models <- function(object) "fpca"
-
-#' @export
-classifier_classes.grasp_models <- function(object) names(fitted_models(object))
-
-#' @export
-classifier_levels.grasp_models <- function(object) attr(object, "levels") %||% model_set_levels(object)
-
-#' @export
-classifier_temperature.grasp_models <- function(object) attr(object, "temperature")
 
 # (its models are checked by check_grasp_models() where they are read)
 #' @export
@@ -367,13 +358,15 @@ classifier_parts.grasp_models <- function(object) character(0)
 # models share their DoFs, rate and unit (one set classifies one kind of
 # recording).
 validate_grasp_models <- function(x) {
-  m <- unclass(x)
+  m <- x$models
   ok <- vapply(m, function(e) inherits(e, "grasp_model") || inherits(e, "grasp_model_failed"), logical(1))
   fitted <- m[vapply(m, inherits, logical(1), "grasp_model")]
   same <- function(f) length(unique(lapply(fitted, f))) <= 1L
   stopifnot(all(ok), !is.null(names(m)) || !length(m), !anyDuplicated(names(m)),
             !length(m) || identical(names(m), vapply(m, function(e) as.character(e$grasp), "", USE.NAMES = FALSE)),
-            same(function(e) e$dofs), same(function(e) e$rate), same(function(e) e$unit))
+            same(function(e) e$dofs), same(function(e) e$rate), same(function(e) e$unit),
+            identical(x$classes, names(fitted) %||% character(0)),
+            is.character(x$distance), x$distance %in% c("likelihood", "residual"))
   x
 }
 
@@ -395,13 +388,12 @@ print.grasp_model_failed <- function(x, ...) {
 # The fitted models of a set (a plain named list) and its failed types (a
 # data frame: grasp, message, class).
 fitted_models <- function(x) {
-  m <- unclass(x)
-  attributes(m) <- list(names = names(m))
+  m <- x$models
   m[vapply(m, inherits, logical(1), "grasp_model")]
 }
 
 failed_types <- function(x) {
-  f <- unclass(x)[vapply(unclass(x), inherits, logical(1), "grasp_model_failed")]
+  f <- x$models[vapply(x$models, inherits, logical(1), "grasp_model_failed")]
   data.frame(grasp = vapply(f, `[[`, "", "grasp"), message = vapply(f, `[[`, "", "message"),
              class = vapply(f, `[[`, "", "class"), stringsAsFactors = FALSE, row.names = NULL)
 }
@@ -420,8 +412,8 @@ failed_types <- function(x) {
     names(x)[check_positions(i, length(x), "model")]
   }
   check_types_present(x, keep, "i", rlang::caller_env())
-  new_grasp_models(unclass(x)[keep], seed = attr(x, "seed"), levels = attr(x, "levels"),
-                   temperature = attr(x, "temperature"), distance = attr(x, "distance"))
+  new_grasp_models(x$models[keep], seed = x$seed, levels = x$levels, temperature = x$temperature,
+                   distance = x$distance)
 }
 
 # Grasp types asked of a model set (`arg`) that it has no model for: an
@@ -492,9 +484,9 @@ print.grasp_models <- function(x, ...) {
     cli::cat_line(cli::pluralize(
       "  degenerate data in {length(types)} type{?s}: {name_list(types, 5L)} (see each model's print())"))
   }
-  if (!is.null(attr(x, "temperature")) && nrow(s) > 1L) {
+  if (!is.null(x$temperature) && nrow(s) > 1L) {
     cli::cat_line(sprintf("  class probabilities: softmax(-distance / %.3g), distance: %s (see ?fit_grasp_models)",
-                          attr(x, "temperature"), models_distance(x)))
+                          x$temperature, models_distance(x)))
   }
   if (nrow(f)) cli::cat_line("  failed: ", paste0(f$grasp, " (", f$message, ")", collapse = "; "))
   invisible(x)
@@ -528,7 +520,7 @@ print.grasp_models <- function(x, ...) {
 #' summary(fit_grasp_models(g, seed = 1))
 summary.grasp_models <- function(object, ...) {
   check_grasp_models(object, "object", "be summarised")
-  rows <- lapply(unclass(object), function(m) {
+  rows <- lapply(object$models, function(m) {
     if (inherits(m, "grasp_model_failed")) {
       return(data.frame(grasp_id = m$grasp_id, grasp = m$grasp, n = NA_integer_, n_input = NA_integer_, n_used = NA_integer_,
                         n_overlong = NA_integer_, n_degenerate = NA_integer_, n_warp_fallback = NA_integer_,

@@ -76,7 +76,8 @@ project.grasp_models <- function(object, new_data, details = FALSE, ...) {
   check_dots_for(list(...), project.grasp_models, "project", call = call)
   check_new_recordings(new_data, "new_data", "project", call = call)
   check_grasp_models(object, "object", "project", each = FALSE, call = call)
-  project_models(object, new_data, "object", details = details, call = call)
+  models <- fitted_models(object)
+  project_models(models, projection_input(models, new_data), "object", details = details, call = call)
 }
 
 # A single model is not a classifier: its predict() was the projection,
@@ -94,34 +95,41 @@ project.default <- function(object, new_data, ...) {
            "bad_input", argument = "object", call = rlang::caller_env())
 }
 
-# Every fitted model of a set projects `new_data`: each model is validated
-# and projects the recordings straight from their list (R/project.R's
-# kernel reads them in place). `keep` reduces each projection as it is made
-# (the FPCA classifier keeps only the distances: all scores of every model
-# would be n x 33 x p x ncomp numbers), and `distance_only` tells the kernel
-# not to return the rest at all; with `keep_going` a model that cannot
-# project gives its error in its place instead of stopping the rest.
-# `time_weights`, a function of the model, gives each its weights on the
-# template time (the weighted FPCA distance); NULL is eq. 4.4. One progress
-# step per model (`progress`, a progressr progressor or NULL).
-project_models <- function(models, new_data, arg, details, call, keep = identity, keep_going = FALSE,
-                           time_weights = NULL, distance_only = FALSE, progress = NULL) {
-  models <- fitted_models(models)
-  if (length(models) == 0L) {
-    hm_abort("{.arg {arg}} holds no fitted grasp models.", "bad_input", argument = arg, call = call)
-  }
-  # recordings projected on models fitted to trimmed motion are trimmed alike
+# The recordings every model of a set projects, made ready once: trimmed
+# when the models were fitted to trimmed motion (recordings projected on
+# such models are trimmed alike), and their matrices as double, as the
+# native kernel reads them. `models`: a list of fitted models.
+projection_input <- function(models, new_data) {
   if (any(vapply(models, function(m) identical(m$settings$motion, "trim"), logical(1)))) {
     new_data <- trim_motion(new_data)
   }
-  recs <- double_recordings(new_data)
+  list(x = new_data, recs = double_recordings(new_data))
+}
+
+# Every model of `models` (a list of fitted models) projects the recordings
+# of `input` (projection_input()): each model is validated and projects the
+# recordings straight from their list (R/project.R's kernel reads them in
+# place). `keep(projection, model)` reduces each projection as it is made
+# (the FPCA classifier keeps only the distances, fpca_model_distance(): all
+# scores of every model would be n x 33 x p x ncomp numbers), and
+# `distance_only` tells the kernel not to return the rest at all; with
+# `keep_going` a model that cannot project gives its error in its place
+# instead of stopping the rest. `time_weights`, a function of the model,
+# gives each its weights on the template time (the weighted FPCA distance);
+# NULL is eq. 4.4. One progress step per model (`progress`, a progressr
+# progressor or NULL).
+project_models <- function(models, input, arg, details, call, keep = function(pr, m) pr, keep_going = FALSE,
+                           time_weights = NULL, distance_only = FALSE, progress = NULL) {
+  if (length(models) == 0L) {
+    hm_abort("{.arg {arg}} holds no fitted grasp models.", "bad_input", argument = arg, call = call)
+  }
   # before the native kernel; an edited model is the caller's error, not a
   # type to skip with keep_going
   for (m in models) validate_projection_model(m, call)
   one <- function(m) {
-    check_projection_dofs(m, new_data, call)
-    keep(project_recordings(m, new_data, details = details, distance_only = distance_only, recs = recs,
-                            time_weights = if (!is.null(time_weights)) time_weights(m)))
+    check_projection_dofs(m, input$x, call)
+    keep(project_recordings(m, input$x, details = details, distance_only = distance_only, recs = input$recs,
+                            time_weights = if (!is.null(time_weights)) time_weights(m)), m)
   }
   lapply(models, function(m) {
     out <- if (keep_going) tryCatch(one(m), error = function(e) e) else one(m)

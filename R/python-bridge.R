@@ -111,7 +111,7 @@ py_default_dofs <- function(p) grasps(list(matrix(0, 1L, p)))$dofs
 
 # The grasp types of a model set that have a fitted model (a failed type stays
 # in the set without one).
-py_fitted_types <- function(models) names(Filter(function(m) inherits(m, "grasp_model"), unclass(models)))
+py_fitted_types <- function(models) names(fitted_models(models))
 
 # The correlation a model generates its DoFs' first FPC scores with.
 py_dependence_matrix <- function(model) attr(summary(model), "dependence_matrix")

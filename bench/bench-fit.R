@@ -41,11 +41,11 @@ cat(sprintf("simulate_grasps(): %d recordings, %.2f s elapsed, %.2f s CPU\n\n", 
             t_sim[["elapsed"]], cpu_of(t_sim)))
 
 steps_of <- function(ms) {
-  rowSums(vapply(unclass(ms), function(m) m$timing[c("align", "fpca", "gmm")], numeric(3)))
+  rowSums(vapply(ms$models, function(m) m$timing[c("align", "fpca", "gmm")], numeric(3)))
 }
 em_fallbacks <- function(ms) {
   s <- summary(ms)
-  warp <- sum(vapply(unclass(ms), function(m) any(m$fallbacks$step == "warp_mixture"), logical(1)))
+  warp <- sum(vapply(ms$models, function(m) any(m$fallbacks$step == "warp_mixture"), logical(1)))
   c(dof = sum(s$n_em_fallback), warp = warp)
 }
 
@@ -96,7 +96,7 @@ if (use_installed && !bench_quick) {
   invisible(fit_grasp_models(g[g$meta$grasp %in% levels(g$meta$grasp)[1:2]], seed = 1))
   par_run <- run(sprintf("multisession plan, 2 workers (pids %s):", paste(pids, collapse = ", ")),
                  workers = pids)
-  strip <- function(ms) lapply(unclass(ms), function(m) m[setdiff(names(m), "timing")])
+  strip <- function(ms) lapply(ms$models, function(m) m[setdiff(names(m), "timing")])
   cat(sprintf("  speed-up %.2fx; identical models to the sequential fit: %s\n\n",
               seq_run$seconds / par_run$seconds,
               identical(strip(seq_run$models), strip(par_run$models))))
@@ -105,7 +105,7 @@ if (use_installed && !bench_quick) {
 
 # ---- the EM alone: the 528 bivariate and 33 univariate mixtures -------------
 
-scores <- unlist(lapply(unclass(seq_run$models), function(m) {
+scores <- unlist(lapply(seq_run$models$models, function(m) {
   c(lapply(seq_along(m$dofs), function(j) if (!isTRUE(m$fpca[[j]]$constant)) as.matrix(m$fpca[[j]]$scores)),
     list(as.matrix(m$warp$fpca$scores)))
 }), recursive = FALSE)
@@ -154,7 +154,7 @@ bench_record("model fit, reference / fast engines (CPU)", ratio, "x")
 cat(sprintf("  ratio reference / fast: %.0fx CPU overall (target 100x: %s); align %.0fx, fpca %.0fx, gmm %.0fx\n",
             ratio, if (ratio >= 100) "met" else "MISSED", ref$steps[1] / fast$steps[1],
             ref$steps[2] / fast$steps[2], ref$steps[3] / fast$steps[3]))
-ll <- function(ms) unlist(lapply(unclass(ms), function(m) vapply(m$gmm, function(f) f$loglik, numeric(1))))
+ll <- function(ms) unlist(lapply(ms$models, function(m) vapply(m$gmm, function(f) f$loglik, numeric(1))))
 d <- ll(fast$models) - ll(ref$models)
 cat(sprintf("  mixture log-likelihoods, fast minus reference: min %.3g, median %.3g (the fast engine keeps the best of several starts)\n",
             min(d, na.rm = TRUE), stats::median(d, na.rm = TRUE)))

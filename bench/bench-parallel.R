@@ -49,7 +49,7 @@ runs_of_build <- function(lib, sizes, reps) {
       sum(v[2, ])
     }
     # the models without their own timings (the only part that differs between runs)
-    sig_of <- function(ms) rlang::hash(lapply(unclass(ms), function(m) { if (is.list(m)) m$timing <- NULL; m }))
+    sig_of <- function(ms) rlang::hash(lapply(ms$models, function(m) { if (is.list(m)) m$timing <- NULL; m }))
     out <- list()
     for (sz in names(sizes)) {
       g <- simulate_grasps(subjects = sizes[[sz]], seed = 7)

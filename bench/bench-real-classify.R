@@ -126,7 +126,7 @@ nested_ncomp <- function(g, K = 4L) {
     d <- lapply(seq_len(K), function(k) {
       # (the residual scale pooled again over the cut models, as fit_model_set() pools it)
       set <- new_grasp_models(pool_likelihood_residuals(lapply(fitted_models(ms), cut_model, k)),
-                              levels = attr(ms, "levels"), distance = "likelihood")
+                              levels = ms$levels, distance = "likelihood")
       suppressWarnings(fpca_distances(set, test)$distances)
     })
     d[[K + 1L]] <- Reduce(`+`, d)

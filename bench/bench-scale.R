@@ -66,7 +66,7 @@ measure <- function(subjects) {
   t_fit <- system.time(ms <- fit_grasp_models(g, seed = 1))
   mem_fit <- hwm_gb()
   mem_workers <- max(vapply(workers, hwm_gb, numeric(1)))
-  iters <- unlist(lapply(unclass(ms), function(m) {
+  iters <- unlist(lapply(ms$models, function(m) {
     c(vapply(m$gmm, function(x) as.numeric(x$iterations), numeric(1)), m$warp$gmm$iterations)
   }))
   gc()

@@ -4,7 +4,7 @@
 # object generate() would, built by R arithmetic.
 
 generate_reference <- function(model, n, seed, warp = TRUE) {
-  models <- if (inherits(model, "grasp_models")) unclass(model) else list(model)
+  models <- if (inherits(model, "grasp_models")) model$models else list(model)
   with_seed(seed, assemble_generated(models, lapply(models, draw_batch_reference, n = n, warp = warp)))
 }
 

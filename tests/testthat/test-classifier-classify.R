@@ -92,7 +92,7 @@ test_that("FPCA classification is near 100% on planted well-separated types", {
   expect_gte(mean(as.character(classify(fit_grasp_models(g, seed = 1), g)$predictions$predicted) ==
                    as.character(g$meta$grasp)), 0.95)
   expect_equal(colnames(cl$distances), names(ms))
-  expect_equal(unname(cl$target_length), vapply(unclass(ms), function(m) m$target_length, numeric(1)),
+  expect_equal(unname(cl$target_length), vapply(ms, function(m) m$target_length, numeric(1)),
                ignore_attr = TRUE)
   expect_gte(mean(as.character(cl$predictions$predicted) == as.character(g$meta$grasp)), 0.95)
   # the thesis' norm on frames 1..T_i: project()'s [0, 1] distance times
@@ -109,11 +109,11 @@ test_that("FPCA classification is near 100% on planted well-separated types", {
   expect_equal(distance_minima(tab)$model_min_own_type, 4L)
   # a model set where one type failed to fit: recorded and warned, never hidden
   failed <- new_grasp_model_failed("Tripod", simpleError("too few recordings"))
-  part <- new_grasp_models(c(unclass(ms)[1:3], list(Tripod = failed)))
+  part <- new_grasp_models(c(ms$models[1:3], list(Tripod = failed)))
   expect_warning(clp <- classify(part, g), class = "handmotion_warning_projection_failed")
   expect_equal(clp$failures$model, "Tripod")
   expect_output(print(clp), "failed models: Tripod")
-  one <- structure(unclass(ms)[1], class = class(ms))
+  one <- ms[1]
   cl1 <- classify(one, g)
   expect_true(all(cl1$predictions$predicted == "Large Diameter"))
 })

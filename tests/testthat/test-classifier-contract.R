@@ -81,11 +81,11 @@ test_that("every classifier answers predict() with classes, probabilities and di
 test_that("the FPCA set's temperature is fitted and kept when the set is subset", {
   train <- planted_types(types = c(1, 9, 17), subjects = 3, trials = 3, seed = 3)
   ms <- fit_grasp_models(train, seed = 1, mixture_components = 1)
-  expect_true(is.numeric(attr(ms, "temperature")) && attr(ms, "temperature") > 0)
-  expect_identical(attr(ms[1:2], "temperature"), attr(ms, "temperature"))
+  expect_true(is.numeric(ms$temperature) && ms$temperature > 0)
+  expect_identical(ms[1:2]$temperature, ms$temperature)
   expect_output(print(ms), "class probabilities: softmax")
   # a set built without a fit has no temperature: no probabilities, said so
-  bare <- new_grasp_models(unclass(ms)[names(ms)])
+  bare <- new_grasp_models(ms$models)
   expect_error(predict(bare, train, type = "prob"), class = "handmotion_error_bad_model")
   expect_s3_class(predict(bare, train), "grasp_predictions")
 })

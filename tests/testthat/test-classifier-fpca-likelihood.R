@@ -29,7 +29,7 @@ test_that("the likelihood distance separates types of one shape and different am
   test <- g[g$meta$subject == "s4"]
   acc <- function(distance) {
     ms <- fit_grasp_models(train, seed = 1, ncomp = 1, mixture_components = 1, distance = distance)
-    expect_identical(attr(ms, "distance"), distance)
+    expect_identical(ms$distance, distance)
     cl <- classify(ms, test)
     mean(as.character(cl$predictions$predicted) == as.character(cl$predictions$truth))
   }
@@ -186,14 +186,14 @@ test_that("distance is checked, kept by subsetting, and printed", {
   g <- amplitude_types(subjects = 2, trials = 4)
   expect_error(fit_grasp_models(g, seed = 1, ncomp = 1, distance = "residuals"), class = "handmotion_error_bad_input")
   ms <- fit_grasp_models(g, seed = 1, ncomp = 1, mixture_components = 1, distance = "residual")
-  expect_identical(attr(ms[c("A", "B")], "distance"), "residual")
+  expect_identical(ms[c("A", "B")]$distance, "residual")
   expect_output(print(classify(ms, g)), "projection distance")
   ml <- fit_grasp_models(g, seed = 1, ncomp = 1, mixture_components = 1)
   expect_output(print(classify(ml, g)), "likelihood distance")
-  # a set from before the choice existed is ranked by the residual
-  old <- ms
-  attr(old, "distance") <- NULL
-  expect_equal(predict(old, g, type = "distance"), predict(ms, g, type = "distance"))
+  # a set built without the choice is ranked by the residual
+  bare <- new_grasp_models(ms$models)
+  expect_equal(predict(bare, g, type = "distance"), predict(ms, g, type = "distance"))
+  expect_error(new_grasp_models(ms$models, distance = "residuals"))
 })
 
 # Type A's recordings are tidy (one shape, small noise); type B's have

@@ -22,13 +22,16 @@ test_that("a fitted model whose parts were edited is refused by every verb, nami
   expect_error(generate(no_rate, n = 1), "rate", class = "handmotion_error_bad_model")
   # a set holding something that is not a model
   text <- unclass(f$ms)
-  text[[2]] <- "x"
+  text$models[[2]] <- "x"
   class(text) <- class(f$ms)
-  attr(text, "levels") <- attr(f$ms, "levels")
-  expect_error(classify(text, f$g), "models[[2]] (Small Diameter)", fixed = TRUE, class = "handmotion_error_bad_model")
-  expect_error(generate(text, n = 1), "x[[2]]", fixed = TRUE, class = "handmotion_error_bad_model")
-  hot <- f$ms
-  attr(hot, "temperature") <- NaN
+  expect_error(classify(text, f$g), "models$models[[2]] (Small Diameter)", fixed = TRUE, class = "handmotion_error_bad_model")
+  expect_error(generate(text, n = 1), "x$models[[2]]", fixed = TRUE, class = "handmotion_error_bad_model")
+  # a set saved by an earlier version (the list of models, fields as attributes)
+  old <- structure(f$ms$models, class = class(f$ms), temperature = 1)
+  expect_error(predict(old, f$g), "earlier version", class = "handmotion_error_bad_model")
+  hot <- unclass(f$ms)
+  hot$temperature <- NaN
+  class(hot) <- class(f$ms)
   expect_error(predict(hot, f$g, type = "prob"), "temperature", class = "handmotion_error_bad_model")
   # classifiers and the hand-over model
   clf <- f$clf

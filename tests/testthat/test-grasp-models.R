@@ -15,8 +15,9 @@ quiet_few <- function(expr) {
 }
 
 strip_timing <- function(ms) {
-  for (i in seq_along(ms)) ms[[i]]$timing <- NULL
-  unclass(ms)
+  ms <- unclass(ms)
+  for (i in seq_along(ms$models)) ms$models[[i]]$timing <- NULL
+  ms
 }
 
 test_that("every type is fitted; a type that cannot be fitted is recorded, not fatal", {
@@ -41,6 +42,18 @@ test_that("every type is fitted; a type that cannot be fitted is recorded, not f
   expect_identical(vapply(lapply(ms, class), `[`, "", 1),
                    c(Tripod = "grasp_model", Lateral = "grasp_model_failed", Ring = "grasp_model"))
   expect_error(ms["Power Sphere"], class = "handmotion_error_bad_input")
+  # a member of the classifier family whose models are a field, read as
+  # the list of them: [[, names(), length(), as.list(); $ reads fields and
+  # refuses a type, naming [[
+  expect_s3_class(ms, "grasp_classifier")
+  expect_identical(ms$models[["Ring"]], ms[["Ring"]])
+  expect_identical(ms[[3]], ms[["Ring"]])
+  expect_length(ms, 3L)
+  expect_identical(as.list(ms), ms$models)
+  expect_identical(ms$classes, c("Tripod", "Ring"))
+  expect_identical(unname(ms$n), c(ms[["Tripod"]]$n_used, ms[["Ring"]]$n_used))
+  expect_error(ms$Ring, 'x[["Ring"]]', fixed = TRUE, class = "handmotion_error_bad_input")
+  expect_null(ms$no_such_field)
   # generate() skips it, saying so, and refuses it by name
   expect_warning(gen <- generate(ms, n = 2, seed = 1), class = "handmotion_warning_model_failed")
   expect_setequal(as.character(unique(gen$meta$grasp)), c("Tripod", "Ring"))
@@ -164,7 +177,7 @@ test_that("a cached fit resumes: only missing types are refitted, and the result
   first <- quiet_few(fit_grasp_models(g, seed = 5, cache = cache))
   files <- list.files(cache, full.names = TRUE)
   expect_length(files, 3L)
-  strip <- function(ms) lapply(unclass(ms), function(m) m[setdiff(names(m), "timing")])
+  strip <- function(ms) lapply(ms, function(m) m[setdiff(names(m), "timing")])
   expect_identical(strip(first), strip(full))
   # an "interrupted" fit: one type's file is missing
   gone <- names(full)[2]
@@ -184,4 +197,20 @@ test_that("a cached fit resumes: only missing types are refitted, and the result
   other <- quiet_few(fit_grasp_models(g, seed = 6, cache = cache))
   expect_setequal(fitted, names(full))
   expect_error(quiet_few(fit_grasp_models(g, seed = NULL, cache = cache)), class = "handmotion_error_bad_input")
+})
+
+test_that("the temperature's sample is scored by the classifier's own per-model step", {
+  g <- simulate_grasps(subjects = 3, grasps = c(1, 9, 17), objects = 2, trials = 2, seed = 4)
+  for (distance in c("likelihood", "residual")) {
+    ms <- quiet_few(fit_grasp_models(g, seed = 1, mixture_components = 1, distance = distance))
+    d <- fpca_distances(ms, g)$distances
+    for (type in names(ms)) {
+      # the same numbers, to the bit, whether a worker scores the sample (the
+      # likelihood's terms apart until the set's residual scale is pooled)
+      # or classify() does
+      got <- finish_sample_distance(ms[[type]], sample_distance(ms[[type]], g, distance))
+      expect_identical(got, unname(d[, type]))
+    }
+  }
+  expect_null(sample_distance(ms[[1]], NULL, "likelihood"))
 })

@@ -68,10 +68,10 @@ test_that("a model set projects onto every model; DoF mismatch is a clear error"
   prs <- project(ms, g)
   expect_named(prs, c("Tripod", "Ring"))
   expect_null(prs$Ring$fitted)
-  expect_equal(prs$Ring$distance, project(ms$Ring, g)$distance)
+  expect_equal(prs$Ring$distance, project(ms[["Ring"]], g)$distance)
   wrong <- grasps(list(matrix(0, 5, 3)), dofs = c("a", "b", "c"))
-  expect_error(project(ms$Ring, wrong), class = "handmotion_error_bad_input")
-  expect_error(project(ms$Ring, list()), class = "handmotion_error_bad_input")
+  expect_error(project(ms[["Ring"]], wrong), class = "handmotion_error_bad_input")
+  expect_error(project(ms[["Ring"]], list()), class = "handmotion_error_bad_input")
   expect_snapshot(print(prs$Ring))
 })
 

@@ -31,7 +31,7 @@ test_that("table_5_2 summarises variance explained over DoFs, ours beside the th
                       "thesis_mean", "diff_mean", "max", "thesis_max"))
   expect_equal(nrow(t52), 3L)
   # recomputed from the models themselves: percent of variance of two FPCs per DoF
-  ve <- lapply(unclass(d$ms), function(m) 100 * rowSums(model_var_explained(m)))
+  ve <- lapply(d$ms, function(m) 100 * rowSums(model_var_explained(m)))
   expect_equal(t52$min, unname(vapply(ve, min, numeric(1))))
   expect_equal(t52$median, unname(vapply(ve, stats::median, numeric(1))))
   expect_equal(t52$mean, unname(vapply(ve, mean, numeric(1))))
