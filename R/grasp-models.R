@@ -79,12 +79,18 @@
 #'   * `"residual"`: the thesis' eq. 4.4, the L2 distance between the
 #'     warped recording and its projection on frames `1..T_i` (see
 #'     [classify()]); what [reproduce_thesis()] and the thesis tables use.
-#' @return An object of class `grasp_models`: a list named by grasp type,
-#'   one `grasp_model` per fitted type and one `grasp_model_failed` (a list
-#'   with `grasp`, `grasp_id`, `message` and `class`) per type whose fit
-#'   failed; attributes `seed`, `levels` (of the training labels),
-#'   `temperature` (of the class probabilities, fitted on the training
-#'   recordings: see [predict.grasp_models()]) and `distance`.
+#' @return An object of class `grasp_models`, a member of the classifier
+#'   family (`grasp_classifier`, see [summary.grasp_classifier()]): a list
+#'   with `models` (named by grasp type: one `grasp_model` per fitted type
+#'   and one `grasp_model_failed`, a list with `grasp`, `grasp_id`,
+#'   `message` and `class`, per type whose fit failed), the family's
+#'   fields `classes` (the fitted types), `levels` (of the training
+#'   labels), `n` (recordings each type was fitted on) and `temperature`
+#'   (of the class probabilities, fitted on the training recordings: see
+#'   [predict.grasp_models()]), and `seed` and `distance`. The set reads
+#'   as the list of its models: `ms[["Tripod"]]` (or `ms$models$Tripod`),
+#'   `names(ms)`, `length(ms)`, `ms[types]` (a smaller set) and
+#'   `lapply(ms, f)` are by type; `ms$` reads the fields.
 #' @seealso [summary.grasp_models()] (Tables 5.1 and 5.2), [generate()],
 #'   [predict.grasp_models()] (classes and probabilities), [project()],
 #'   [classify()].
