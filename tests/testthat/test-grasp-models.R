@@ -54,6 +54,11 @@ test_that("every type is fitted; a type that cannot be fitted is recorded, not f
   expect_identical(unname(ms$n), c(ms[["Tripod"]]$n_used, ms[["Ring"]]$n_used))
   expect_error(ms$Ring, 'x[["Ring"]]', fixed = TRUE, class = "handmotion_error_bad_input")
   expect_null(ms$no_such_field)
+  # replacing a model keeps the fields, and the set is checked again
+  again <- ms
+  again[["Ring"]] <- ms[["Ring"]]
+  expect_identical(again, ms)
+  expect_error(again[["Ring"]] <- ms[["Tripod"]])
   # generate() skips it, saying so, and refuses it by name
   expect_warning(gen <- generate(ms, n = 2, seed = 1), class = "handmotion_warning_model_failed")
   expect_setequal(as.character(unique(gen$meta$grasp)), c("Tripod", "Ring"))
