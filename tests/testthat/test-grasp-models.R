@@ -42,23 +42,6 @@ test_that("every type is fitted; a type that cannot be fitted is recorded, not f
   expect_identical(vapply(lapply(ms, class), `[`, "", 1),
                    c(Tripod = "grasp_model", Lateral = "grasp_model_failed", Ring = "grasp_model"))
   expect_error(ms["Power Sphere"], class = "handmotion_error_bad_input")
-  # a member of the classifier family whose models are a field, read as
-  # the list of them: [[, names(), length(), as.list(); $ reads fields and
-  # refuses a type, naming [[
-  expect_s3_class(ms, "grasp_classifier")
-  expect_identical(ms$models[["Ring"]], ms[["Ring"]])
-  expect_identical(ms[[3]], ms[["Ring"]])
-  expect_length(ms, 3L)
-  expect_identical(as.list(ms), ms$models)
-  expect_identical(ms$classes, c("Tripod", "Ring"))
-  expect_identical(unname(ms$n), c(ms[["Tripod"]]$n_used, ms[["Ring"]]$n_used))
-  expect_error(ms$Ring, 'x[["Ring"]]', fixed = TRUE, class = "handmotion_error_bad_input")
-  expect_null(ms$no_such_field)
-  # replacing a model keeps the fields, and the set is checked again
-  again <- ms
-  again[["Ring"]] <- ms[["Ring"]]
-  expect_identical(again, ms)
-  expect_error(again[["Ring"]] <- ms[["Tripod"]])
   # generate() skips it, saying so, and refuses it by name
   expect_warning(gen <- generate(ms, n = 2, seed = 1), class = "handmotion_warning_model_failed")
   expect_setequal(as.character(unique(gen$meta$grasp)), c("Tripod", "Ring"))

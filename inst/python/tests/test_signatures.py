@@ -141,7 +141,7 @@ def test_explicit_keywords_reach_r(hm, ro):
     # the same arguments given through **kwargs give the same call (one path, no second)
     g = hm.simulate_grasps(subjects=3, grasps=[1, 17], objects=2, trials=2, seed=3)
     named = hm.fit_grasp_models(g, ncomp=1, mixture_components=1, distance="residual")
-    assert str(ro.r("function(x) attr(x, \"distance\")")(named.robj)[0]) == "residual"
+    assert str(ro.r("function(x) x$distance")(named.robj)[0]) == "residual"
     # (rx2 is R's [[, which reads a set's models by type or place)
     assert int(named.robj.rx2(1).rx2("settings").rx2("ncomp")[0]) == 1
     # keyword-only: a positional call cannot reach them in another meaning
