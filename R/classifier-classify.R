@@ -220,7 +220,7 @@ fpca_model_distance <- function(model, pr, likelihood, ids, terms = FALSE) {
   # a set whose residual scale is not pooled yet: fit_grasp_models()'s
   # temperature sample, scored on the workers as each type is fitted)
   if (likelihood && terms) {
-    return(list(score = likelihood_score_term(model, pr)[at], residual = pr$residual[at, , drop = FALSE]))
+    return(list(score = unname(likelihood_score_term(model, pr))[at], residual = pr$residual[at, , drop = FALSE]))
   }
   d <- unname(if (likelihood) fpca_likelihood_distance(model, pr) else pr$distance)
   d <- d[at]

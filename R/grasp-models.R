@@ -321,7 +321,7 @@ sample_distance <- function(model, sample, distance) {
 # residual distance, an error or NULL as they are.
 finish_sample_distance <- function(model, d) {
   if (!is.list(d) || inherits(d, "condition") || !inherits(model, "grasp_model")) return(d)
-  d$score + likelihood_residual_term(model, d$residual)
+  unname(d$score + likelihood_residual_term(model, d$residual))
 }
 
 # The one constructor of class "grasp_models", a member of the classifier

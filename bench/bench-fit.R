@@ -137,7 +137,7 @@ cat(sprintf("fast vs reference engines on %d types x %d recordings (%s), sequent
             length(types), n_sub, paste(types, collapse = ", ")))
 time_engine <- function(engine) {
   tt <- system.time(ms <- fit_grasp_models(sub, seed = 1, engine = engine))
-  failed <- attr(ms, "failed")
+  failed <- failed_types(ms)
   if (!is.null(failed) && nrow(failed)) stop("the ", engine, " engines failed: ", paste(unique(failed$message), collapse = "; "))
   list(models = ms, el = tt[["elapsed"]], cpu = cpu_of(tt), steps = steps_of(ms))
 }

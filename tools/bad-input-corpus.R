@@ -175,10 +175,10 @@ corpus_cases <- function(e) {
     add("edited model", sprintf("%s: model %s", vn, en), expr, c(medits[[en]][[2]], "^(x|object|models)$"))
   }
   add("edited model", "generate: model set with a text element", quote(generate({s <- ms; s[[2]] <- "x"; s}, n = 1)), c("x\\[\\[2\\]\\]", "Small Diameter", "models?"))
-  add("edited model", "classify: model set with a text element", quote(classify({s <- unclass(ms); s[[2]] <- "x"; class(s) <- "grasp_models"; s}, g)), c("\\[\\[2\\]\\]", "Small Diameter", "models?"))
+  add("edited model", "classify: model set with a text element", quote(classify({s <- unclass(ms); s$models[[2]] <- "x"; class(s) <- class(ms); s}, g)), c("\\[\\[2\\]\\]", "Small Diameter", "models?"))
   add("edited model", "classify: model set with NaN temperature", quote(classify({s <- ms; s$temperature <- NaN; s}, g)), c("temperature"))
   add("edited model", "predict: model set with NaN temperature", quote(predict({s <- ms; s$temperature <- NaN; s}, g, type = "prob")), c("temperature"))
-  add("edited model", "summary: model set with a text element", quote(summary({s <- unclass(ms); s[[2]] <- "x"; class(s) <- "grasp_models"; s})), c("\\[\\[2\\]\\]", "Small Diameter", "object"))
+  add("edited model", "summary: model set with a text element", quote(summary({s <- unclass(ms); s$models[[2]] <- "x"; class(s) <- class(ms); s})), c("\\[\\[2\\]\\]", "Small Diameter", "object"))
   cedits <- list(
     "fit dropped" = list(quote({x <- clf; x$fit <- NULL; x}), "fit"),
     "classes shortened" = list(quote({x <- clf; x$classes <- x$classes[-1]; x}), "classes"),
