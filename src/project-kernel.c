@@ -104,6 +104,26 @@ static int same_weights(const double *w, const double *nw, R_xlen_t len) {
   return 1;
 }
 
+/* The model's template as both entry points take it: mean L x p, comps
+ * L x p x k, weights and norm weights L x p. Checks them against the p DoFs
+ * and gives L (template points) and k (components). */
+static void template_dims(SEXP mean, SEXP comps, SEXP weights, SEXP norm_weights, int p,
+                          int *L_out, int *k_out) {
+  SEXP mdim = getAttrib(mean, R_DimSymbol);
+  if (TYPEOF(mdim) != INTSXP || XLENGTH(mdim) != 2 || INTEGER(mdim)[1] != p)
+    error("project kernel: mean must be an L x p matrix");
+  const int L = INTEGER(mdim)[0];
+  if (L < 1) error("project kernel: the template has no points");
+  need_real(mean, (R_xlen_t) L * p, "mean (L x p)");
+  need_real(weights, (R_xlen_t) L * p, "weights (L x p)");
+  need_real(norm_weights, (R_xlen_t) L * p, "norm weights (L x p)");
+  if (TYPEOF(comps) != REALSXP || XLENGTH(comps) % ((R_xlen_t) L * p) != 0)
+    error("project kernel: comps must be an L x p x k double array");
+  const int k = (int) (XLENGTH(comps) / ((R_xlen_t) L * p));
+  *L_out = L;
+  *k_out = k;
+}
+
 SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SEXP comps,
                       SEXP weights, SEXP norm_weights) {
   SEXP dim = getAttrib(values, R_DimSymbol);
@@ -111,22 +131,13 @@ SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SE
     error("project kernel: values must be a double matrix");
   const R_xlen_t N = INTEGER(dim)[0];
   const int p = INTEGER(dim)[1];
-  SEXP mdim = getAttrib(mean, R_DimSymbol);
-  if (TYPEOF(mdim) != INTSXP || XLENGTH(mdim) != 2 || INTEGER(mdim)[1] != p)
-    error("project kernel: mean must be an L x p matrix");
-  const int L = INTEGER(mdim)[0];
-  if (L < 1) error("project kernel: the template has no points");
+  int L, k;
+  template_dims(mean, comps, weights, norm_weights, p, &L, &k);
   const R_xlen_t Ln = XLENGTH(rows);
   if (TYPEOF(rows) != INTSXP || TYPEOF(nxt) != INTSXP || XLENGTH(nxt) != Ln || Ln % L != 0)
     error("project kernel: rows and nxt must be integer vectors of L x n indices");
   const R_xlen_t n = Ln / L;
   need_real(frac, Ln, "f");
-  need_real(mean, (R_xlen_t) L * p, "mean (L x p)");
-  need_real(weights, (R_xlen_t) L * p, "weights (L x p)");
-  need_real(norm_weights, (R_xlen_t) L * p, "norm weights (L x p)");
-  if (TYPEOF(comps) != REALSXP || XLENGTH(comps) % ((R_xlen_t) L * p) != 0)
-    error("project kernel: comps must be an L x p x k double array");
-  const int k = (int) (XLENGTH(comps) / ((R_xlen_t) L * p));
   const int *ri = INTEGER(rows), *ni = INTEGER(nxt);
   for (R_xlen_t t = 0; t < Ln; t++) {
     if (ri[t] < 1 || ri[t] > N || ni[t] < 1 || ni[t] > N)
@@ -186,18 +197,9 @@ SEXP hm_project_warped(SEXP recs, SEXP cols, SEXP u, SEXP mean, SEXP comps, SEXP
   if (TYPEOF(cols) != INTSXP) error("project kernel: cols must be integer column numbers");
   const int p = (int) XLENGTH(cols);
   const int *cj = INTEGER(cols);
-  SEXP mdim = getAttrib(mean, R_DimSymbol);
-  if (TYPEOF(mdim) != INTSXP || XLENGTH(mdim) != 2 || INTEGER(mdim)[1] != p)
-    error("project kernel: mean must be an L x p matrix");
-  const int L = INTEGER(mdim)[0];
-  if (L < 1) error("project kernel: the template has no points");
+  int L, k;
+  template_dims(mean, comps, weights, norm_weights, p, &L, &k);
   need_real(u, L, "u");
-  need_real(mean, (R_xlen_t) L * p, "mean (L x p)");
-  need_real(weights, (R_xlen_t) L * p, "weights (L x p)");
-  need_real(norm_weights, (R_xlen_t) L * p, "norm weights (L x p)");
-  if (TYPEOF(comps) != REALSXP || XLENGTH(comps) % ((R_xlen_t) L * p) != 0)
-    error("project kernel: comps must be an L x p x k double array");
-  const int k = (int) (XLENGTH(comps) / ((R_xlen_t) L * p));
   const int mode = asInteger(mode_);
   if (mode < 0 || mode > 2) error("project kernel: mode must be 0, 1 or 2");
   /* every recording checked before any work */
