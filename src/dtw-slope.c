@@ -21,7 +21,7 @@
 #include <math.h>
 #include <R.h>
 #include <Rinternals.h>
-#include "named-list.h"
+#include "warp-path.h"
 
 #define MAXSTEP 8
 
@@ -126,16 +126,5 @@ SEXP hm_dtw_pattern(SEXP x, SEXP y, SEXP table) {
     if (len >= cap) error("warping path too long");
     pi[len] = i; pj[len] = j; len++;
   }
-  SEXP i1 = PROTECT(allocVector(INTSXP, len));
-  SEXP i2 = PROTECT(allocVector(INTSXP, len));
-  for (int a = 0; a < len; a++) {
-    INTEGER(i1)[a] = pi[len - 1 - a] + 1;
-    INTEGER(i2)[a] = pj[len - 1 - a] + 1;
-  }
-  SEXP dist = PROTECT(ScalarReal(total));
-  const char *names[] = {"index1", "index2", "distance"};
-  const SEXP values[] = {i1, i2, dist};
-  SEXP out = hm_named_list(3, names, values);
-  UNPROTECT(3);
-  return out;
+  return hm_warp_path(pi, pj, len, 1, total);
 }

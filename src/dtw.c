@@ -27,6 +27,7 @@
 #include <R.h>
 #include <Rinternals.h>
 #include "named-list.h"
+#include "warp-path.h"
 #ifdef __SSE2__
 #include <emmintrin.h>
 #endif
@@ -283,19 +284,7 @@ SEXP hm_dtw_pair(SEXP x, SEXP y, SEXP window) {
   int len = dtw_core(REAL(x), n, frame_major(REAL(y), m, p), m, p, win, &w, &distance);
   if (len < 0) error("no warping path exists within the window");
 
-  SEXP i1 = PROTECT(allocVector(INTSXP, len));
-  SEXP i2 = PROTECT(allocVector(INTSXP, len));
-  int *pi1 = INTEGER(i1), *pi2 = INTEGER(i2);
-  for (int k = 0; k < len; k++) {
-    pi1[k] = w.pi[k] + 1;
-    pi2[k] = w.pj[k] + 1;
-  }
-  SEXP d = PROTECT(ScalarReal(distance));
-  const char *names[] = {"index1", "index2", "distance"};
-  const SEXP values[] = {i1, i2, d};
-  SEXP out = hm_named_list(3, names, values);
-  UNPROTECT(3);
-  return out;
+  return hm_warp_path(w.pi, w.pj, len, 0, distance);
 }
 
 /* recs: list of n_k x p double matrices; tmpl: L x p. Returns
