@@ -15,7 +15,15 @@
 #   and that towards the overall rate while they have little predicted
 #   time behind them (`prior` seconds), so that the pace of the long
 #   held-out folds is not applied unchanged to the quick fits and tables
-#   after them;
+#   after them. The prior is a tenth of the run's predicted time, not a
+#   fixed number of seconds: a short step's rate is poor evidence for the
+#   long steps after it (its start-up, the workers' progress arriving in
+#   bursts). With 20 s on a run of 570 s, the model fit (7 s by the model,
+#   35 s taken, mostly before its first type came back) raised the rate of
+#   every step on the workers to 1.9 and the time left from 8.5 to 17 min,
+#   where 12.8 remained (bench-eta.R's trace replayed; at load 10 it went
+#   from 24 to 93 min, issue 42); with a tenth of the run it said 9-13.5
+#   min. From a tenth of the work on the measured rates outweigh the prior;
 # * within a step, the times of its progress steps (folds, horizons,
 #   chunks): the time per progress step is the least-squares slope of
 #   their times (from six on), so the workers' start before the first one
@@ -24,7 +32,9 @@
 #   rest comes from the model at the kind's rate; as far as it is trusted,
 #   the step's projected time also counts in the rates of the steps after
 #   it.
-report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), names(cost)), prior = 20) {
+report_eta <- function(cost, kind = stats::setNames(rep("all", length(cost)), names(cost)),
+                       prior = 0.1 * sum(cost)) {
+  force(prior)  # (the run's predicted time before step() adds unknown steps)
   done <- character()       # finished steps, in order
   taken <- numeric()        # their measured seconds
   current <- NULL
