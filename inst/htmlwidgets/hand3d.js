@@ -263,8 +263,8 @@
     return x.recordings.map(function (rec) {
       var div = document.createElement("div");
       div.className = "hand3d-label";
-      div.style.cssText = "position:absolute;transform:translateX(-50%);font:13px sans-serif;color:#222;" +
-        "text-align:center;white-space:pre-line;overflow-wrap:anywhere;box-sizing:border-box;" +
+      div.style.cssText = "position:absolute;font:13px sans-serif;color:#222;" +
+        "text-align:center;white-space:pre-line;overflow-wrap:break-word;box-sizing:border-box;" +
         "background:rgba(255,255,255,0.6);padding:0 4px;border-radius:3px";
       // on two lines ("recorded: id" / "(type)"), as in the videos: side by side, one line each runs into the next
       div.textContent = rec.label.replace(" (", "\n(");
@@ -273,12 +273,21 @@
     });
   }
 
-  // Each label is centred under its hand and at most as wide as the room
-  // between its hand and the next (it wraps, down to a word per line), so
-  // labels of hands side by side never run into each other; none runs off
-  // the widget's edges or under the control bar.
+  // Each label has the slot between the midpoints to its neighbours' hands
+  // (the widget's edge beyond the first and the last), wraps to the slot's
+  // width between words, and is centred under its hand as far as its slot
+  // allows: labels of hands side by side never run into each other, none
+  // runs off the widget's edges or under the control bar, and a label near
+  // an edge takes the room there is beside its hand instead of shrinking to
+  // a word cut in pieces (a centred label could only be twice as wide as
+  // its hand's distance to the edge).
   function placeLabels(labels, camera, w, h) {
     if (!labels) return;
+    // (the camera's matrices as they will be drawn: render() updates them,
+    // but the labels are placed before it, and a widget at rest draws only
+    // once, so without this its labels stood where the camera was before
+    // it was placed, a hand's width to the side)
+    camera.updateMatrixWorld();
     var v = new THREE.Vector3();
     labels.forEach(function (l) {
       var lo = -Infinity, xs = 0;
@@ -292,12 +301,14 @@
       l.x = xs; l.y = lo;
     });
     var order = labels.slice().sort(function (a, b) { return a.x - b.x; });
+    var gap = 4;
     order.forEach(function (l, i) {
-      var room = 2 * Math.min(l.x, w - l.x);
-      if (i > 0) room = Math.min(room, l.x - order[i - 1].x);
-      if (i < order.length - 1) room = Math.min(room, order[i + 1].x - l.x);
-      l.div.style.maxWidth = Math.max(40, Math.floor(room - 8)) + "px";
-      l.div.style.left = Math.round(l.x) + "px";
+      var a = i > 0 ? (order[i - 1].x + l.x) / 2 : 0;
+      var b = i < order.length - 1 ? (l.x + order[i + 1].x) / 2 : w;
+      l.div.style.maxWidth = Math.max(40, Math.floor(b - a - 2 * gap)) + "px";
+      var width = l.div.offsetWidth;
+      var left = Math.min(Math.max(l.x - width / 2, a + gap), b - gap - width);
+      l.div.style.left = Math.round(Math.max(0, left)) + "px";
     });
     var bar = 34;  // the control bar's height and a little
     labels.forEach(function (l) {

@@ -146,6 +146,47 @@ test_that("hands side by side are named underneath, through one camera, in a rea
   expect_gt(mean(drawn), 0.04)
 })
 
+test_that("three labels side by side in a narrow widget keep apart, inside it, and cut no word, in a real browser", {
+  skip_without_browser()
+  g <- simulate_grasps(subjects = 3, grasps = 11, objects = 1, trials = 1, seed = 1)
+  # long labels, as the report's three-hand viewer has ("held-out
+  # recording: T25-S21-O1-R1 (Lateral Tripod)"), in a 400 px widget
+  w <- hand_3d(list(`held-out recording` = g[1], `thesis' model` = g[2], `copula model` = g[3]),
+               autoplay = FALSE, width = 400, height = 420)
+  # the labels' boxes read by the page itself once the widget is drawn:
+  # left, right, and how far its longest word is wider than the text's room
+  # (more than 0: the word is cut, as "Latera" over "l" was)
+  probe <- '(function wait() {
+    var el = document.querySelector(".hand3d.html-widget");
+    if (!el || !el.getAttribute("data-ready")) return setTimeout(wait, 20);
+    setTimeout(function () {
+      var box = el.getBoundingClientRect();
+      var ctx = document.createElement("canvas").getContext("2d");
+      var out = Array.from(el.querySelectorAll(".hand3d-label")).map(function (d) {
+        var r = d.getBoundingClientRect(), cs = getComputedStyle(d);
+        ctx.font = cs.font;
+        var longest = Math.max.apply(null, d.textContent.split(/\\s+/).map(function (s) { return ctx.measureText(s).width; }));
+        var room = d.clientWidth - parseFloat(cs.paddingLeft) - parseFloat(cs.paddingRight);
+        return [r.left - box.left, r.right - box.left, longest - room, box.width].join(",");
+      });
+      document.body.setAttribute("data-labels", out.join(";"));
+    }, 200);
+  })();'
+  page <- file.path(withr::local_tempdir(), "three.html")
+  htmlwidgets::saveWidget(htmlwidgets::appendContent(w, htmltools::tags$script(htmltools::HTML(probe))),
+                          page, selfcontained = FALSE)
+  dom <- browser_dom(page, 5000)
+  expect_no_match(dom, "data-js-error", fixed = TRUE)
+  expect_match(dom, 'data-labels="', fixed = TRUE)
+  rows <- strsplit(strsplit(sub('.*data-labels="([^"]*)".*', "\\1", dom), ";")[[1]], ",")
+  b <- matrix(as.numeric(unlist(rows)), ncol = 4, byrow = TRUE)
+  expect_equal(nrow(b), 3L)
+  b <- b[order(b[, 1]), , drop = FALSE]
+  expect_true(all(b[, 1] >= 0) && all(b[, 2] <= b[, 4] + 0.5))   # inside the widget
+  expect_true(all(b[-1, 1] >= b[-3, 2]))                          # no two overlap
+  expect_true(all(b[, 3] <= 0.5))                                  # no word is cut
+})
+
 test_that("a widget at rest renders nothing; playing, it renders until the end, in a real browser", {
   skip_without_browser()
   g <- simulate_grasps(subjects = 2, grasps = 17, objects = 1, trials = 1, seed = 1)
