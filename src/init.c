@@ -28,6 +28,7 @@ SEXP hm_channel_ranges(SEXP recs, SEXP p); /* channel-ranges.c */
 SEXP hm_plain_text(SEXP files, SEXP sizes); /* plain-text.c */
 SEXP hm_motion_base(SEXP X, SEXP rest_n, SEXP lag); /* motion-signals.c */
 SEXP hm_kernel_loo_lse(SEXP D2, SEXP grid); /* kernel-loo.c */
+SEXP hm_kernel_score_lse(SEXP A, SEXP rs, SEXP cs, SEXP h); /* kernel-score.c */
 SEXP hm_stack_values(SEXP recs, SEXP dofs); /* stack-values.c */
 
 static const R_CallMethodDef call_methods[] = {
@@ -48,6 +49,7 @@ static const R_CallMethodDef call_methods[] = {
   {"hm_plain_text", (DL_FUNC) &hm_plain_text, 2},
   {"hm_motion_base", (DL_FUNC) &hm_motion_base, 3},
   {"hm_kernel_loo_lse", (DL_FUNC) &hm_kernel_loo_lse, 2},
+  {"hm_kernel_score_lse", (DL_FUNC) &hm_kernel_score_lse, 4},
   {"hm_stack_values", (DL_FUNC) &hm_stack_values, 2},
   {NULL, NULL, 0}
 };

@@ -252,3 +252,21 @@ test_that("the residual scale is pooled over types: a loose type does not take w
   for (t in names(m)) unpooled[[t]]$likelihood_residual <- NULL
   expect_lte(right(unpooled), 0.5)
 })
+
+test_that("the compiled score kernel gives the R expression's log densities to the bit, NA for a row with NaN", {
+  g <- simulate_grasps(subjects = 3, grasps = c(17, 25), objects = 2, trials = 2, seed = 3)
+  ms <- fit_grasp_models(g, seed = 1)
+  for (m in fitted_models(ms)) {
+    kern <- likelihood_score_kernel(m)
+    expect_false(is.null(kern))
+    sc <- project(m, g)$scores
+    expect_identical(score_kernel_log_density(kern, sc), score_kernel_log_density_reference(kern, sc))
+    # a far-off recording (every term underflows but the nearest) and a NaN
+    sc[1, , ] <- sc[1, , ] * 50
+    sc[2, 1, 1] <- NaN
+    got <- score_kernel_log_density(kern, sc)
+    expect_identical(got[-2], score_kernel_log_density_reference(kern, sc)[-2])
+    expect_true(is.finite(got[1]))
+    expect_true(is.na(got[2]))
+  }
+})
