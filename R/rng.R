@@ -49,3 +49,10 @@ with_seed <- function(seed, expr) {
   set.seed(seed)
   expr
 }
+
+# An n x p matrix of standard normal draws, taken from the RNG in one call of
+# n * p (filled by column, or by row with `byrow = TRUE`): the simulator's
+# fixed draw order and the generators' noise depend on exactly these draws.
+rnorm_matrix <- function(n, p, byrow = FALSE) {
+  matrix(stats::rnorm(n * p), n, p, byrow = byrow)
+}

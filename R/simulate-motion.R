@@ -42,7 +42,7 @@ sim_streams <- function(seed) {
 # hand therefore depends on the number of subjects.)
 sim_subject_draws <- function(stream, subjects, k) {
   nd <- length(sim_driven_dofs)
-  x <- with_sim_seed(stream, matrix(stats::rnorm(subjects * (k + nd + 1L)), subjects, byrow = TRUE))
+  x <- with_sim_seed(stream, rnorm_matrix(subjects, k + nd + 1L, byrow = TRUE))
   x[, seq_len(k + nd)] <- sim_whiten(x[, seq_len(k + nd), drop = FALSE])
   list(z = x[, seq_len(k), drop = FALSE], u = x[, k + seq_len(nd), drop = FALSE],
        tempo = x[, k + nd + 1L])
@@ -98,16 +98,16 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   runif <- stats::runif
 
   # ---- all random draws, fixed order --------------------------------------
-  e_subtype <- sim_whiten(matrix(rnorm(S * nd), S, nd, byrow = TRUE))
+  e_subtype <- sim_whiten(rnorm_matrix(S, nd, byrow = TRUE))
   e_tempo <- rnorm(N)
-  e_post <- matrix(rnorm(N * nd), N, nd)
-  e_rest <- matrix(rnorm(N * nd), N, nd)
+  e_post <- rnorm_matrix(N, nd)
+  e_rest <- rnorm_matrix(N, nd)
   e_ap <- rnorm(N)
   u_lead <- runif(N)
   u_hold <- runif(N)
   e_peak <- rnorm(N)
-  e_on <- matrix(rnorm(N * 5), N, 5)
-  e_pk <- matrix(rnorm(N * 5), N, 5)
+  e_on <- rnorm_matrix(N, 5)
+  e_pk <- rnorm_matrix(N, 5)
   n_over <- round(p$overlong_fraction * N)
   over_idx <- sample.int(N, n_over)
   u_mult <- runif(n_over)
@@ -116,9 +116,9 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   u_stall_pri <- runif(N)
   u_stall_frac <- runif(N)
   u_stall_pos <- runif(N)
-  e_dip <- matrix(rnorm(N * 4), N, 4)
-  e_drift_a <- matrix(rnorm(N * 16), N, 16)
-  e_drift_b <- matrix(rnorm(N * 16), N, 16)
+  e_dip <- rnorm_matrix(N, 4)
+  e_drift_a <- rnorm_matrix(N, 16)
+  e_drift_b <- rnorm_matrix(N, 16)
 
   # ---- frame counts ---------------------------------------------------------
   sd_tot <- sqrt(p$tempo_subject_sd^2 + p$tempo_trial_sd^2)
