@@ -52,6 +52,7 @@
 #include <R.h>
 #include <Rinternals.h>
 #include "named-list.h"
+#include "cholesky.h"
 
 #define ST_DONE 0
 #define ST_FAILED 1
@@ -67,26 +68,6 @@ static double hm_log1pexp(double x) {
   if (x <= 18.) return log1p(exp(x));
   if (x > 33.3) return x;
   return x + exp(-x);
-}
-
-/* Cholesky factor R (upper triangular, S = R'R, d x d column-major, the
- * lower triangle zero) of the symmetric S; 0 when a pivot is not positive
- * (or NaN), as LAPACK's dpotrf behind chol() fails. */
-static int chol_upper(int d, const double *S, double *R) {
-  for (int q = 0; q < d * d; q++) R[q] = 0.0;
-  for (int j = 0; j < d; j++) {
-    double piv = S[j + (size_t) j * d];
-    for (int c = 0; c < j; c++) piv -= R[c + (size_t) j * d] * R[c + (size_t) j * d];
-    if (!(piv > 0.0)) return 0;
-    double rjj = sqrt(piv);
-    R[j + (size_t) j * d] = rjj;
-    for (int i = j + 1; i < d; i++) {
-      double v = S[j + (size_t) i * d];
-      for (int c = 0; c < j; c++) v -= R[c + (size_t) j * d] * R[c + (size_t) i * d];
-      R[j + (size_t) i * d] = v / rjj;
-    }
-  }
-  return 1;
 }
 
 /* The M-step of one component for d > 2, as gmm_mstep_general() in the test
@@ -111,7 +92,7 @@ static double mstep_general(int d, const double *s, double nk, double *C, double
       sig[b + (size_t) a * d] = v;
     }
   for (int q = 0; q < nm; q++) C[q] = 0.0;
-  if (!(nk >= 1) || !chol_upper(d, sig, R)) return R_NegInf;
+  if (!(nk >= 1) || !hm_chol_upper(d, sig, R)) return R_NegInf;
   double logdet = 0.0;
   for (int a = 0; a < d; a++) logdet += log(R[a + (size_t) a * d]);
   logdet *= 2.0;

@@ -10,6 +10,7 @@
 #include <Rinternals.h>
 #include <math.h>
 #include <stdlib.h>
+#include "cholesky.h"
 
 /* Max-heap of (distance, index) pairs, the current k nearest candidates. */
 static void heap_sift_down(double *hd, int *hi, int k, int pos) {
@@ -26,40 +27,6 @@ static void heap_sift_down(double *hd, int *hi, int k, int pos) {
 
 static void heap_build(double *hd, int *hi, int k) {
   for (int pos = k / 2 - 1; pos >= 0; pos--) heap_sift_down(hd, hi, k, pos);
-}
-
-/* In-place Cholesky of the d x d matrix a (column-major); 0 on failure. */
-static int cholesky(double *a, int d) {
-  for (int j = 0; j < d; j++) {
-    double s = a[j + j * d];
-    for (int k = 0; k < j; k++) s -= a[j + k * d] * a[j + k * d];
-    if (!(s > 0)) return 0;
-    double l = sqrt(s);
-    a[j + j * d] = l;
-    for (int i = j + 1; i < d; i++) {
-      double t = a[i + j * d];
-      for (int k = 0; k < j; k++) t -= a[i + k * d] * a[j + k * d];
-      a[i + j * d] = t / l;
-    }
-  }
-  return 1;
-}
-
-/* Solve L L' x = b for q right-hand sides (b is d x q, overwritten). */
-static void chol_solve(const double *l, int d, double *b, int q) {
-  for (int c = 0; c < q; c++) {
-    double *x = b + c * d;
-    for (int i = 0; i < d; i++) {
-      double t = x[i];
-      for (int k = 0; k < i; k++) t -= l[i + k * d] * x[k];
-      x[i] = t / l[i + i * d];
-    }
-    for (int i = d - 1; i >= 0; i--) {
-      double t = x[i];
-      for (int k = i + 1; k < d; k++) t -= l[k + i * d] * x[k];
-      x[i] = t / l[i + i * d];
-    }
-  }
 }
 
 SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SEXP eps_) {
@@ -110,6 +77,7 @@ SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SE
   double *sx = (double *) R_alloc(d, sizeof(double));
   double *sxx = (double *) R_alloc((size_t) d * d, sizeof(double));
   double *a = (double *) R_alloc((size_t) d * d, sizeof(double));
+  double *rf = (double *) R_alloc((size_t) d * d, sizeof(double)); /* a's Cholesky factor */
   double *hy = (double *) R_alloc(q, sizeof(double));
   double *beta = (double *) R_alloc(d, sizeof(double));
   for (int i = 0; i < N; i++) seen[i] = -1;
@@ -181,7 +149,7 @@ SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SE
           a[l + j * d] = v;
         }
       for (int j = 0; j < d; j++) a[j + j * d] += lam;
-      ok = cholesky(a, d);
+      ok = hm_chol_upper(d, a, rf);
       if (!ok) lam = lam * 100 + 1e-8 * (tr / d + 1.0);
     }
     if (!ok) error("lwr: local regression is singular at query row %d", r + 1);
@@ -189,7 +157,7 @@ SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SE
      * prediction = sum_m alpha_m y_m with alpha_m = w_m (1 + v'sx / sw - v'xc_m) / sw,
      * v = A^-1 sx (the equivalent kernel), so each neighbour costs O(d + q). */
     for (int j = 0; j < d; j++) beta[j] = sx[j];
-    chol_solve(a, d, beta, 1);
+    hm_chol_solve(rf, d, beta, 1);
     double vsx = 0.0;
     for (int j = 0; j < d; j++) vsx += beta[j] * sx[j];
     for (int c = 0; c < q; c++) hy[c] = 0.0;
