@@ -307,6 +307,8 @@ temperature_sample <- function(x, types, motion) {
 sample_distance <- function(model, sample, distance) {
   if (is.null(sample) || !inherits(model, "grasp_model") || inherits(model, "grasp_model_failed")) return(NULL)
   likelihood <- distance == "likelihood"
+  # (projection_input()'s shape, not projection_input() itself: the sample is
+  # trimmed already by temperature_sample(), and must not be trimmed twice)
   input <- list(x = sample, recs = double_recordings(sample))
   tryCatch(withCallingHandlers({
     project_models(list(model), input, "model", details = FALSE, call = rlang::current_env(),
