@@ -11,6 +11,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include "cholesky.h"
+#include "scratch.h"
 
 /* Max-heap of (distance, index) pairs, the current k nearest candidates. */
 static void heap_sift_down(double *hd, int *hi, int k, int pos) {
@@ -46,11 +47,26 @@ SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SE
   SEXP out = PROTECT(allocMatrix(REALSXP, n, q));
   double *O = REAL(out);
 
+  /* scratch: per coordinate, its order by spread (perm), its spread (var),
+   * the query (qv), a neighbour centred on it (xc), the weighted sums (sx)
+   * and the equivalent kernel's solve (beta); d x d, the weighted cross
+   * products (sxx), the local system (a) and its Cholesky factor (rf); the
+   * heap of the k nearest (hd, hi), the previous query's (prev); the query
+   * that last saw each reference row (seen); the prediction (hy) */
+  double *var, *qv, *xc, *sx, *beta, *sxx, *a, *rf, *XR, *hd, *hy;
+  int *perm, *hi, *prev, *seen;
+  HM_SCRATCH_REALS(d, &var, &qv, &xc, &sx, &beta);
+  HM_SCRATCH_REALS((size_t) d * d, &sxx, &a, &rf);
+  HM_SCRATCH_REALS((size_t) N * d, &XR);
+  HM_SCRATCH_REALS(k, &hd);
+  HM_SCRATCH_REALS(q, &hy);
+  HM_SCRATCH_INTS(d, &perm);
+  HM_SCRATCH_INTS(k, &hi, &prev);
+  HM_SCRATCH_INTS(N, &seen);
+
   /* Reference points stored row-major with the coordinates reordered by
    * decreasing spread, so a partial distance exceeds the current k-th best
    * after few coordinates and the search moves on (partial distance search). */
-  int *perm = (int *) R_alloc(d, sizeof(int));
-  double *var = (double *) R_alloc(d, sizeof(double));
   for (int j = 0; j < d; j++) {
     double m = 0.0, v = 0.0;
     for (int i = 0; i < N; i++) m += X[i + (size_t) j * N];
@@ -64,22 +80,9 @@ SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SE
     while (i >= 0 && var[perm[i]] < var[pj]) { perm[i + 1] = perm[i]; i--; }
     perm[i + 1] = pj;
   }
-  double *XR = (double *) R_alloc((size_t) N * d, sizeof(double));
   for (int i = 0; i < N; i++)
     for (int j = 0; j < d; j++) XR[(size_t) i * d + j] = X[i + (size_t) perm[j] * N];
 
-  double *qv = (double *) R_alloc(d, sizeof(double));
-  double *hd = (double *) R_alloc(k, sizeof(double));
-  int *hi = (int *) R_alloc(k, sizeof(int));
-  int *prev = (int *) R_alloc(k, sizeof(int));
-  int *seen = (int *) R_alloc(N, sizeof(int));
-  double *xc = (double *) R_alloc(d, sizeof(double));
-  double *sx = (double *) R_alloc(d, sizeof(double));
-  double *sxx = (double *) R_alloc((size_t) d * d, sizeof(double));
-  double *a = (double *) R_alloc((size_t) d * d, sizeof(double));
-  double *rf = (double *) R_alloc((size_t) d * d, sizeof(double)); /* a's Cholesky factor */
-  double *hy = (double *) R_alloc(q, sizeof(double));
-  double *beta = (double *) R_alloc(d, sizeof(double));
   for (int i = 0; i < N; i++) seen[i] = -1;
   for (int m = 0; m < k; m++) prev[m] = m;
 
