@@ -109,5 +109,5 @@ draw_kernel_vectors <- function(kern, n) {
   pick <- sample.int(nrow(kern$scores), n, replace = TRUE)
   m <- colMeans(kern$scores)
   X <- kern$scores[pick, , drop = FALSE] - rep(m, each = n)
-  rep(m, each = n) + (X + matrix(stats::rnorm(n * D), n, D) %*% kern$root) / sqrt(1 + kern$bandwidth^2)
+  rep(m, each = n) + (X + rnorm_matrix(n, D) %*% kern$root) / sqrt(1 + kern$bandwidth^2)
 }

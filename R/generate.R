@@ -504,7 +504,7 @@ add_still_phases <- function(got, model) {
 # (lengths and tremor only) gets paths of white tremor about the posture.
 still_paths <- function(ph, p) {
   if (!is.null(ph$rest_path)) return(ph)
-  noise <- function(m) matrix(stats::rnorm(m * p), m, p) * rep(ph$tremor, each = m)
+  noise <- function(m) rnorm_matrix(m, p) * rep(ph$tremor, each = m)
   ph$rest_path <- lapply(ph$rest, noise)
   ph$hold_path <- lapply(ph$hold, noise)
   ph

@@ -3,16 +3,35 @@
 # ..." names neither the argument nor what was meant; these say both, as
 # classed bad_input errors (project.default lives in R/project.R).
 
-# What a fitted-model argument should have been, for the messages: a list of
-# fitted models, or recordings, get a hint of their own.
-wrong_fit_hint <- function(x, fitter) {
+# What each generic needs, and the way to it from recordings (cli markup):
+# recordings are the commonest wrong argument, given where a fit was meant.
+no_method_needs <- list(
+  generate = c(needs = "a {.cls grasp_model} or {.cls grasp_models} fit",
+               from_grasps = "These are recordings: fit first, e.g. {.code generate(fit_grasp_models(x))}."),
+  predict = c(needs = "a fitted classifier",
+              from_grasps = "Fit one first, e.g. {.code predict(fit_grasp_models(train), object)}."),
+  project = c(needs = "a {.cls grasp_model} or {.cls grasp_models} fit",
+              from_grasps = "These are recordings: fit first, e.g. {.code project(fit_grasp_models(x), x)}."),
+  simulate = c(needs = "a fitted {.cls grasp_model}",
+               from_grasps = "Simulate recordings with {.fn simulate_grasps}, or fit a model first: {.code simulate(fit_grasp_model(object))}.")
+)
+
+# The one error of the methods below and project.default(): `verb` needs
+# what no_method_needs says for the argument `arg`, given `x`. Raised as
+# class bad_input naming the argument, on behalf of the generic's caller
+# (`call`).
+abort_no_method <- function(verb, x, arg, call) {
+  need <- no_method_needs[[verb]]
+  given <- "{.obj_type_friendly {x}} (class {.cls {class(x)}})"
+  hint <- NULL
   if (inherits(x, "grasps")) {
-    return(c(i = sprintf("These are recordings: fit first, e.g. {.code %s(x)}.", fitter)))
+    given <- "recordings (a {.cls grasps} set)"
+    hint <- c(i = need[["from_grasps"]])
+  } else if (is.list(x) && length(x) && all(vapply(x, inherits, logical(1), "grasp_model"))) {
+    hint <- c(i = "A list of {.cls grasp_model}s is not a model set: fit one with {.fn fit_grasp_models}.")
   }
-  if (is.list(x) && length(x) && all(vapply(x, inherits, logical(1), "grasp_model"))) {
-    return(c(i = "A list of {.cls grasp_model}s is not a model set: fit one with {.fn fit_grasp_models}."))
-  }
-  NULL
+  hm_abort(c(sprintf("{.fn %s} needs %s for {.arg %s}, not %s.", verb, need[["needs"]], arg, given), hint),
+           "bad_input", argument = arg, call = call)
 }
 
 #' Methods for objects that have none
@@ -35,32 +54,16 @@ NULL
 
 #' @rdname handmotion-wrong-class
 #' @export
-generate.default <- function(x, ...) {
-  hm_abort(c("{.fn generate} needs a {.cls grasp_model} or {.cls grasp_models} fit for {.arg x}, not {.obj_type_friendly {x}} (class {.cls {class(x)}}).",
-             wrong_fit_hint(x, "fit_grasp_models")),
-           "bad_input", argument = "x", call = rlang::caller_env())
-}
+generate.default <- function(x, ...) abort_no_method("generate", x, "x", call = rlang::caller_env())
 
 #' @rdname handmotion-wrong-class
 #' @export
-predict.grasps <- function(object, ...) {
-  hm_abort(c("{.fn predict} needs a fitted classifier for {.arg object}, not recordings (a {.cls grasps} set).",
-             i = "Fit one first, e.g. {.code predict(fit_grasp_models(train), object)}."),
-           "bad_input", argument = "object", call = rlang::caller_env())
-}
+predict.grasps <- function(object, ...) abort_no_method("predict", object, "object", call = rlang::caller_env())
 
 #' @rdname handmotion-wrong-class
 #' @export
-predict.list <- function(object, ...) {
-  hm_abort(c("{.fn predict} has no method for a plain list given as {.arg object}; it needs a fitted model.",
-             wrong_fit_hint(object, "fit_grasp_models")),
-           "bad_input", argument = "object", call = rlang::caller_env())
-}
+predict.list <- function(object, ...) abort_no_method("predict", object, "object", call = rlang::caller_env())
 
 #' @rdname handmotion-wrong-class
 #' @export
-simulate.grasps <- function(object, ...) {
-  hm_abort(c("{.fn simulate} needs a fitted {.cls grasp_model} for {.arg object}, not recordings (a {.cls grasps} set).",
-             i = "Simulate recordings with {.fn simulate_grasps}, or fit a model first: {.code simulate(fit_grasp_model(object))}."),
-           "bad_input", argument = "object", call = rlang::caller_env())
-}
+simulate.grasps <- function(object, ...) abort_no_method("simulate", object, "object", call = rlang::caller_env())

@@ -91,8 +91,7 @@ predict.grasp_model <- function(object, ...) {
 
 #' @export
 project.default <- function(object, new_data, ...) {
-  hm_abort("{.fn project} needs a {.cls grasp_model} or {.cls grasp_models} fit, not {.obj_type_friendly {object}}.",
-           "bad_input", argument = "object", call = rlang::caller_env())
+  abort_no_method("project", object, "object", call = rlang::caller_env())
 }
 
 # The recordings every model of a set projects, made ready once: trimmed

@@ -49,3 +49,24 @@ with_seed <- function(seed, expr) {
   set.seed(seed)
   expr
 }
+
+# An n x p matrix of standard normal draws, taken from the RNG in one call of
+# n * p (filled by column, or by row with `byrow = TRUE`): the simulator's
+# fixed draw order and the generators' noise depend on exactly these draws.
+rnorm_matrix <- function(n, p, byrow = FALSE) {
+  matrix(stats::rnorm(n * p), n, p, byrow = byrow)
+}
+
+# Consecutive draws of one kind for `n` rows, taken in one call of
+# n * sum(widths) and cut into named blocks of columns, in order (a block of
+# width 1 is a vector). runif() and rnorm() (inversion) take each value from
+# the stream in turn, so these are the numbers, in the order, that one call
+# per block would give: the simulator's fixed draw order is written as a few
+# such calls instead of one line per block.
+draw_blocks <- function(draw, n, widths) {
+  x <- matrix(draw(n * sum(widths)), n, sum(widths))
+  first <- cumsum(widths) - widths
+  out <- lapply(seq_along(widths), function(b) x[, first[b] + seq_len(widths[b]), drop = widths[b] == 1L])
+  names(out) <- names(widths)
+  out
+}

@@ -42,7 +42,7 @@ sim_streams <- function(seed) {
 # hand therefore depends on the number of subjects.)
 sim_subject_draws <- function(stream, subjects, k) {
   nd <- length(sim_driven_dofs)
-  x <- with_sim_seed(stream, matrix(stats::rnorm(subjects * (k + nd + 1L)), subjects, byrow = TRUE))
+  x <- with_sim_seed(stream, rnorm_matrix(subjects, k + nd + 1L, byrow = TRUE))
   x[, seq_len(k + nd)] <- sim_whiten(x[, seq_len(k + nd), drop = FALSE])
   list(z = x[, seq_len(k), drop = FALSE], u = x[, k + seq_len(nd), drop = FALSE],
        tempo = x[, k + nd + 1L])
@@ -98,31 +98,21 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   runif <- stats::runif
 
   # ---- all random draws, fixed order --------------------------------------
-  e_subtype <- sim_whiten(matrix(rnorm(S * nd), S, nd, byrow = TRUE))
-  e_tempo <- rnorm(N)
-  e_post <- matrix(rnorm(N * nd), N, nd)
-  e_rest <- matrix(rnorm(N * nd), N, nd)
-  e_ap <- rnorm(N)
-  u_lead <- runif(N)
-  u_hold <- runif(N)
-  e_peak <- rnorm(N)
-  e_on <- matrix(rnorm(N * 5), N, 5)
-  e_pk <- matrix(rnorm(N * 5), N, 5)
+  # (e_*: standard normal, u_*: uniform; each draw_blocks() call is one draw)
+  e_subtype <- sim_whiten(rnorm_matrix(S, nd, byrow = TRUE))
+  dr <- c(draw_blocks(rnorm, N, c(e_tempo = 1, e_post = nd, e_rest = nd, e_ap = 1)),
+          draw_blocks(runif, N, c(u_lead = 1, u_hold = 1)),
+          draw_blocks(rnorm, N, c(e_peak = 1, e_on = 5, e_pk = 5)))
   n_over <- round(p$overlong_fraction * N)
   over_idx <- sample.int(N, n_over)
-  u_mult <- runif(n_over)
-  u_hes <- runif(n_over)
-  u_stall_n <- runif(O)
-  u_stall_pri <- runif(N)
-  u_stall_frac <- runif(N)
-  u_stall_pos <- runif(N)
-  e_dip <- matrix(rnorm(N * 4), N, 4)
-  e_drift_a <- matrix(rnorm(N * 16), N, 16)
-  e_drift_b <- matrix(rnorm(N * 16), N, 16)
+  dr <- c(dr, draw_blocks(runif, n_over, c(u_mult = 1, u_hes = 1)),
+          list(u_stall_n = runif(O)),
+          draw_blocks(runif, N, c(u_stall_pri = 1, u_stall_frac = 1, u_stall_pos = 1)),
+          draw_blocks(rnorm, N, c(e_dip = 4, e_drift_a = 16, e_drift_b = 16)))
 
   # ---- frame counts ---------------------------------------------------------
   sd_tot <- sqrt(p$tempo_subject_sd^2 + p$tempo_trial_sd^2)
-  lt <- p$tempo_subject_sd * subj$tempo[design$subject] + p$tempo_trial_sd * e_tempo
+  lt <- p$tempo_subject_sd * subj$tempo[design$subject] + p$tempo_trial_sd * dr$e_tempo
   lt <- pmin(pmax(lt, -p$tempo_clip * sd_tot), p$tempo_clip * sd_tot) + p$object_tempo * log(design$size)
   target <- p$target_frames$frames[g] * rr
   raw <- target * exp(lt)
@@ -139,10 +129,10 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
     k <- which(is_over)
     j <- match(k, over_idx)
     base <- pmax(round(raw[k]), 3L)
-    mult <- p$overlong_multiplier[1] + u_mult[j] * diff(p$overlong_multiplier)
+    mult <- p$overlong_multiplier[1] + dr$u_mult[j] * diff(p$overlong_multiplier)
     n[k] <- as.integer(pmax(round(mult * med), base + 1L))
     m[k] <- base
-    hes <- u_hes[j] < p$overlong_hesitation_share
+    hes <- dr$u_hes[j] < p$overlong_hesitation_share
     shift[k[hes]] <- n[k[hes]] - base[hes] # otherwise: a long final hold
   }
 
@@ -155,16 +145,16 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
     cand <- which(design$object == o & normal)
     # uniform integer in lo..hi, but never more than a tenth of the object's
     # recordings (a stall is an anomaly, not the rule, even in small designs)
-    cnt <- min(floor(lo + u_stall_n[o] * (hi - lo + 1)), floor(hi), floor(length(cand) / 10))
-    if (cnt > 0) stalled[cand[order(u_stall_pri[cand])][seq_len(cnt)]] <- TRUE
+    cnt <- min(floor(lo + dr$u_stall_n[o] * (hi - lo + 1)), floor(hi), floor(length(cand) / 10))
+    if (cnt > 0) stalled[cand[order(dr$u_stall_pri[cand])][seq_len(cnt)]] <- TRUE
   }
-  frac <- p$stall_fraction[1] + u_stall_frac * diff(p$stall_fraction)
+  frac <- p$stall_fraction[1] + dr$u_stall_frac * diff(p$stall_fraction)
   stall_len[stalled] <- round(frac[stalled] * n[stalled])
   m[stalled] <- n[stalled] - stall_len[stalled]
 
   # ---- phase times on the motion timeline (frames 1..m) ----------------------
-  lead <- (p$lead_frames[1] + u_lead * diff(p$lead_frames)) * rr
-  hold <- (p$hold_frames[1] + u_hold * diff(p$hold_frames)) * rr
+  lead <- (p$lead_frames[1] + dr$u_lead * diff(p$lead_frames)) * rr
+  hold <- (p$hold_frames[1] + dr$u_hold * diff(p$hold_frames)) * rr
   avail <- pmax(m - 1, 1)
   squeeze <- pmin(1, 0.4 * avail / pmax(lead + hold, 1e-9)) # keep >= 60% for the motion
   lead <- lead * squeeze
@@ -172,12 +162,12 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   f0 <- 1 + lead
   fend <- m - hold
   motion <- pmax(fend - f0, 1e-6)
-  pf <- pmin(pmax(p$peak_time[[g]] + p$peak_time_sd * e_peak, 0.2), 0.8)
+  pf <- pmin(pmax(p$peak_time[[g]] + p$peak_time_sd * dr$e_peak, 0.2), 0.8)
   fpk <- f0 + pf * motion
   jit <- p$onset_jitter * p$jitter_scale[[g]] * motion
-  on_f <- pmin(pmax(f0 + jit * e_on, 1), fpk - 0.1 * motion)
-  pk_f <- pmin(pmax(fpk + jit * e_pk, on_f + 0.1 * motion), fend - 0.1 * motion)
-  stall_start <- fpk + u_stall_pos * 0.8 * (fend - fpk)
+  on_f <- pmin(pmax(f0 + jit * dr$e_on, 1), fpk - 0.1 * motion)
+  pk_f <- pmin(pmax(fpk + jit * dr$e_pk, on_f + 0.1 * motion), fend - 0.1 * motion)
+  stall_start <- fpk + dr$u_stall_pos * 0.8 * (fend - fpk)
 
   # ---- postures (recordings x 12 driven DoFs) --------------------------------
   L <- p$loadings
@@ -197,15 +187,15 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
   # idiosyncrasies less room. At rest they are whole (below).
   final <- rep_row(base, N) + p$grasp_variability[[g]] * (type_offset[s_idx, , drop = FALSE] +
     p$subject_type_sd * e_subtype[s_idx, , drop = FALSE] +
-    outer(logsize, p$object_response[g, ]) + p$trial_posture_sd * e_post)
+    outer(logsize, p$object_response[g, ]) + p$trial_posture_sd * dr$e_post)
   # the glove's fit (the subject's own offsets) is there from the first frame;
   # the hand's style factors show partly at rest and fully in the grasp
   rest <- rep_row(p$rest, N) + p$subject_rest_share * factors[s_idx, , drop = FALSE] +
-    own[s_idx, , drop = FALSE] + p$rest_sd * e_rest
+    own[s_idx, , drop = FALSE] + p$rest_sd * dr$e_rest
   # the opening's amplitude: wider for larger objects and varying from grasp
   # to grasp, both scaled by the type's aperture_variability
   amp <- p$aperture_scale[g] *
-    exp(p$aperture_variability[[g]] * (p$object_aperture * logsize + p$aperture_sd * e_ap))
+    exp(p$aperture_variability[[g]] * (p$object_aperture * logsize + p$aperture_sd * dr$e_ap))
   # pre-shaping: on the way, the open hand already leans towards the type's
   # final posture (a share `preshape` of its distance from the mean posture)
   peak <- rest + outer(amp, p$aperture) + rep_row(p$preshape[[g]] * (base - centre), N)
@@ -232,11 +222,11 @@ sim_one_type <- function(g, design, subj, params, rate, overlong) {
       (final[rec, j] - peak[rec, j]) * h2[, f]
   }
   for (k in seq_along(sim_dip_of_pip)) {
-    out[, names(sim_dip_of_pip)[k]] <- p$dip_pip_ratio * out[, sim_dip_of_pip[k]] + p$dip_sd * e_dip[rec, k]
+    out[, names(sim_dip_of_pip)[k]] <- p$dip_pip_ratio * out[, sim_dip_of_pip[k]] + p$dip_sd * dr$e_dip[rec, k]
   }
   u <- (frame - 1) / pmax(n[rec] - 1, 1)
   if (p$drift_sd > 0) {
-    out <- out + p$drift_sd * (e_drift_a[rec, , drop = FALSE] * (u - 0.5) + e_drift_b[rec, , drop = FALSE] * sin(pi * u))
+    out <- out + p$drift_sd * (dr$e_drift_a[rec, , drop = FALSE] * (u - 0.5) + dr$e_drift_b[rec, , drop = FALSE] * sin(pi * u))
   }
   if (p$noise_sd > 0) out <- out + p$noise_sd * stats::rnorm(length(out))
 

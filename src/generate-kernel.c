@@ -22,9 +22,13 @@
 #include <R.h>
 #include <Rinternals.h>
 #include "named-list.h"
+#include "real-of-length.h"
 #include <Rmath.h>
 #include <math.h>
 #include <string.h>
+
+/* the name its argument errors begin with */
+static const char who[] = "generate kernel";
 
 /* the longest recording one draw may have (R: max_generated_frames) */
 #define HM_MAX_GENERATED_FRAMES 100000
@@ -46,13 +50,6 @@ static SEXP list_elt(SEXP list, const char *name) {
   return R_NilValue; /* not reached */
 }
 
-/* a double vector of exactly `len` elements, or an R error */
-static const double *real_of_length(SEXP x, R_xlen_t len, const char *what) {
-  if (TYPEOF(x) != REALSXP || XLENGTH(x) != len)
-    error("generate kernel: %s must be a double array of %lld values", what, (long long) len);
-  return REAL(x);
-}
-
 static mixtures as_mixtures(SEXP smp) {
   mixtures m;
   if (TYPEOF(smp) != VECSXP || TYPEOF(getAttrib(smp, R_NamesSymbol)) != STRSXP)
@@ -63,9 +60,9 @@ static mixtures as_mixtures(SEXP smp) {
   if (m.p == NA_INTEGER || m.k == NA_INTEGER || m.d == NA_INTEGER || m.p < 1 || m.k < 1 || m.d < 1)
     error("generate kernel: sampler sizes p, k, d must be positive");
   const R_xlen_t pk = (R_xlen_t) m.p * m.k;
-  m.cumw = real_of_length(list_elt(smp, "cumw"), pk, "sampler cumw (p x k)");
-  m.mu = real_of_length(list_elt(smp, "mu"), pk * m.d, "sampler mu (p x k x d)");
-  m.root = real_of_length(list_elt(smp, "root"), pk * m.d * m.d, "sampler root (p x k x d x d)");
+  m.cumw = hm_real_of_length(list_elt(smp, "cumw"), pk, who, "sampler cumw (p x k)");
+  m.mu = hm_real_of_length(list_elt(smp, "mu"), pk * m.d, who, "sampler mu (p x k x d)");
+  m.root = hm_real_of_length(list_elt(smp, "root"), pk * m.d * m.d, who, "sampler root (p x k x d x d)");
   return m;
 }
 
@@ -134,9 +131,9 @@ SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP com
   if (md.p != p) error("generate kernel: the sampler has %d DoFs, the basis %d", md.p, p);
   if (mw.p != 1) error("generate kernel: the warp sampler must hold one mixture");
   const double *mu = REAL(mean);
-  const double *P = real_of_length(comps, (R_xlen_t) L * p * k, "basis components (L x p x ncomp)");
-  const double *wmu = real_of_length(warp_mean, L, "warp mean (L)");
-  const double *wP = real_of_length(warp_comps, (R_xlen_t) L * kw, "warp components (L x warp_ncomp)");
+  const double *P = hm_real_of_length(comps, (R_xlen_t) L * p * k, who, "basis components (L x p x ncomp)");
+  const double *wmu = hm_real_of_length(warp_mean, L, who, "warp mean (L)");
+  const double *wP = hm_real_of_length(warp_comps, (R_xlen_t) L * kw, who, "warp components (L x warp_ncomp)");
 
   SEXP alpha = PROTECT(alloc3DArray(REALSXP, n, p, k));
   SEXP beta = PROTECT(allocMatrix(REALSXP, n, kw));
@@ -148,9 +145,9 @@ SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP com
   /* 1. all scores first: the RNG order of the R reference; or the scores
    * drawn in R (the copula model, R/dependence.R) */
   if (alpha_in != R_NilValue || beta_in != R_NilValue) {
-    memcpy(A, real_of_length(alpha_in, (R_xlen_t) n * p * k, "drawn FPC scores (n x p x ncomp)"),
+    memcpy(A, hm_real_of_length(alpha_in, (R_xlen_t) n * p * k, who, "drawn FPC scores (n x p x ncomp)"),
            sizeof(double) * (size_t) n * p * k);
-    memcpy(B, real_of_length(beta_in, (R_xlen_t) n * kw, "drawn warp scores (n x warp_ncomp)"),
+    memcpy(B, hm_real_of_length(beta_in, (R_xlen_t) n * kw, who, "drawn warp scores (n x warp_ncomp)"),
            sizeof(double) * (size_t) n * kw);
   } else {
     int *comp = (int *) R_alloc((size_t) n * p + 1, sizeof(int));
@@ -160,8 +157,8 @@ SEXP hm_generate_batch(SEXP n_, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP com
     PutRNGstate();
   }
   /* per-DoF limits of the smooth limit map (NA: none) */
-  const double *llo = real_of_length(lim_lo, p, "lower limits (p)");
-  const double *lhi = real_of_length(lim_hi, p, "upper limits (p)");
+  const double *llo = hm_real_of_length(lim_lo, p, who, "lower limits (p)");
+  const double *lhi = hm_real_of_length(lim_hi, p, who, "upper limits (p)");
   const double margin = asReal(margin_);
   if (!(margin > 0 && margin < 0.5)) error("generate kernel: the limit margin must be in (0, 0.5)");
   for (int j = 0; j < p; j++)

@@ -47,11 +47,13 @@
  *   hm_gmm_kmeans(Y, centres, iters)
  *     Lloyd iterations as gmm_kmeans() in R, for a list of starting centre
  *     matrices; returns an n x S integer matrix of labels.
- * Scratch memory comes from R_alloc. */
+ * Scratch memory comes from R_alloc (scratch.h). */
 #include <math.h>
 #include <R.h>
 #include <Rinternals.h>
 #include "named-list.h"
+#include "cholesky.h"
+#include "scratch.h"
 
 #define ST_DONE 0
 #define ST_FAILED 1
@@ -67,26 +69,6 @@ static double hm_log1pexp(double x) {
   if (x <= 18.) return log1p(exp(x));
   if (x > 33.3) return x;
   return x + exp(-x);
-}
-
-/* Cholesky factor R (upper triangular, S = R'R, d x d column-major, the
- * lower triangle zero) of the symmetric S; 0 when a pivot is not positive
- * (or NaN), as LAPACK's dpotrf behind chol() fails. */
-static int chol_upper(int d, const double *S, double *R) {
-  for (int q = 0; q < d * d; q++) R[q] = 0.0;
-  for (int j = 0; j < d; j++) {
-    double piv = S[j + (size_t) j * d];
-    for (int c = 0; c < j; c++) piv -= R[c + (size_t) j * d] * R[c + (size_t) j * d];
-    if (!(piv > 0.0)) return 0;
-    double rjj = sqrt(piv);
-    R[j + (size_t) j * d] = rjj;
-    for (int i = j + 1; i < d; i++) {
-      double v = S[j + (size_t) i * d];
-      for (int c = 0; c < j; c++) v -= R[c + (size_t) j * d] * R[c + (size_t) i * d];
-      R[j + (size_t) i * d] = v / rjj;
-    }
-  }
-  return 1;
 }
 
 /* The M-step of one component for d > 2, as gmm_mstep_general() in the test
@@ -111,7 +93,7 @@ static double mstep_general(int d, const double *s, double nk, double *C, double
       sig[b + (size_t) a * d] = v;
     }
   for (int q = 0; q < nm; q++) C[q] = 0.0;
-  if (!(nk >= 1) || !chol_upper(d, sig, R)) return R_NegInf;
+  if (!(nk >= 1) || !hm_chol_upper(d, sig, R)) return R_NegInf;
   double logdet = 0.0;
   for (int a = 0; a < d; a++) logdet += log(R[a + (size_t) a * d]);
   logdet *= 2.0;
@@ -465,46 +447,41 @@ SEXP hm_gmm_em(SEXP P_, SEXP state_, SEXP k_, SEXP max_iter_, SEXP tol_, SEXP lo
   c.two = two;
   c.ns = ns;
   c.floor_logdet = logdet0 + log(1e-8); /* gmm_det_floor */
-  double *psum = (double *) R_alloc(nm, sizeof(double));
+  double *psum, *Pt;
+  HM_SCRATCH_REALS(nm, &psum);
   for (int m = 0; m < nm; m++) {
     double acc = 0;
     for (int i = 0; i < n; i++) acc += P[(size_t) m * n + i];
     psum[m] = acc;
   }
   c.psum = psum;
-  double *Pt = (double *) R_alloc((size_t) n * nm, sizeof(double)); /* point-major P */
+  HM_SCRATCH_REALS((size_t) n * nm, &Pt); /* point-major P */
   for (int i = 0; i < n; i++)
     for (int m = 0; m < nm; m++) Pt[(size_t) i * nm + m] = P[(size_t) m * n + i];
   c.Pt = Pt;
-  c.stats = (double *) R_alloc((size_t) nm * k, sizeof(double));
-  c.C = (double *) R_alloc((size_t) nm * k * S, sizeof(double));
-  c.cn = (double *) R_alloc((size_t) k * S, sizeof(double));
-  c.Dc = (double *) R_alloc((size_t) nm * S, sizeof(double));
-  c.zk = (double *) R_alloc(k, sizeof(double));
-  c.work = (double *) R_alloc((size_t) 2 * d * d, sizeof(double));
-  c.inf_hit = (int *) R_alloc(S, sizeof(int));
 
   /* states: s0 (the cycle's start), s1, s2 (after one and two EM steps), sx
-   * (extrapolated), sn (one EM step from sx) */
-  double *s0 = (double *) R_alloc((size_t) ns * S, sizeof(double));
-  double *s1 = (double *) R_alloc((size_t) ns * S, sizeof(double));
-  double *s2 = (double *) R_alloc((size_t) ns * S, sizeof(double));
-  double *sx = (double *) R_alloc((size_t) ns * S, sizeof(double));
-  double *sn = (double *) R_alloc((size_t) ns * S, sizeof(double));
-  /* the extrapolated parameters stay out of the output slots */
-  double *wx = (double *) R_alloc((size_t) k * S, sizeof(double));
-  double *mux = (double *) R_alloc((size_t) d * k * S, sizeof(double));
-  double *sgx = (double *) R_alloc((size_t) d * d * k * S, sizeof(double));
-  double *llv = (double *) R_alloc(S, sizeof(double));  /* log-lik of the last EM step */
-  double *lle = (double *) R_alloc(S, sizeof(double));  /* of an evaluation */
-  double *step_max = (double *) R_alloc(S, sizeof(double));
-  double *alpha = (double *) R_alloc(S, sizeof(double));
-  int *bad = (int *) R_alloc(S, sizeof(int));
-  int *act = (int *) R_alloc(S, sizeof(int));
-  int *ext = (int *) R_alloc(S, sizeof(int));
-  int *merged = (int *) R_alloc(S, sizeof(int));
-  int *oa = (int *) R_alloc(k, sizeof(int));
-  int *ob = (int *) R_alloc(k, sizeof(int));
+   * (extrapolated), sn (one EM step from sx); the extrapolated parameters
+   * (wx, mux, sgx) stay out of the output slots. Per start: the log-lik of
+   * the last EM step (llv) and of an evaluation (lle), the extrapolation's
+   * step (alpha) and its cap (step_max), why an evaluation failed (bad),
+   * whether it merged into another (merged); the lists of starts still
+   * running (act) and extrapolated (ext); per component, the matching
+   * orders of starts_close() (oa, ob). */
+  double *s0, *s1, *s2, *sx, *sn, *wx, *mux, *sgx, *llv, *lle, *step_max, *alpha;
+  int *bad, *act, *ext, *merged, *oa, *ob;
+  HM_SCRATCH_REALS((size_t) nm * k, &c.stats);
+  HM_SCRATCH_REALS((size_t) nm * k * S, &c.C);
+  HM_SCRATCH_REALS((size_t) nm * S, &c.Dc);
+  HM_SCRATCH_REALS(k, &c.zk);
+  HM_SCRATCH_REALS((size_t) 2 * d * d, &c.work);
+  HM_SCRATCH_REALS((size_t) ns * S, &s0, &s1, &s2, &sx, &sn);
+  HM_SCRATCH_REALS((size_t) k * S, &c.cn, &wx);
+  HM_SCRATCH_REALS((size_t) d * k * S, &mux);
+  HM_SCRATCH_REALS((size_t) d * d * k * S, &sgx);
+  HM_SCRATCH_REALS(S, &llv, &lle, &step_max, &alpha);
+  HM_SCRATCH_INTS(S, &c.inf_hit, &bad, &act, &ext, &merged);
+  HM_SCRATCH_INTS(k, &oa, &ob);
 
   SEXP status = PROTECT(allocVector(INTSXP, S));
   SEXP iters = PROTECT(allocVector(INTSXP, S));
@@ -636,15 +613,18 @@ SEXP hm_gmm_kmeans(SEXP Y_, SEXP centres_, SEXP iters_) {
   const double *Y = REAL(Y_);
   SEXP out = PROTECT(allocMatrix(INTSXP, n, S));
   int *lab_all = INTEGER(out);
-  int *cur = (int *) R_alloc(n, sizeof(int));
+  int *cur;
+  HM_SCRATCH_INTS(n, &cur);
   for (int s = 0; s < S; s++) {
     SEXP c0 = VECTOR_ELT(centres_, s);
     if (!isReal(c0) || !isMatrix(c0) || ncols(c0) != d) error("centres %d must be a double matrix with %d columns", s + 1, d);
     const int k = nrows(c0);
-    double *cen = (double *) R_alloc((size_t) k * d, sizeof(double));
-    double *cn2 = (double *) R_alloc(k, sizeof(double));
-    double *acc = (double *) R_alloc((size_t) k * d, sizeof(double));
-    int *cnt = (int *) R_alloc(k, sizeof(int));
+    /* the centres, their squared norms, the groups' sums and sizes */
+    double *cen, *cn2, *acc;
+    int *cnt;
+    HM_SCRATCH_REALS((size_t) k * d, &cen, &acc);
+    HM_SCRATCH_REALS(k, &cn2);
+    HM_SCRATCH_INTS(k, &cnt);
     for (int q = 0; q < k * d; q++) cen[q] = REAL(c0)[q];
     int *lab = lab_all + (size_t) s * n;
     for (int i = 0; i < n; i++) lab[i] = 0;

@@ -10,6 +10,8 @@
 #include <Rinternals.h>
 #include <math.h>
 #include <stdlib.h>
+#include "cholesky.h"
+#include "scratch.h"
 
 /* Max-heap of (distance, index) pairs, the current k nearest candidates. */
 static void heap_sift_down(double *hd, int *hi, int k, int pos) {
@@ -26,40 +28,6 @@ static void heap_sift_down(double *hd, int *hi, int k, int pos) {
 
 static void heap_build(double *hd, int *hi, int k) {
   for (int pos = k / 2 - 1; pos >= 0; pos--) heap_sift_down(hd, hi, k, pos);
-}
-
-/* In-place Cholesky of the d x d matrix a (column-major); 0 on failure. */
-static int cholesky(double *a, int d) {
-  for (int j = 0; j < d; j++) {
-    double s = a[j + j * d];
-    for (int k = 0; k < j; k++) s -= a[j + k * d] * a[j + k * d];
-    if (!(s > 0)) return 0;
-    double l = sqrt(s);
-    a[j + j * d] = l;
-    for (int i = j + 1; i < d; i++) {
-      double t = a[i + j * d];
-      for (int k = 0; k < j; k++) t -= a[i + k * d] * a[j + k * d];
-      a[i + j * d] = t / l;
-    }
-  }
-  return 1;
-}
-
-/* Solve L L' x = b for q right-hand sides (b is d x q, overwritten). */
-static void chol_solve(const double *l, int d, double *b, int q) {
-  for (int c = 0; c < q; c++) {
-    double *x = b + c * d;
-    for (int i = 0; i < d; i++) {
-      double t = x[i];
-      for (int k = 0; k < i; k++) t -= l[i + k * d] * x[k];
-      x[i] = t / l[i + i * d];
-    }
-    for (int i = d - 1; i >= 0; i--) {
-      double t = x[i];
-      for (int k = i + 1; k < d; k++) t -= l[k + i * d] * x[k];
-      x[i] = t / l[i + i * d];
-    }
-  }
 }
 
 SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SEXP eps_) {
@@ -79,11 +47,26 @@ SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SE
   SEXP out = PROTECT(allocMatrix(REALSXP, n, q));
   double *O = REAL(out);
 
+  /* scratch: per coordinate, its order by spread (perm), its spread (var),
+   * the query (qv), a neighbour centred on it (xc), the weighted sums (sx)
+   * and the equivalent kernel's solve (beta); d x d, the weighted cross
+   * products (sxx), the local system (a) and its Cholesky factor (rf); the
+   * heap of the k nearest (hd, hi), the previous query's (prev); the query
+   * that last saw each reference row (seen); the prediction (hy) */
+  double *var, *qv, *xc, *sx, *beta, *sxx, *a, *rf, *XR, *hd, *hy;
+  int *perm, *hi, *prev, *seen;
+  HM_SCRATCH_REALS(d, &var, &qv, &xc, &sx, &beta);
+  HM_SCRATCH_REALS((size_t) d * d, &sxx, &a, &rf);
+  HM_SCRATCH_REALS((size_t) N * d, &XR);
+  HM_SCRATCH_REALS(k, &hd);
+  HM_SCRATCH_REALS(q, &hy);
+  HM_SCRATCH_INTS(d, &perm);
+  HM_SCRATCH_INTS(k, &hi, &prev);
+  HM_SCRATCH_INTS(N, &seen);
+
   /* Reference points stored row-major with the coordinates reordered by
    * decreasing spread, so a partial distance exceeds the current k-th best
    * after few coordinates and the search moves on (partial distance search). */
-  int *perm = (int *) R_alloc(d, sizeof(int));
-  double *var = (double *) R_alloc(d, sizeof(double));
   for (int j = 0; j < d; j++) {
     double m = 0.0, v = 0.0;
     for (int i = 0; i < N; i++) m += X[i + (size_t) j * N];
@@ -97,21 +80,9 @@ SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SE
     while (i >= 0 && var[perm[i]] < var[pj]) { perm[i + 1] = perm[i]; i--; }
     perm[i + 1] = pj;
   }
-  double *XR = (double *) R_alloc((size_t) N * d, sizeof(double));
   for (int i = 0; i < N; i++)
     for (int j = 0; j < d; j++) XR[(size_t) i * d + j] = X[i + (size_t) perm[j] * N];
 
-  double *qv = (double *) R_alloc(d, sizeof(double));
-  double *hd = (double *) R_alloc(k, sizeof(double));
-  int *hi = (int *) R_alloc(k, sizeof(int));
-  int *prev = (int *) R_alloc(k, sizeof(int));
-  int *seen = (int *) R_alloc(N, sizeof(int));
-  double *xc = (double *) R_alloc(d, sizeof(double));
-  double *sx = (double *) R_alloc(d, sizeof(double));
-  double *sxx = (double *) R_alloc((size_t) d * d, sizeof(double));
-  double *a = (double *) R_alloc((size_t) d * d, sizeof(double));
-  double *hy = (double *) R_alloc(q, sizeof(double));
-  double *beta = (double *) R_alloc(d, sizeof(double));
   for (int i = 0; i < N; i++) seen[i] = -1;
   for (int m = 0; m < k; m++) prev[m] = m;
 
@@ -181,7 +152,7 @@ SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SE
           a[l + j * d] = v;
         }
       for (int j = 0; j < d; j++) a[j + j * d] += lam;
-      ok = cholesky(a, d);
+      ok = hm_chol_upper(d, a, rf);
       if (!ok) lam = lam * 100 + 1e-8 * (tr / d + 1.0);
     }
     if (!ok) error("lwr: local regression is singular at query row %d", r + 1);
@@ -189,7 +160,7 @@ SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k_, SEXP ridge_, SE
      * prediction = sum_m alpha_m y_m with alpha_m = w_m (1 + v'sx / sw - v'xc_m) / sw,
      * v = A^-1 sx (the equivalent kernel), so each neighbour costs O(d + q). */
     for (int j = 0; j < d; j++) beta[j] = sx[j];
-    chol_solve(a, d, beta, 1);
+    hm_chol_solve(rf, d, beta, 1);
     double vsx = 0.0;
     for (int j = 0; j < d; j++) vsx += beta[j] * sx[j];
     for (int c = 0; c < q; c++) hy[c] = 0.0;

@@ -1,56 +1,54 @@
 /* Registration of the package's native routines (R_registerRoutines), so that
  * .Call() entries are looked up by symbol and R CMD check finds them declared.
- * Each routine's prototype is declared here; add new ones to call_methods. */
+ * Each routine is named once, with its number of arguments, in HM_ROUTINES:
+ * its prototype and its entry in the table are both made from that line, so
+ * the two cannot disagree. Add new routines there. */
 #include <R.h>
 #include <Rinternals.h>
 #include <R_ext/Rdynload.h>
 
-SEXP hm_dtw_pair(SEXP x, SEXP y, SEXP window); /* dtw.c */
-SEXP hm_dtw_batch(SEXP recs, SEXP tmpl, SEXP window, SEXP full); /* dtw.c */
-SEXP hm_dtw_pattern(SEXP x, SEXP y, SEXP table); /* dtw-slope.c */
-SEXP hm_lwr_predict(SEXP ref_x, SEXP ref_y, SEXP query, SEXP k, SEXP ridge, SEXP eps); /* handover-lwr.c */
-SEXP hm_generate_batch(SEXP n, SEXP dof_smp, SEXP warp_smp, SEXP mean, SEXP comps,
-                       SEXP warp_mean, SEXP warp_comps, SEXP do_warp, SEXP dofs, SEXP alpha_in,
-                       SEXP beta_in, SEXP lim_lo, SEXP lim_hi, SEXP margin); /* generate-kernel.c */
-SEXP hm_gmm_em(SEXP P, SEXP state, SEXP k, SEXP max_iter, SEXP tol, SEXP logdet0); /* gmm-em.c */
-SEXP hm_gmm_kmeans(SEXP Y, SEXP centres, SEXP iters); /* gmm-em.c */
-SEXP hm_shape_features(SEXP recs, SEXP k); /* dba-prep.c */
-SEXP hm_linear_mean(SEXP recs, SEXP warps, SEXP which); /* dba-prep.c */
-SEXP hm_stall_lengths(SEXP warps); /* dba-prep.c */
-SEXP hm_copula_draw(SEXP n, SEXP root, SEXP grid, SEXP quantiles); /* copula-draw.c */
-SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SEXP comps,
-                      SEXP weights, SEXP norm_weights); /* project-kernel.c */
-SEXP hm_project_warped(SEXP recs, SEXP cols, SEXP u, SEXP mean, SEXP comps, SEXP weights,
-                       SEXP norm_weights, SEXP mode); /* project-kernel.c */
-SEXP hm_lda_w2(SEXP F, SEXP rows, SEXP cls, SEXP means, SEXP inv_s); /* lda-moments.c */
-SEXP hm_mmd_permutations(SEXP K, SEXP n, SEXP perms); /* mmd-permutations.c */
-SEXP hm_channel_ranges(SEXP recs, SEXP p); /* channel-ranges.c */
-SEXP hm_plain_text(SEXP files, SEXP sizes); /* plain-text.c */
-SEXP hm_motion_base(SEXP X, SEXP rest_n, SEXP lag); /* motion-signals.c */
-SEXP hm_kernel_loo_lse(SEXP D2, SEXP grid); /* kernel-loo.c */
-SEXP hm_kernel_score_lse(SEXP A, SEXP rs, SEXP cs, SEXP h); /* kernel-score.c */
-SEXP hm_stack_values(SEXP recs, SEXP dofs); /* stack-values.c */
+/* X(name, number of SEXP arguments), one line per source file */
+#define HM_ROUTINES(X)                                                     \
+  X(hm_dtw_pair, 3) X(hm_dtw_batch, 4)                       /* dtw.c */   \
+  X(hm_dtw_pattern, 3)                                 /* dtw-slope.c */   \
+  X(hm_lwr_predict, 6)                              /* handover-lwr.c */   \
+  X(hm_generate_batch, 14)                       /* generate-kernel.c */   \
+  X(hm_gmm_em, 6) X(hm_gmm_kmeans, 3)                     /* gmm-em.c */   \
+  X(hm_shape_features, 2) X(hm_linear_mean, 3) X(hm_stall_lengths, 1)      \
+                                                        /* dba-prep.c */   \
+  X(hm_copula_draw, 4)                               /* copula-draw.c */   \
+  X(hm_project_batch, 8) X(hm_project_warped, 8)  /* project-kernel.c */   \
+  X(hm_lda_w2, 5)                                    /* lda-moments.c */   \
+  X(hm_mmd_permutations, 3)                     /* mmd-permutations.c */   \
+  X(hm_channel_ranges, 2)                         /* channel-ranges.c */   \
+  X(hm_plain_text, 2)                                 /* plain-text.c */   \
+  X(hm_motion_base, 3)                            /* motion-signals.c */   \
+  X(hm_kernel_loo_lse, 2)                             /* kernel-loo.c */   \
+  X(hm_kernel_score_lse, 4)                         /* kernel-score.c */   \
+  X(hm_stack_values, 2)                             /* stack-values.c */
 
+/* the argument lists of n SEXPs */
+#define HM_ARGS_1 SEXP
+#define HM_ARGS_2 HM_ARGS_1, SEXP
+#define HM_ARGS_3 HM_ARGS_2, SEXP
+#define HM_ARGS_4 HM_ARGS_3, SEXP
+#define HM_ARGS_5 HM_ARGS_4, SEXP
+#define HM_ARGS_6 HM_ARGS_5, SEXP
+#define HM_ARGS_7 HM_ARGS_6, SEXP
+#define HM_ARGS_8 HM_ARGS_7, SEXP
+#define HM_ARGS_9 HM_ARGS_8, SEXP
+#define HM_ARGS_10 HM_ARGS_9, SEXP
+#define HM_ARGS_11 HM_ARGS_10, SEXP
+#define HM_ARGS_12 HM_ARGS_11, SEXP
+#define HM_ARGS_13 HM_ARGS_12, SEXP
+#define HM_ARGS_14 HM_ARGS_13, SEXP
+
+#define HM_PROTOTYPE(name, n) SEXP name(HM_ARGS_##n);
+HM_ROUTINES(HM_PROTOTYPE)
+
+#define HM_ENTRY(name, n) {#name, (DL_FUNC) &name, n},
 static const R_CallMethodDef call_methods[] = {
-  {"hm_dtw_pair", (DL_FUNC) &hm_dtw_pair, 3}, {"hm_dtw_batch", (DL_FUNC) &hm_dtw_batch, 4},
-  {"hm_dtw_pattern", (DL_FUNC) &hm_dtw_pattern, 3},
-  {"hm_lwr_predict", (DL_FUNC) &hm_lwr_predict, 6},
-  {"hm_generate_batch", (DL_FUNC) &hm_generate_batch, 14},
-  {"hm_gmm_em", (DL_FUNC) &hm_gmm_em, 6}, {"hm_gmm_kmeans", (DL_FUNC) &hm_gmm_kmeans, 3},
-  {"hm_shape_features", (DL_FUNC) &hm_shape_features, 2},
-  {"hm_linear_mean", (DL_FUNC) &hm_linear_mean, 3},
-  {"hm_stall_lengths", (DL_FUNC) &hm_stall_lengths, 1},
-  {"hm_project_batch", (DL_FUNC) &hm_project_batch, 8},
-  {"hm_project_warped", (DL_FUNC) &hm_project_warped, 8},
-  {"hm_copula_draw", (DL_FUNC) &hm_copula_draw, 4},
-  {"hm_lda_w2", (DL_FUNC) &hm_lda_w2, 5},
-  {"hm_mmd_permutations", (DL_FUNC) &hm_mmd_permutations, 3},
-  {"hm_channel_ranges", (DL_FUNC) &hm_channel_ranges, 2},
-  {"hm_plain_text", (DL_FUNC) &hm_plain_text, 2},
-  {"hm_motion_base", (DL_FUNC) &hm_motion_base, 3},
-  {"hm_kernel_loo_lse", (DL_FUNC) &hm_kernel_loo_lse, 2},
-  {"hm_kernel_score_lse", (DL_FUNC) &hm_kernel_score_lse, 4},
-  {"hm_stack_values", (DL_FUNC) &hm_stack_values, 2},
+  HM_ROUTINES(HM_ENTRY)
   {NULL, NULL, 0}
 };
 

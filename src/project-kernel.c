@@ -17,11 +17,10 @@
 #include <math.h>
 #include <stdlib.h>
 #include "named-list.h"
+#include "real-of-length.h"
 
-static void need_real(SEXP x, R_xlen_t len, const char *what) {
-  if (TYPEOF(x) != REALSXP || XLENGTH(x) != len)
-    error("project kernel: %s must be a double vector of %lld values", what, (long long) len);
-}
+/* the name its argument errors begin with */
+static const char who[] = "project kernel";
 
 /* What the projection of one DoF needs, once per DoF: its mean curve,
  * phi_c(s) w_s (the scores are plain dot products with it), phi_c(s) nw_s
@@ -114,9 +113,9 @@ static void template_dims(SEXP mean, SEXP comps, SEXP weights, SEXP norm_weights
     error("project kernel: mean must be an L x p matrix");
   const int L = INTEGER(mdim)[0];
   if (L < 1) error("project kernel: the template has no points");
-  need_real(mean, (R_xlen_t) L * p, "mean (L x p)");
-  need_real(weights, (R_xlen_t) L * p, "weights (L x p)");
-  need_real(norm_weights, (R_xlen_t) L * p, "norm weights (L x p)");
+  hm_real_of_length(mean, (R_xlen_t) L * p, who, "mean (L x p)");
+  hm_real_of_length(weights, (R_xlen_t) L * p, who, "weights (L x p)");
+  hm_real_of_length(norm_weights, (R_xlen_t) L * p, who, "norm weights (L x p)");
   if (TYPEOF(comps) != REALSXP || XLENGTH(comps) % ((R_xlen_t) L * p) != 0)
     error("project kernel: comps must be an L x p x k double array");
   const int k = (int) (XLENGTH(comps) / ((R_xlen_t) L * p));
@@ -137,7 +136,7 @@ SEXP hm_project_batch(SEXP values, SEXP rows, SEXP nxt, SEXP frac, SEXP mean, SE
   if (TYPEOF(rows) != INTSXP || TYPEOF(nxt) != INTSXP || XLENGTH(nxt) != Ln || Ln % L != 0)
     error("project kernel: rows and nxt must be integer vectors of L x n indices");
   const R_xlen_t n = Ln / L;
-  need_real(frac, Ln, "f");
+  hm_real_of_length(frac, Ln, who, "f");
   const int *ri = INTEGER(rows), *ni = INTEGER(nxt);
   for (R_xlen_t t = 0; t < Ln; t++) {
     if (ri[t] < 1 || ri[t] > N || ni[t] < 1 || ni[t] > N)
@@ -199,7 +198,7 @@ SEXP hm_project_warped(SEXP recs, SEXP cols, SEXP u, SEXP mean, SEXP comps, SEXP
   const int *cj = INTEGER(cols);
   int L, k;
   template_dims(mean, comps, weights, norm_weights, p, &L, &k);
-  need_real(u, L, "u");
+  hm_real_of_length(u, L, who, "u");
   const int mode = asInteger(mode_);
   if (mode < 0 || mode > 2) error("project kernel: mode must be 0, 1 or 2");
   /* every recording checked before any work */

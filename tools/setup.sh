@@ -29,28 +29,34 @@ DEBIAN_PKGS=(
 # where these cannot be installed, so a failure here does not stop the set-up.
 OPTIONAL_PKGS=(chromium ffmpeg)
 
-missing=()
-for p in "${DEBIAN_PKGS[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
+# The given Debian packages that dpkg does not have installed, one a line.
+missing_debian() {
+  local p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || echo "$p"
+  done
+}
+# apt-get install of the given packages, as root or through sudo; fails if
+# the update or the install fails (the caller decides whether that stops it).
+apt_install() {
+  local sudo=""
+  [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq &&
+    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "$@"
+}
+
+mapfile -t missing < <(missing_debian "${DEBIAN_PKGS[@]}")
 if [ ${#missing[@]} -gt 0 ]; then
   echo "setup: installing ${#missing[@]} Debian packages: ${missing[*]}"
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+  apt_install "${missing[@]}"
 else
   echo "setup: Debian packages already present"
 fi
-opt_missing=()
-for p in "${OPTIONAL_PKGS[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || opt_missing+=("$p")
-done
+mapfile -t opt_missing < <(missing_debian "${OPTIONAL_PKGS[@]}")
 if [ ${#opt_missing[@]} -gt 0 ]; then
   echo "setup: installing optional Debian packages: ${opt_missing[*]}"
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-  { $SUDO apt-get update -qq && DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q \
-      --no-install-recommends "${opt_missing[@]}"; } \
-    || echo "setup: could not install ${opt_missing[*]}; browser tests and MP4 export will be skipped"
+  apt_install "${opt_missing[@]}" ||
+    echo "setup: could not install ${opt_missing[*]}; browser tests and MP4 export will be skipped"
 fi
 
 # CRAN-only packages, in dependency order; installed only when absent.

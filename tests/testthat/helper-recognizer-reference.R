@@ -2,26 +2,10 @@
 # before issue 36: residuals and their cross product on the rows themselves
 # (the fit now works from moments that add over folds), and every recording's
 # first H frames in an n x H x p array. The new paths must agree with them.
-shrink_correlation_reference <- function(Z) {
-  n <- nrow(Z)
-  D <- ncol(Z)
-  if (D < 2L) return(list(cor = diag(D), lambda = 0))
-  X <- Z - rep(colMeans(Z), each = n)
-  X <- X / rep(sqrt(colSums(X^2) / (n - 1)), each = n)
-  X[!is.finite(X)] <- 0
-  R <- crossprod(X) / (n - 1)
-  X2 <- X^2
-  w2_off <- sum(rowSums(X2)^2) - sum(X2^2)
-  off <- row(R) != col(R)
-  wbar2_off <- ((n - 1) / n)^2 * sum(R[off]^2)
-  var_off <- n / (n - 1)^3 * (w2_off - n * wbar2_off)
-  lambda <- var_off / sum(R[off]^2)
-  lambda <- min(1, max(0, if (is.finite(lambda)) lambda else 1))
-  out <- (1 - lambda) * R
-  diag(out) <- 1
-  list(cor = out, lambda = lambda)
-}
-
+# The shrinkage of the residuals' correlation is the package's
+# shrink_correlation(), which works on the rows themselves as the old fit did
+# and is checked pair by pair against Schafer and Strimmer's definition in
+# test-dependence.R; a copy of it here would only repeat that check.
 fit_shrunk_lda_reference <- function(F, y, prior = c("equal", "data")) {
   prior <- match.arg(prior)
   y <- droplevels(as.factor(y))
@@ -32,7 +16,7 @@ fit_shrunk_lda_reference <- function(F, y, prior = c("equal", "data")) {
   R <- F - means[as.integer(y), , drop = FALSE]
   sd <- sqrt(colSums(R^2) / max(n - K, 1))
   sd[!is.finite(sd) | sd < 1e-8 * max(sd, 1e-300)] <- 1
-  sh <- shrink_correlation_reference(sweep(R, 2, sd, "/"))
+  sh <- handmotion:::shrink_correlation(sweep(R, 2, sd, "/"))
   proj <- sweep(handmotion:::inverse_root(sh$cor), 1, sd, "/")
   centres <- means %*% proj
   log_prior <- if (prior == "equal") rep(-log(K), K) else log(counts / n)
