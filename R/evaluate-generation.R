@@ -285,10 +285,15 @@ generation_overall <- function(out) {
   keys <- unique(out[c("model", "metric")])
   rows <- lapply(seq_len(nrow(keys)), function(i) {
     d <- out[out$model == keys$model[i] & out$metric == keys$metric[i], ]
+    # (over the types where the measure is defined: a type whose held-out
+    # part is one recording has no MMD, and with it every fold of a small
+    # set had no overall MMD at all, where the rows by type average the
+    # folds that have one)
     f <- if (d$metric[1] %in% c("recognised", "outside_limits")) mean else stats::median
+    g <- function(v) f(v[is.finite(v)])
     data.frame(model = d$model[1], grasp = "overall", family = d$family[1], metric = d$metric[1],
-               generated = f(d$generated), baseline = f(d$baseline), better = d$better[1],
-               ratio = f(d$generated) / f(d$baseline), stringsAsFactors = FALSE)
+               generated = g(d$generated), baseline = g(d$baseline), better = d$better[1],
+               ratio = g(d$generated) / g(d$baseline), stringsAsFactors = FALSE)
   })
   do.call(rbind, rows)
 }

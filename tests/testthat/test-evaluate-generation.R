@@ -201,3 +201,16 @@ test_that("the default compares every training recording: the same MMD in expect
   some <- generation_real_samples(ho, tr, "x", n = 5, reps = 3, overlong = NULL)
   expect_equal(vapply(some$training, length, integer(1)), rep(5L, 3))
 })
+
+test_that("the overall row is over the types where a measure is defined", {
+  out <- data.frame(model = "m", grasp = c("a", "b", "c"), family = "discriminability", metric = "mmd",
+                    generated = c(1, NaN, 3), baseline = c(2, NaN, 2), better = "lower",
+                    ratio = c(0.5, NaN, 1.5), stringsAsFactors = FALSE)
+  ov <- generation_overall(out)
+  expect_equal(ov$generated, 2)
+  expect_equal(ov$baseline, 2)
+  expect_equal(ov$ratio, 1)
+  # a type-less measure stays undefined rather than becoming 0 or an error
+  out$generated <- NaN
+  expect_true(is.na(generation_overall(out)$generated))
+})
