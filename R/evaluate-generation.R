@@ -180,12 +180,16 @@ evaluate_generation_impl <- function(sets, held_out, training, types, n, reps, o
   # RNG stream drawn from the evaluation's seeded stream (as
   # fit_grasp_models() gives each type its own): the same figures under any
   # plan, and two workers share the types (the measures were all in the
-  # main process: 9 s of the default data's evaluation of two sets)
+  # main process: 12-13 s of the default data's evaluation of two sets;
+  # 7-8 s on two workers)
   streams <- element_streams(sample.int(.Machine$integer.max, 1L), length(types))
+  # (the models are stripped only to travel: in this process the copy would
+  # cost about a second and save nothing)
+  light <- if (ships_to_workers()) strip_for_generation else identity
   elements <- lapply(types, function(ty) {
     list(type = ty, held_out = held_out[held_out$meta$grasp == ty],
          training = training[training$meta$grasp == ty],
-         models = lapply(sets, function(s) strip_for_generation(s[[ty]])))
+         models = lapply(sets, function(s) light(s[[ty]])))
   })
   p <- hm_progressor(length(types))
   res <- future_map_chunks(elements, generation_type_rows,

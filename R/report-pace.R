@@ -10,22 +10,18 @@
 # (how much of a core one process gets). The load average says how many
 # other jobs want the cores, which matters for the steps on two workers.
 
-# The calibration's CPU seconds (the two timed rounds below, installed -O2
-# build) on the machine and in the conditions report_step_model's seconds
-# stand for: the 2-core development machine, quiet, where `make demo` took
-# 4.9 min (issue 42; the model is scaled to that run). A quiet machine
-# cannot be had while other sessions run, so the figure is the
-# calibration's lowest CPU time measured with a full core (CPU = elapsed,
-# the process was not waiting): 0.219 s in three rounds of 0.219-0.230 s at
-# load 5.3 (issue 42). It is not the same-process ratio to the report's
-# steps: at load 10, six rounds took 0.24-0.37 s and the report's first four
-# steps 16.3 s of CPU where the model says 21.2 s (0.31 x 21.2 / 16.3 =
-# 0.40 s), because the model's seconds are a quiet run's elapsed seconds,
-# waits for workers and pandoc included, and the load inflates the tiny
-# calibration's CPU time more than the long fits'. (The earlier 0.15 s was a
-# busy figure divided by a guessed 2.2; with it the first estimate said 2-5
-# times the time taken: 4.9 min for a run of 2.4 min, 75 s for one of 14 s.)
-pace_reference_cpu <- 0.22
+# The calibration's CPU seconds (the quickest of its timed rounds, two
+# rounds' worth, installed -O2 build) on the machine and in the conditions
+# report_step_model's seconds stand for: the 2-core development machine,
+# quiet. Set from one quiet `make demo` (issue 42, 2026-11-28): its
+# calibration read 0.186 s and the report took 5.3 min, where the model
+# (scaled to an earlier quiet run of 4.9 min) says 4.9 min at the
+# reference pace, so the reference is 0.186 x 4.9 / 5.3 = 0.17 s; by hand,
+# fresh sessions on the same quiet machine read 0.171-0.187 s. (The earlier
+# 0.22 s was a single timed pair's lowest reading at load 5.3. With it, a
+# quiet run whose single pair read 0.31 s said 9.8 min and took 5.9, and
+# the six rounds' 0.186 s said 4.1 min for the run of 5.3.)
+pace_reference_cpu <- 0.17
 
 # The pace now: `cpu` and `elapsed` seconds of the calibration, `speed`
 # (reference CPU / CPU: above 1 a faster core), `share` (CPU / elapsed:
