@@ -86,6 +86,7 @@ cpu_busy_seconds <- function() {
   start <- read()
   list(after = function() read() - start)
 }
+
 # The 1-minute load average (Linux, macOS via /proc where mounted), or NA.
 load_average <- function() {
   tryCatch(scan("/proc/loadavg", n = 1L, quiet = TRUE), error = function(e) NA_real_,
@@ -123,7 +124,7 @@ pace_factors <- function(pace, workers = 1L) {
 # and on a quiet machine the workers' steps were planned 1.5 times as slow.
 pace_other_demand <- function(pace) {
   if (pace$share < 0.95) return(pace$cores / pace$share - 1)
-  others <- pace$others %||% NA_real_
+  others <- pace$others
   known <- if (!is.na(others)) others else if (is.na(pace$load)) 0 else pace$load
   min(max(0, known), pace$cores - 1)
 }
@@ -132,14 +133,14 @@ pace_other_demand <- function(pace) {
 # less than 80% of a core, or other jobs use most of the cores ours do not
 # need (measured, `others`; where it is not, the load average fills them).
 pace_busy <- function(pace) {
-  others <- pace$others %||% NA_real_
+  others <- pace$others
   pace$share < 0.8 ||
     if (!is.na(others)) others >= 0.8 * (pace$cores - 1) else isTRUE(pace$load >= pace$cores)
 }
 
 # The words of the first estimate's note on the machine.
 pace_text <- function(pace) {
-  others <- pace$others %||% NA_real_
+  others <- pace$others
   load <- if (!is.na(others)) {
     sprintf("other jobs using %.1f of %d cores, ", max(0, others), pace$cores)
   } else if (!is.na(pace$load)) {
