@@ -31,31 +31,29 @@ report_chunk_signal <- function(label) {
 
 # The work of each step, as a cost model of the design (issue 36: the time
 # left is estimated from measured rates, not from fixed shares of one
-# design): `cpu` is the step's seconds on the default design (30 subjects x
-# 33 types, leave-one-subject-out) on one worker of the reference machine,
-# quiet (the 2-core machine the package is developed on), from its start to
-# the next step's (so with the tables and figures drawn in between: most of
-# them after the frame-PCA step); the steps' shares are bench/bench-eta.R's
-# (`make demo`'s run, the installed -O2 build; BENCH_ETA_EVENTS, the steps'
-# start times), parallel steps counted twice (the FPCA folds: 30 refits of
-# the 33 models with one Gaussian, saved for the weighted FPCA folds, which
-# read them, are more than half of it). Issue 42 measured `make demo` at
-# 4.9 min on that machine, quiet, where these shares' first version (a 137 s
-# run) said 2.3 min: the report has grown since, so the shares are scaled
-# by 2.14 to that measured total (a fresh bench-eta.R run to re-measure
-# them per step did not finish on the machine at load 20). At another
-# machine's pace (machine_pace()) report_step_costs() scales them. `scale`
-# says how a step grows with the design (recordings N, types T, folds F)
-# beyond its `fixed` CPU seconds, which a design of any size pays (forking
-# the workers, first calls, the figures' set-up): bench-eta.R's quick run
-# (4 subjects x 3 types, 2 folds: 52 s of CPU where the model without them
-# said 34 s of time, the run took 198 s at load 14) at its calibration's
-# pace (0.32 s, 2.16 times the reference CPU),
-# and `parallel` whether its folds or types share the future workers. While
-# the report runs, report_eta() rescales the seconds by the measured rates:
-# the time the finished steps took against what the model predicted for
-# them (per kind of step), and within a step the rate of its own progress
-# steps (folds, types, horizons, chunks).
+# design): `cpu` is the step's CPU seconds (the main process and the
+# workers together) on the default design (30 subjects x 33 types,
+# leave-one-subject-out) on the reference machine, quiet (the 2-core machine
+# the package is developed on), from its start to the next step's (so with
+# the tables and figures drawn in between: most of them after the frame-PCA
+# step). They are bench/bench-eta.R's `cpu = c(...)` line (`make demo`'s
+# run, the installed -O2 build, 2 workers) scaled from that run's calibrated
+# pace to the reference one (pace_reference_cpu): issue 42 re-measured them
+# when the report's steps had drifted 2-4x from an older table (the
+# subclass discriminant made the LDA folds 4x dearer), which left the time
+# left 37-71% short from a fifth of the run on although the first estimate
+# was right. At another machine's pace (machine_pace())
+# report_step_costs() scales them. `scale` says how a step grows with the
+# design (recordings N, types T, folds F) beyond its `fixed` CPU seconds,
+# which a design of any size pays (forking the workers, first calls, the
+# figures' set-up): bench-eta.R's quick run (4 subjects x 3 types, 2 folds)
+# at its calibration's pace. `parallel` says whether its folds, types or
+# repetitions share the future workers (a parallel step's elapsed time is
+# its CPU over the workers). While the report runs, report_eta() rescales
+# the seconds by the measured rates: the time the finished steps took
+# against what the model predicted for them (per kind of step), and within
+# a step the rate of its own progress steps (folds, types, horizons,
+# chunks).
 report_step_model <- data.frame(
   step = c("simulate the data", "fit the grasp models", "classify by FPCA distance (in-sample)",
            "fit last-frame PCA", "classify by last-frame PCA (in-sample)", "generate three grasps per type",
@@ -68,13 +66,13 @@ report_step_model <- data.frame(
            "recognition: weighted FPCA distance (learn weights)", "recognition: shrinkage LDA (fit)",
            "recognition: classify the held-out subjects", "recognition: early recognition, held out by subject",
            "the figures and the page"),
-  cpu = c(3.0, 14.1, 1.7, 2.4, 0.6, 0.2, 272, 66, 64, 41, 1.9, 15, 10.7, 8.8, 12.8, 12.6, 0.2, 0.6, 3.9,
-          8.6, 3.0),
+  cpu = c(1.0, 24.1, 0.93, 1.2, 0.37, 0.1, 153, 37, 57, 127, 0.93, 6.6, 23.3, 32.3, 32.9, 26.3, 0.2, 4.2,
+          4.5, 17.8, 2.4),
   fixed = c(0.1, 1.9, 0.05, 0.05, 0, 0, 2.7, 0.9, 3.0, 1.1, 0.6, 3.0, 2.3, 2.3, 0.6, 2.9, 0, 0, 0.05, 0.8, 1.6),
   scale = c("N", "N", "NT", "N", "N", "T", "NF", "NF", "NF", "NF", "const", "T", "N", "N", "NT", "N",
             "NT", "N", "NT", "NF", "T"),
   parallel = c(FALSE, TRUE, FALSE, FALSE, FALSE, FALSE, TRUE, TRUE, TRUE, TRUE, FALSE, FALSE, TRUE, TRUE,
-               FALSE, TRUE, FALSE, FALSE, FALSE, TRUE, FALSE),
+               TRUE, TRUE, FALSE, FALSE, FALSE, TRUE, FALSE),
   stringsAsFactors = FALSE)
 
 # Predicted seconds of every step for a design on `workers` workers, before
