@@ -32,15 +32,8 @@ unpack_on_worker <- function(p) {
   if (!inherits(p, "handmotion_packed")) return(p)
   p <- unclass(p)
   x <- p$shell
-  p_dofs <- length(x$dofs)
-  ends <- cumsum(as.numeric(p$n_frames) * p_dofs)
-  dn <- list(NULL, x$dofs)
-  recs <- lapply(seq_along(ends), function(i) {
-    n <- p$n_frames[i]
-    matrix(p$values[(ends[i] - n * p_dofs + 1):ends[i]], n, p_dofs, dimnames = dn)
-  })
-  names(recs) <- p$ids
-  x$recordings <- recs
+  # (in C, src/stack-values.c: each recording allocated and copied once)
+  x$recordings <- .Call(hm_unstack_values, p$values, p$n_frames, x$dofs, p$ids)
   structure(x, class = p$class)
 }
 

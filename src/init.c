@@ -25,7 +25,7 @@
   X(hm_motion_base, 3)                            /* motion-signals.c */   \
   X(hm_kernel_loo_lse, 2)                             /* kernel-loo.c */   \
   X(hm_kernel_score_lse, 4)                         /* kernel-score.c */   \
-  X(hm_stack_values, 2)                             /* stack-values.c */
+  X(hm_stack_values, 2) X(hm_unstack_values, 4)      /* stack-values.c */
 
 /* the argument lists of n SEXPs */
 #define HM_ARGS_1 SEXP

@@ -1,4 +1,6 @@
-/* The values of a list of double matrices one after the other (what
+/* Stacking recordings for a worker and unstacking them there (R/transport.R).
+ *
+ * The values of a list of double matrices one after the other (what
  * unlist(recordings, use.names = FALSE) gives), in one pass of memcpy():
  * packing a type's recordings for a worker (R/transport.R) with unlist()
  * took a second at ten times the default data, serially, before the first
@@ -56,5 +58,43 @@ SEXP hm_stack_values(SEXP recs, SEXP dofs) {
     v += m;
   }
   UNPROTECT(1);
+  return out;
+}
+
+/* The inverse on the worker: the recordings of `values` (stacked as above),
+ * `n_frames` rows each, with the columns `dofs` and the names `ids`. Each
+ * matrix is allocated once and filled by memcpy(), all sharing one dimnames
+ * list (marked immutable, so a change to one recording's dimnames copies
+ * it): matrix() over R-level slices of the values allocated every
+ * recording twice and took 1.7 s of the two workers' CPU at ten times the
+ * default data, on a machine where each fresh page costs microseconds. */
+SEXP hm_unstack_values(SEXP values, SEXP n_frames, SEXP dofs, SEXP ids) {
+  if (TYPEOF(values) != REALSXP || TYPEOF(n_frames) != INTSXP || TYPEOF(dofs) != STRSXP ||
+      (ids != R_NilValue && (TYPEOF(ids) != STRSXP || XLENGTH(ids) != XLENGTH(n_frames))))
+    Rf_error("hm_unstack_values: values (double), n_frames (integer), dofs and ids (character) expected");
+  R_xlen_t n = XLENGTH(n_frames), p = XLENGTH(dofs), total = 0;
+  const int *nf = INTEGER(n_frames);
+  for (R_xlen_t r = 0; r < n; r++) {
+    if (nf[r] == NA_INTEGER || nf[r] < 0) Rf_error("hm_unstack_values: frame count %lld is not a count", (long long) r + 1);
+    total += (R_xlen_t) nf[r] * p;
+  }
+  if (total != XLENGTH(values))
+    Rf_error("hm_unstack_values: %lld values for %lld expected", (long long) XLENGTH(values), (long long) total);
+  SEXP dn = PROTECT(allocVector(VECSXP, 2));
+  SET_VECTOR_ELT(dn, 1, dofs);
+  MARK_NOT_MUTABLE(dn);
+  SEXP out = PROTECT(allocVector(VECSXP, n));
+  const double *v = REAL(values);
+  for (R_xlen_t r = 0; r < n; r++) {
+    SEXP x = PROTECT(allocMatrix(REALSXP, nf[r], (int) p));
+    R_xlen_t m = (R_xlen_t) nf[r] * p;
+    if (m) memcpy(REAL(x), v, m * sizeof(double));
+    v += m;
+    setAttrib(x, R_DimNamesSymbol, dn);
+    SET_VECTOR_ELT(out, r, x);
+    UNPROTECT(1);
+  }
+  if (ids != R_NilValue) setAttrib(out, R_NamesSymbol, ids);
+  UNPROTECT(2);
   return out;
 }

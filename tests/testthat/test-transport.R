@@ -44,6 +44,25 @@ test_that("the compiled stacking is unlist() of plain recordings, NULL for any o
   expect_identical(.Call(hm_stack_values, recs, paste0(c("x", "y"), "")), unlist(recs, use.names = FALSE))
 })
 
+test_that("the compiled unstacking rebuilds the recordings, each with its own values", {
+  dofs <- c("x", "y")
+  plain <- function(m) { dimnames(m) <- list(NULL, dofs); m }
+  recs <- list(a = plain(matrix(1:6 + 0.5, 3)), b = plain(matrix(numeric(0), 0, 2)), c = plain(matrix(c(-1, 2), 1)))
+  values <- .Call(hm_stack_values, recs, dofs)
+  back <- .Call(hm_unstack_values, values, vapply(recs, nrow, integer(1)), dofs, names(recs))
+  expect_identical(back, recs)
+  expect_identical(.Call(hm_unstack_values, values, c(3L, 0L, 1L), dofs, NULL), unname(recs))
+  # the recordings share one dimnames list: renaming one column leaves the others as they were
+  colnames(back$a) <- c("x", "z")
+  expect_identical(colnames(back$c), dofs)
+  back$c[1, 1] <- 99
+  expect_identical(values[7], -1)
+  # counts that do not add up to the values, or are not counts, are refused
+  expect_error(.Call(hm_unstack_values, values, c(3L, 0L, 2L), dofs, NULL), "values for")
+  expect_error(.Call(hm_unstack_values, values, c(3L, NA, 1L), dofs, NULL), "not a count")
+  expect_error(.Call(hm_unstack_values, values, c(3L, 0L, 1L), dofs, "a"), "expected")
+})
+
 test_that("a set fitted without a temperature sample travels to workers (calibrate = FALSE)", {
   future::plan(future::multisession, workers = 2)
   on.exit(future::plan(future::sequential), add = TRUE)
