@@ -89,11 +89,7 @@ py_grasps_in <- function(values, n_frames, meta, dofs, rate, unit, levels = NULL
                          glove_name = NULL, switch = NULL) {
   if (!is.null(levels) && "grasp" %in% names(meta)) meta$grasp <- factor(meta$grasp, levels = levels)
   if (is.data.frame(glove)) glove <- glove_profile(glove, name = glove_name)
-  p <- length(dofs)
-  ends <- cumsum(n_frames * p)
-  starts <- ends - n_frames * p + 1
-  recs <- lapply(seq_along(n_frames), function(i)
-    matrix(values[seq.int(starts[i], length.out = n_frames[i] * p)], n_frames[i], p))
+  recs <- py_unstack(values, n_frames, dofs)
   x <- grasps(recs, meta = meta, dofs = dofs, rate = rate, unit = unit, glove = glove)
   # a recording's switch states, one per frame (NULL: it has none)
   for (i in seq_along(switch)) {
@@ -103,6 +99,28 @@ py_grasps_in <- function(values, n_frames, meta, dofs, rate, unit, levels = NULL
     }
   }
   x
+}
+
+# The recordings of the values Python stacked (n_frames[i] rows of the DoFs
+# each), cut apart by the routine the workers use (src/stack-values.c). The
+# counts come from Python, so they are checked here, with a classed error,
+# before the C routine trusts them.
+py_unstack <- function(values, n_frames, dofs, call = rlang::caller_env()) {
+  if (!is.character(dofs) || length(dofs) == 0L || anyNA(dofs)) {
+    hm_abort("{.arg dofs} must name at least one DoF, not {describe_value(dofs)}.", "bad_input",
+             argument = "dofs", call = call)
+  }
+  if (!is.numeric(n_frames) || anyNA(n_frames) || any(n_frames < 0 | n_frames != round(n_frames)) ||
+      any(n_frames > .Machine$integer.max)) {
+    hm_abort("{.arg n_frames} must be whole frame counts, one a recording.", "bad_input",
+             argument = "n_frames", call = call)
+  }
+  if (!is.numeric(values) || length(values) != sum(n_frames) * length(dofs)) {
+    hm_abort(c("{.arg values} must hold every frame of every DoF: {sum(n_frames)} frame{?s} of {length(dofs)} DoF{?s} are {sum(n_frames) * length(dofs)} value{?s}, not {length(values)}.",
+               i = "Each recording's values go column after column (Fortran order), recording after recording."),
+             "bad_input", argument = "values", call = call)
+  }
+  .Call(hm_unstack_values, as.double(values), as.integer(n_frames), dofs, NULL)
 }
 
 # The DoF names grasps() gives p unnamed columns (asked by Python's Grasps(), so

@@ -77,6 +77,27 @@ test_that("py_grasps_in() validates through grasps()", {
                class = "handmotion_error_bad_input")
 })
 
+test_that("py_grasps_in() refuses counts that do not match the values, before cutting them apart", {
+  meta <- data.frame(id = c("a", "b"))
+  # one value short, one too many: both named, with the arithmetic
+  expect_error(py_grasps_in(as.double(1:9), c(2L, 3L), meta, c("x", "y"), 50, "deg"),
+               class = "handmotion_error_bad_input", regexp = "5 frames of 2 DoFs are 10 values, not 9")
+  expect_error(py_grasps_in(as.double(1:11), c(2L, 3L), meta, c("x", "y"), 50, "deg"),
+               class = "handmotion_error_bad_input", regexp = "not 11")
+  # counts that are not counts (what the C routine must never see)
+  for (bad in list(c(2L, NA), c(-1L, 6L), c(2.5, 2.5), "5")) {
+    expect_error(py_grasps_in(as.double(1:10), bad, meta, c("x", "y"), 50, "deg"),
+                 class = "handmotion_error_bad_input", regexp = "n_frames")
+  }
+  expect_error(py_grasps_in(as.double(1:10), c(2L, 3L), meta, character(), 50, "deg"),
+               class = "handmotion_error_bad_input", regexp = "dofs")
+  # counts Python sends as doubles, values as integers: the same recordings
+  # (column-major, recording after recording)
+  x <- py_grasps_in(1:10, c(2, 3), meta, c("x", "y"), 50, "deg")
+  expect_identical(unname(x$recordings[[1]]), matrix(c(1, 2, 3, 4), 2))
+  expect_identical(unname(x$recordings[[2]]), matrix(5:10 + 0, 3))
+})
+
 test_that("the small helpers answer what Python asks", {
   expect_identical(py_default_dofs(16L), hust_dofs$name)
   expect_identical(py_default_dofs(3L), paste0("dof", 1:3))
