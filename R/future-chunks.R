@@ -10,9 +10,10 @@
 # (a multisession future is created when a worker is free, so the main
 # process packs chunk three during chunks one and two).
 #
-# Chunks: `chunks_per_worker` per worker (two measured best at ten times the
-# default data: the worker that finishes first takes the next chunk, so
-# neither idles long while the other finishes), balanced on `work` by
+# Chunks: `chunks_per_worker` per worker (three measured best at ten times
+# the default data: the worker that finishes first takes the next chunk, so
+# neither idles long while the other finishes; see fit_model_set() for the
+# figures), balanced on `work` by
 # placing the largest elements first, each in the chunk with the least work
 # so far. Each element runs with its own RNG stream (`streams`, L'Ecuyer-CMRG
 # seeds as element_streams() makes them), set as future.apply sets them, so
@@ -24,7 +25,7 @@
 # long as `elements`) arguments of each element. Returns the results in the
 # order of `elements`.
 future_map_chunks <- function(elements, FUN, more = list(), each = list(), streams = NULL,
-                              work = rep(1, length(elements)), chunks_per_worker = 2L) {
+                              work = rep(1, length(elements)), chunks_per_worker = 3L) {
   n <- length(elements)
   if (n == 0L) return(list())
   stopifnot(is.function(FUN), is.list(more), is.list(each), all(lengths(each) == n),

@@ -6,7 +6,7 @@
 #' Fit the generative model of every grasp type
 #'
 #' Splits `x` by grasp type and calls [fit_grasp_model()] on each type in
-#' futures (two per worker, each holding types of about equal work; one per
+#' futures (three per worker, each holding types of about equal work; one per
 #' type under a scheduler), so the types are fitted in parallel under
 #' whatever [future::plan()] the user has set (sequentially by default).
 #' A progress bar (one step per type, through `progressr`, so it works from
@@ -156,14 +156,19 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   names(fits) <- types
   cached <- if (is.null(paths)) rep(FALSE, length(types)) else file.exists(paths)
   fits[cached] <- lapply(paths[cached], readRDS)
-  # Two futures per worker, balanced on each type's work and packed as they
+  # Three futures per worker, balanced on each type's work and packed as they
   # start (future_map_chunks(), R/future-chunks.R). Measured at ten times the
   # default data on two quiet workers (89,100 recordings, one run each): one
   # future per type 36.4 s (each of 33 round trips left a worker idle while
   # the main process took its model in and sent the next type), one per
   # worker 32.5 s (every model came back at the end), two per worker
-  # 24.6-26.4 s, four 29.0 s. Each type keeps its own stream, so the models
-  # do not depend on the plan, the chunks or their order.
+  # 24.6-26.4 s, four 29.0 s. Later, with the compiled unstacking, two and
+  # three side by side, alternating (sequential 39.0-42.0 s): two 25.3-29.3 s
+  # (mean 27.3 of 14 runs), three 24.4-27.7 s (mean 25.9 of 9), four
+  # 26.4-28.8 s (3 runs): with two per worker the last two chunks
+  # were the largest, and one worker idled up to 3 s while the other finished
+  # its own. At the default size they tie (4.2 s). Each type keeps its own
+  # stream, so the models do not depend on the plan, the chunks or their order.
   todo <- which(!cached)
   # the recordings the temperature is fitted on: each type's worker scores
   # them under its model as soon as it has fitted it, so the main process
