@@ -58,9 +58,13 @@ machine_pace <- function() {
     c(cpu = t[["user.self"]] + t[["sys.self"]], elapsed = t[["elapsed"]])
   }, numeric(2))
   total_cpu <- max(1e-3, sum(rounds["cpu", ]))
-  total_elapsed <- max(total_cpu, sum(rounds["elapsed", ]))
   cpu <- max(1e-3, 2 * min(rounds["cpu", ]))
-  pace_summary(cpu, cpu * total_elapsed / total_cpu, load_average(), parallel::detectCores(),
+  # (the rounds' elapsed over CPU, at least 1: a round's CPU can exceed its
+  # elapsed time by a clock tick; as a ratio, so a CPU-bound run gives
+  # exactly `cpu`, where cpu * elapsed / cpu came out one rounding below it)
+  total_elapsed <- max(total_cpu, sum(rounds["elapsed", ]))
+  stretch <- total_elapsed / total_cpu
+  pace_summary(cpu, cpu * stretch, load_average(), parallel::detectCores(),
                others = (busy$after() - total_cpu) / total_elapsed)
 }
 
