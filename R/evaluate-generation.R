@@ -142,7 +142,9 @@ evaluate_generation <- function(models = NULL, held_out = NULL, training = NULL,
                "bad_input", argument = "recordings", call = call)
     }
     check_grasps(recordings, arg = "recordings", call = call)
-    return(evaluate_generation_folds(recordings, fit, split, folds, n, reps, overlong, seed, call))
+    # (recordings without a motion are said once, not by each fold's fits)
+    return(say_no_motion_once(evaluate_generation_folds(recordings, fit, split, folds, n, reps, overlong, seed, call),
+                              length(recordings)))
   }
   sets <- if (inherits(models, "grasp_models")) stats::setNames(list(models), model_set_name(models)) else models
   if (!is.list(sets) || !length(sets) || !all(vapply(sets, inherits, logical(1), "grasp_models")) ||

@@ -119,17 +119,24 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
   subj <- x$meta$subject
   groups <- make_folds(x, split, folds, seed, subjects = subjects, call = call)
 
-  fold_results <- with_progress_shown({
-    p <- hm_progressor(length(groups))
-    future.apply::future_lapply(seq_along(groups), function(f) {
-      # inside a fold the package's long calls count nothing: the fold is
-      # the step (on a worker, each inner fit would send its own steps back)
-      local_counted_outside()
-      res <- run_fold(x, groups[[f]], method, fit_args)
-      p(sprintf("fold %d of %d", f, length(groups)))
-      res
-    }, future.seed = TRUE)
-  })
+  # (recordings without a motion are said once for the set, not by every
+  # fold's fit and projection)
+  runs <- say_no_motion_once({
+    fold_results <- with_progress_shown({
+      p <- hm_progressor(length(groups))
+      future.apply::future_lapply(seq_along(groups), function(f) {
+        # inside a fold the package's long calls count nothing: the fold is
+        # the step (on a worker, each inner fit would send its own steps back)
+        local_counted_outside()
+        res <- run_fold(x, groups[[f]], method, fit_args)
+        p(sprintf("fold %d of %d", f, length(groups)))
+        res
+      }, future.seed = TRUE)
+    })
+    cl <- if (in_sample) classify(fit_quietly(x, method, fit_args), x)
+    list(folds = fold_results, in_sample = cl)
+  }, length(x))
+  fold_results <- runs$folds
 
   predictions <- do.call(rbind, lapply(seq_along(fold_results), function(f) {
     d <- fold_results[[f]]$predictions
@@ -153,7 +160,7 @@ evaluate_loso <- function(x, method = c("fpca", "last_frame", "discriminant", "w
   held <- new_confusion(predictions$truth, predictions$predicted, levels = lev)
   ins <- NULL
   if (in_sample) {
-    cl <- classify(fit_quietly(x, method, fit_args), x)
+    cl <- runs$in_sample
     ins <- new_confusion(cl$predictions$truth, cl$predictions$predicted, levels = lev)
   }
   structure(list(method = label %||% method, scheme = attr(groups, "scheme"), split = attr(groups, "split"),

@@ -102,7 +102,9 @@
 #' summary(ms)
 fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL,
                              distance = c("likelihood", "residual")) {
-  out <- fit_model_set(x, grasps, ..., seed = seed, cache = cache, distance = distance, call = rlang::caller_env())
+  # (recordings without a motion are said once for the set, not by each type)
+  out <- say_no_motion_once(fit_model_set(x, grasps, ..., seed = seed, cache = cache, distance = distance,
+                                          call = rlang::caller_env()), length(x))
   # types fitted from a pair of recordings, and types that could not be
   # fitted at all, are said here, not only in print() of the set
   warn_few_recordings(x[x$meta$grasp %in% names(out)])

@@ -95,10 +95,7 @@ trim_motion <- function(x, ...) {
   meta$trim_start <- m$start
   meta$trim_end <- m$end
   meta$motion_status <- m$status
-  if (any(!m$found)) {
-    cli::cli_inform(c("i" = "No motion found in {sum(!m$found)} of {nrow(m)} recording{?s}, kept whole: {.val {utils::head(paste0(m$id[!m$found], ' (', m$status[!m$found], ')'), 10)}}{if (sum(!m$found) > 10) ' ...' else ''}."),
-                    class = "handmotion_message_no_motion")
-  }
+  if (any(!m$found)) inform_no_motion(m$id[!m$found], m$status[!m$found], nrow(m))
   out <- new_grasps(recs, meta, x$dofs, x$rate, x$unit, glove = x$glove)
   attr(out, "motion") <- m
   out
