@@ -173,14 +173,17 @@ fit_grasp_classifier <- function(x, method = c("discriminant", "last_frame", "we
   warn_short_recordings(x, action = "fitted")
   warn_few_recordings(x)
   dots <- list(...)
-  # weighted_fpca passes what it does not take itself on to fit_grasp_models()
+  # weighted_fpca passes what it does not take itself on to fit_grasp_models(),
+  # which passes what it does not take on to fit_grasp_model() (checked
+  # against fit_grasp_models() alone, every model setting was refused)
   if (method == "weighted_fpca") {
-    check_dots_for(dots[!rlang::names2(dots) %in% c("models", "time")], fit_grasp_models,
-                   "fit_grasp_models", exclude = "x", call = call)
+    passed <- dots[!rlang::names2(dots) %in% c("models", "time", names(formals(fit_grasp_models)))]
+    check_dots_for(passed, fit_grasp_model, "fit_grasp_model", exclude = c("x", "grasp"), call = call)
   } else {
     check_dots_for(dots, fitter, "fit_grasp_classifier", exclude = c("x", "call"), call = call)
   }
-  fitter(x, ..., call = call)
+  # (recordings without a motion are said once, not by each type's fit)
+  say_no_motion_once(fitter(x, ..., call = call), length(x))
 }
 
 classifier_fitter <- function(method) {

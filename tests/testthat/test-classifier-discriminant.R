@@ -85,6 +85,9 @@ test_that("fit_grasp_classifier(method = ) gives each method's documented class,
                class = "handmotion_error_bad_input")
   expect_error(fit_grasp_classifier(g, method = "weighted_fpca", at = 0.5), "no argument",
                class = "handmotion_error_bad_input")
+  # weighted_fpca takes fit_grasp_models()'s arguments and the model settings it passes on
+  wg <- fit_grasp_classifier(g, method = "weighted_fpca", seed = 1, mixture_guard = "bic", ncomp = 3)
+  expect_equal(unique(vapply(unclass(wg$models$models), function(m) m$settings$ncomp, integer(1))), 3L)
   expect_error(fit_grasp_classifier(g, method = "lda"), "must be one of", class = "handmotion_error_bad_input")
   # classify() needs the fitted object and never refits
   expect_error(classify(g, g, method = "last_frame"), "must be fitted", class = "handmotion_error_bad_input")
