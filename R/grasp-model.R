@@ -270,10 +270,12 @@ fit_grasp_model <- function(x, grasp = NULL, ncomp = NULL, warp_ncomp = NULL, mi
   keep_data <- check_flag(keep_data, "keep_data", call = call)
   overlong <- as_overlong_rule(overlong, call = call)
   x <- select_one_type(x, grasp, call)
-  motion <- resolve_motion(x, motion, call = call)
+  # (every recording's motion found once, for the decision and the trim)
+  resolved <- resolve_motion_found(x, motion, call = call)
+  motion <- resolved$motion
   phases <- NULL
   if (motion == "trim") {
-    trimmed <- trim_motion(x)
+    trimmed <- with_motion_found(resolved$found, trim_motion(x))
     phases <- still_phases(x, attr(trimmed, "motion"))
     x <- trimmed
   }

@@ -145,7 +145,10 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   }
   # rest/hold trimming is decided once for the whole set, so every type's
   # model treats its recordings (and the recordings it classifies) alike
-  args$motion <- resolve_motion(x, args$motion %||% "auto", call = call)
+  # (and every recording's motion is found once, here: each type's fit and
+  # the temperature sample read it, R/segment-found-once.R)
+  motion <- resolve_motion_found(x, args$motion %||% "auto", call = call)
+  args$motion <- motion$motion
   seed <- check_seed(seed, call = call)
   # future's seeding switches the session to L'Ecuyer-CMRG; give the caller back their RNG
   old_rng <- save_rng()
@@ -176,7 +179,7 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   # them under its model as soon as it has fitted it, so the main process
   # does not score them under every model after the last type (at ten times
   # the default data, 2 s with both workers idle)
-  sample <- if (calibrate) temperature_sample(x, types, args$motion) else NULL
+  sample <- if (calibrate) with_motion_found(motion$found, temperature_sample(x, types, args$motion))
   sample_d <- vector("list", length(types))
   names(sample_d) <- types
   if (length(todo)) {
@@ -184,7 +187,8 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
     res <- with_progress_shown({
       p <- hm_progressor(length(todo))
       future_map_chunks(parts[todo], fit_one_type,
-                        each = list(save_to = (paths %||% rep(NA_character_, length(types)))[todo]),
+                        each = list(save_to = (paths %||% rep(NA_character_, length(types)))[todo],
+                                    found = lapply(parts[todo], type_motion_found, found = motion$found)),
                         more = list(args = args, progress = p, sample = sample, distance = distance),
                         streams = streams[todo], work = type_work(parts[todo]))
     })
@@ -226,6 +230,15 @@ models_degeneracies <- function(models) {
   do.call(rbind, c(list(empty_degenerate_notes()), rows))
 }
 
+# The rows of the set's find_motion() table (NULL: none) for one type's
+# recordings, to travel with them to the type's worker.
+type_motion_found <- function(part, found) {
+  if (is.null(found)) return(NULL)
+  out <- found[match(part$meta$id, found$id), , drop = FALSE]
+  rownames(out) <- NULL
+  out
+}
+
 # The work of fitting each set of recordings, for ordering: DTW and FPCA grow
 # with the frames, the number of recordings times their mean length.
 type_work <- function(parts) {
@@ -234,12 +247,14 @@ type_work <- function(parts) {
 
 # One type's fit for a worker. A top-level function, so the closure shipped to
 # workers does not drag the caller's frame (the whole data set) along.
-fit_one_type <- function(part, save_to, args, progress, sample = NULL, distance = "likelihood") {
+fit_one_type <- function(part, save_to, args, progress, sample = NULL, distance = "likelihood", found = NULL) {
   part <- unpack_on_worker(part)
   # (degenerate data is recorded in each model and said once for the set by
-  # fit_grasp_models(), not once per type)
+  # fit_grasp_models(), not once per type; the type's motion, found by the
+  # set's fit, is read, not found again)
   # (seed = NULL: the type's own stream, set by future.seed, not fit_grasp_model()'s default)
-  res <- tryCatch(withCallingHandlers(do.call(fit_grasp_model, c(list(part), args, seed = list(NULL))),
+  fit <- function() with_motion_found(found, do.call(fit_grasp_model, c(list(part), args, seed = list(NULL))))
+  res <- tryCatch(withCallingHandlers(fit(),
                                       handmotion_warning_degenerate = function(w) invokeRestart("muffleWarning")),
                   handmotion_error = function(e) e)
   # saved at once (not after the whole set), so an interrupted fit keeps it;

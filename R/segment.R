@@ -72,15 +72,24 @@ find_motion <- function(x, min_move = 12, min_still = 0.1) {
   check_some_recordings(x, what = "find motion in", call = call)
   min_move <- check_number(min_move, "min_move", min = 3, max = 1e6, call = call)
   min_still <- check_number(min_still, "min_still", min = 0, max = 60, call = call)
-  rows <- Map(motion_span, x$recordings, recorded_spacing(x), MoreArgs = list(
+  # the recordings whose motion the fit around this call has found already
+  # are read from its table (R/segment-found-once.R); the others are found
+  known <- known_motion(x, min_move, min_still)
+  todo <- which(is.na(known))
+  rows <- Map(motion_span, x$recordings[todo], recorded_spacing(x)[todo], MoreArgs = list(
     rate = x$rate, min_move = min_move, min_still = max(1L, round(min_still * x$rate))))
-  n <- x$meta$n_frames
+  n <- x$meta$n_frames[todo]
   start <- vapply(rows, `[[`, integer(1), "start")
   end <- vapply(rows, `[[`, integer(1), "end")
-  data.frame(id = x$meta$id, start = start, end = end, n_frames = n, rest = start - 1L,
-             hold = n - end, found = vapply(rows, `[[`, logical(1), "found"),
-             status = vapply(rows, `[[`, character(1), "status"),
-             lead = vapply(rows, `[[`, character(1), "lead"), stringsAsFactors = FALSE)
+  found <- data.frame(id = x$meta$id[todo], start = start, end = end, n_frames = n, rest = start - 1L,
+                      hold = n - end, found = vapply(rows, `[[`, logical(1), "found"),
+                      status = vapply(rows, `[[`, character(1), "status"),
+                      lead = vapply(rows, `[[`, character(1), "lead"), stringsAsFactors = FALSE)
+  if (length(todo) == length(x)) return(found)
+  out <- motion_found$table[known, , drop = FALSE]
+  out[todo, ] <- found
+  rownames(out) <- NULL
+  out
 }
 
 #' @rdname find_motion
@@ -175,12 +184,15 @@ motion_auto_share <- 0.35
 
 # "auto", "trim" or "as_recorded" for a set: auto measures the median still
 # share on up to 200 recordings, evenly spread (deterministic).
+# (resolve_motion_found() also finds every recording's motion when the set
+# is trimmed: R/segment-found-once.R)
 resolve_motion <- function(x, motion, call = rlang::caller_env()) {
-  motion <- check_choice(motion, c("auto", "trim", "as_recorded"), arg = "motion", call = call)
-  if (motion != "auto") return(motion)
-  if (length(x) == 0L) return("as_recorded")
-  idx <- evenly_spread(length(x), 200L)
-  m <- find_motion(x[idx])
+  resolve_motion_found(x, motion, call, find_all = FALSE)$motion
+}
+motion_auto_sample <- 200L
+
+# "auto"'s decision from the find_motion() table of a set's sample.
+auto_motion <- function(m) {
   if (stats::median((m$rest + m$hold) / m$n_frames) > motion_auto_share) "trim" else "as_recorded"
 }
 
