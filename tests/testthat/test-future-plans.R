@@ -69,6 +69,17 @@ test_that("evaluate_generation() on models fitted under every plan gives the sam
   for (p in names(res)[-1]) expect_identical(res[[p]], res$sequential, label = p)
 })
 
+test_that("a fit of trimmed recordings gives the same models on every plan (the motion found once travels)", {
+  skip_without_installed_workers()
+  planted <- plant_motion(n_rec = 24, p = 4, seed = 6)
+  res <- under_plans({
+    ms <- fit_grasp_models(planted$g, seed = 1)
+    lapply(fitted_models(ms), function(m) m[setdiff(names(m), "timing")])
+  }, plans = c("sequential", "multisession", "cluster"))
+  expect_equal(res$sequential[[1]]$settings$motion, "trim")
+  for (p in names(res)[-1]) expect_identical(res[[p]], res$sequential, label = p)
+})
+
 test_that("progress reaches a progressr handler from every plan: multisession, cluster, batchtools", {
   skip_without_installed_workers()
   skip_if_not_installed("progressr")
