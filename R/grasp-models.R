@@ -6,7 +6,7 @@
 #' Fit the generative model of every grasp type
 #'
 #' Splits `x` by grasp type and calls [fit_grasp_model()] on each type in
-#' futures (three per worker, each holding types of about equal work; one per
+#' futures (four per worker, falling in size so the workers finish together; one per
 #' type under a scheduler), so the types are fitted in parallel under
 #' whatever [future::plan()] the user has set (sequentially by default).
 #' A progress bar (one step per type, through `progressr`, so it works from
@@ -107,7 +107,7 @@ fit_grasp_models <- function(x, grasps = NULL, ..., seed = 1, cache = NULL,
                                           call = rlang::caller_env()), length(x))
   # types fitted from a pair of recordings, and types that could not be
   # fitted at all, are said here, not only in print() of the set
-  warn_few_recordings(x[x$meta$grasp %in% names(out)])
+  warn_few_recordings(x, types = names(out))
   failed <- failed_types(out)
   if (nrow(failed)) {
     hm_warn(c("{nrow(failed)} of the {length(out)} grasp type models could not be fitted and {?is/are} left out: {.val {failed$grasp}}.",
@@ -161,19 +161,20 @@ fit_model_set <- function(x, grasps = NULL, ..., seed = 1, cache = NULL, calibra
   names(fits) <- types
   cached <- if (is.null(paths)) rep(FALSE, length(types)) else file.exists(paths)
   fits[cached] <- lapply(paths[cached], readRDS)
-  # Three futures per worker, balanced on each type's work and packed as they
-  # start (future_map_chunks(), R/future-chunks.R). Measured at ten times the
-  # default data on two quiet workers (89,100 recordings, one run each): one
-  # future per type 36.4 s (each of 33 round trips left a worker idle while
-  # the main process took its model in and sent the next type), one per
-  # worker 32.5 s (every model came back at the end), two per worker
-  # 24.6-26.4 s, four 29.0 s. Later, with the compiled unstacking, two and
-  # three side by side, alternating (sequential 39.0-42.0 s): two 25.3-29.3 s
-  # (mean 27.3 of 14 runs), three 24.4-27.7 s (mean 25.9 of 9), four
-  # 26.4-28.8 s (3 runs): with two per worker the last two chunks
-  # were the largest, and one worker idled up to 3 s while the other finished
-  # its own. At the default size they tie (4.2 s). Each type keeps its own
-  # stream, so the models do not depend on the plan, the chunks or their order.
+  # Four rounds of futures per worker, falling in size, and packed as they
+  # start (future_map_chunks(), guided_chunks(), R/future-chunks.R).
+  # Measured at ten times the default data on two quiet workers (89,100
+  # recordings): one future per type 36.4 s (each of 33 round trips left a
+  # worker idle while the main process took its model in and sent the next
+  # type), one per worker 32.5 s (every model came back at the end), two
+  # equal chunks per worker 25.3-29.3 s (mean 27.3 of 14 runs), three 24.4-27.7
+  # s (mean 25.9 of 9), sequential 39.0-42.0 s. With chunks falling in size
+  # (and each chunk one global, polled every 0.05 s), fresh processes
+  # alternating: three rounds 25.0-27.3 s (4 runs), four 23.7-27.5 s (median
+  # 24.5 of 7), five 24.3-31.0 s (3), the equal three of the build before
+  # 24.4-26.3 s (mean 25.3 of 6), sequential 38.4-40.3 s. Each type keeps
+  # its own stream, so the models do not depend on the plan, the chunks or
+  # their order.
   todo <- which(!cached)
   # the recordings the temperature is fitted on: each type's worker scores
   # them under its model as soon as it has fitted it, so the main process
@@ -242,7 +243,7 @@ type_motion_found <- function(part, found) {
 # The work of fitting each set of recordings, for ordering: DTW and FPCA grow
 # with the frames, the number of recordings times their mean length.
 type_work <- function(parts) {
-  vapply(parts, function(pt) sum(vapply(pt$recordings, nrow, integer(1))), numeric(1))
+  vapply(parts, function(pt) sum(pt$meta$n_frames), numeric(1))
 }
 
 # One type's fit for a worker. A top-level function, so the closure shipped to

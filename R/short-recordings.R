@@ -26,10 +26,13 @@ warn_short_recordings <- function(x, arg = "x", action = "used") {
   invisible(ids)
 }
 
-# Warn (class few_recordings) naming the labelled types of `x` with fewer
-# than min_type_recordings recordings.
-warn_few_recordings <- function(x, arg = "x") {
+# Warn (class few_recordings) naming the labelled types of `x` (of `types`
+# only, when given: counted in the set's meta, not in a subset of it, which
+# at ten times the default data cost a copy of the set after every fit) with
+# fewer than min_type_recordings recordings.
+warn_few_recordings <- function(x, arg = "x", types = NULL) {
   n <- table(droplevels(as.factor(x$meta$grasp)))
+  if (!is.null(types)) n <- n[names(n) %in% types]
   few <- names(n)[n < min_type_recordings]
   if (!length(few)) return(invisible(character()))
   hm_warn(c("{.arg {arg}} has {length(few)} grasp type{?s} with fewer than {min_type_recordings} recordings, fitted all the same: {.val {few}}.",
