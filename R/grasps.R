@@ -318,30 +318,27 @@ validate_grasps <- function(x, arg = "x", call = rlang::caller_env(), finite = T
     dup <- if (is.character(ids)) unique(ids[duplicated(ids) | is.na(ids)]) else character()
     fault(paste0("recording ids ({.field meta$id}) must be unique strings", if (length(dup)) "; repeated or missing: {.val {dup}}." else "."))
   }
-  # builtins mapped over the recordings (a closure call per recording would
-  # cost more than all the checks): numeric matrices, their dimensions and
-  # column names, then their values (recordings_finite())
-  is_mat <- vapply(recs, is.matrix, NA) & vapply(recs, is.numeric, NA)
-  shape <- function(test, what) {
-    i <- which(test)
+  # every recording's first failed check, in one compiled pass
+  # (src/recording-checks.c; R-level vapply()s of is.matrix, dim, dimnames
+  # and sum took 0.39 s at ten times the default data)
+  n_frames <- meta$n_frames
+  if (!is.null(n_frames) && !is.numeric(n_frames)) n_frames <- suppressWarnings(as.numeric(n_frames))
+  codes <- .Call(hm_recording_faults, recs, dofs, n_frames, finite)
+  shape <- function(code, what) {
+    i <- which(codes == code)
     first <- ids[i[1]]
     more <- if (length(i) > 1L) sprintf(" (and %d more)", length(i) - 1L) else ""
     if (length(i)) fault(paste0("recording {.val {first}}", more, " ", what, "."), "bad_recording", recording = first)
   }
-  shape(!is_mat, "is not a numeric matrix")
-  dims <- matrix(vapply(recs, dim, integer(2)), nrow = 2L)
-  shape(dims[1, ] == 0L, "has no frames")
-  shape(dims[2, ] != length(dofs), "does not have one column per DoF ({length(dofs)})")
-  cols <- lapply(lapply(recs, dimnames), `[[`, 2L)
-  if (length(cols) && !identical(unique(cols), list(dofs))) {
-    shape(!vapply(cols, identical, NA, dofs), "has columns other than {.field dofs}")
-  }
-  if (!is.null(meta$n_frames)) shape(is.na(meta$n_frames) | meta$n_frames != dims[1, ], "has a {.field meta$n_frames} other than its frame count")
-  ok <- if (finite) recordings_finite(recs) else rep(TRUE, length(recs))
-  if (!all(ok)) {
-    i <- which(!ok)[1]
+  shape(1L, "is not a numeric matrix")
+  shape(2L, "has no frames")
+  shape(3L, "does not have one column per DoF ({length(dofs)})")
+  shape(4L, "has columns other than {.field dofs}")
+  shape(5L, "has a {.field meta$n_frames} other than its frame count")
+  if (any(codes == 6L)) {
+    i <- which(codes == 6L)[1]
     bad <- which(!is.finite(recs[[i]]), arr.ind = TRUE)
-    hm_abort(c("{.arg {arg}} has {sum(!ok)} recording{?s} with missing or infinite values.",
+    hm_abort(c("{.arg {arg}} has {sum(codes == 6L)} recording{?s} with missing or infinite values.",
                x = "First: recording {.val {ids[i]}}, frame {bad[1, 1]}, DoF {.val {dofs[bad[1, 2]]}}.",
                i = "Was it changed after it was built? {.fn grasps} refuses such values."),
              "bad_recording", argument = arg, recording = ids[i], call = call)
@@ -349,13 +346,11 @@ validate_grasps <- function(x, arg = "x", call = rlang::caller_env(), finite = T
   invisible(x)
 }
 
-# Which recordings (a list of matrices) hold only finite values: a sum per
-# recording (a builtin) is finite when every value is, so only the others
-# (and sums that overflow) are read value by value.
+# Which recordings (a list of numeric matrices) hold only finite values
+# (src/recording-checks.c: each read until its first missing or infinite
+# value).
 recordings_finite <- function(recs) {
-  ok <- is.finite(vapply(recs, sum, numeric(1), USE.NAMES = FALSE))
-  ok[!ok] <- vapply(recs[!ok], function(r) all(is.finite(r)), logical(1))
-  ok
+  .Call(hm_recording_faults, recs, NULL, NULL, TRUE) != 6L
 }
 
 #' @export

@@ -20,12 +20,13 @@
   X(hm_project_batch, 8) X(hm_project_warped, 8)  /* project-kernel.c */   \
   X(hm_lda_w2, 5)                                    /* lda-moments.c */   \
   X(hm_mmd_permutations, 3)                     /* mmd-permutations.c */   \
-  X(hm_channel_ranges, 2)                         /* channel-ranges.c */   \
+  X(hm_channel_ranges, 2) X(hm_channel_outside, 4) /* channel-ranges.c */   \
   X(hm_plain_text, 2)                                 /* plain-text.c */   \
   X(hm_motion_base, 3)                            /* motion-signals.c */   \
   X(hm_kernel_loo_lse, 2)                             /* kernel-loo.c */   \
   X(hm_kernel_score_lse, 4)                         /* kernel-score.c */   \
-  X(hm_stack_values, 2) X(hm_unstack_values, 4)      /* stack-values.c */
+  X(hm_stack_values, 2) X(hm_unstack_values, 4)      /* stack-values.c */ \
+  X(hm_recording_faults, 4)                     /* recording-checks.c */
 
 /* the argument lists of n SEXPs */
 #define HM_ARGS_1 SEXP
