@@ -139,3 +139,18 @@ test_that("print and autoplot of a skeleton", {
   expect_equal(length(unique(solid$piece[solid$kind == "bone"])), sum(hand_geometry()$segments$draw))
   expect_equal(nrow(b$data[[which(geoms == "GeomPoint")[1]]]), 25L)     # joints
 })
+
+test_that("the default skeleton is the installed file's, read once per session", {
+  path <- system.file("extdata", "handmotion-hand.xmlskel", package = "handmotion")
+  expect_identical(hand_skeleton(), read_skeleton(path))
+  expect_identical(default_skeleton$path, path)
+  # a later call returns what was read, without reading the file again
+  kept <- default_skeleton$skeleton
+  on.exit(default_skeleton$skeleton <- kept, add = TRUE)
+  default_skeleton$skeleton <- "what was read"
+  expect_identical(hand_skeleton(), "what was read")
+  # another installation's file is read afresh
+  default_skeleton$path <- "elsewhere"
+  expect_identical(hand_skeleton(), kept)
+  expect_identical(default_skeleton$path, path)
+})
