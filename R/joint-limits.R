@@ -49,13 +49,12 @@ recorded_limits <- function(x, dofs) {
              handmotion_error = function(e) NULL)
   }
   if (is.null(lim) || !nrow(lim)) lim <- empty[c("dof", "col", "lo", "hi", "joint")]
-  recs <- x$recordings
-  if (!all(vapply(recs, is.double, NA))) recs <- lapply(recs, `storage.mode<-`, "double")
+  recs <- double_recordings(x)
   if (nrow(lim)) {
     # (counted over the recordings in one compiled pass, src/channel-ranges.c:
     # stacking them with rbind() was a twentieth of a fit)
     outside <- .Call(hm_channel_outside, recs, as.integer(lim$col), as.double(lim$lo), as.double(lim$hi))
-    lim$recorded_outside <- outside / sum(vapply(recs, nrow, integer(1)))
+    lim$recorded_outside <- outside / sum(x$meta$n_frames)
     lim$enforced <- lim$recorded_outside <= limit_enforce_max_outside
     lim$source <- rep("skeleton", nrow(lim))
   } else {
@@ -72,13 +71,13 @@ recorded_limits <- function(x, dofs) {
 sensor_limits <- function(x, dofs, recs, exclude) {
   ch <- if (!is.null(x$glove)) match_glove(x$glove, dofs, x$unit)$channels else NULL
   if (is.null(ch)) return(NULL)
-  range <- .Call(hm_channel_ranges, recs, length(dofs))
+  range <- channel_ranges(recs)
   rows <- lapply(seq_along(dofs), function(j) {
     if (dofs[j] %in% exclude) return(NULL)
     declared <- !is.na(ch$min[j]) && !is.na(ch$max[j]) && ch$unit[j] == x$unit
     if (!declared && ch$unit[j] != "raw") return(NULL)
-    lo <- range[1, j]
-    hi <- range[2, j]
+    lo <- range$lo[[j]]
+    hi <- range$hi[[j]]
     if (declared) {
       lo <- max(lo, ch$min[j])
       hi <- min(hi, ch$max[j])

@@ -54,7 +54,9 @@ SEXP hm_channel_outside(SEXP recs, SEXP cols, SEXP lo_, SEXP hi_) {
   const double *lo = REAL(lo_), *hi = REAL(hi_);
   SEXP out = PROTECT(allocVector(REALSXP, K));
   double *count = REAL(out);
-  for (int k = 0; k < K; k++) count[k] = 0;
+  /* a limit without its column or bounds counts NA, as in R */
+  for (int k = 0; k < K; k++)
+    count[k] = col[k] == NA_INTEGER || ISNAN(lo[k]) || ISNAN(hi[k]) ? NA_REAL : 0;
   for (R_xlen_t r = 0; r < n; r++) {
     SEXP x = VECTOR_ELT(recs, r);
     if (TYPEOF(x) != REALSXP || !isMatrix(x))
@@ -62,10 +64,7 @@ SEXP hm_channel_outside(SEXP recs, SEXP cols, SEXP lo_, SEXP hi_) {
     int m = nrows(x), p = ncols(x);
     const double *v = REAL(x);
     for (int k = 0; k < K; k++) {
-      if (col[k] == NA_INTEGER || ISNAN(lo[k]) || ISNAN(hi[k])) {
-        count[k] = NA_REAL;
-        continue;
-      }
+      if (ISNA(count[k])) continue;
       if (col[k] < 1 || col[k] > p) error("hm_channel_outside: column %d of %d", col[k], p);
       const double *c = v + (R_xlen_t) (col[k] - 1) * m;
       double a = lo[k], b = hi[k], outside = 0;
