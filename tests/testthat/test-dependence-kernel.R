@@ -102,4 +102,11 @@ test_that("the compiled leave-one-out sums equal the R expression they replaced"
     diag(D2) <- Inf
     expect_identical(.Call(hm_kernel_loo_lse, D2, kernel_bandwidth_grid), ref(D2, kernel_bandwidth_grid))
   }
+  # clusters far apart in many dimensions (as a type's objects): most terms
+  # of a row are far below its largest, the ones the compiled sums skip
+  Y <- matrix(rnorm(300 * 30), 300) + 4 * rep(1:3, each = 100)
+  sq <- rowSums(Y^2)
+  D2 <- pmax(outer(sq, sq, `+`) - 2 * tcrossprod(Y), 0)
+  diag(D2) <- Inf
+  expect_identical(.Call(hm_kernel_loo_lse, D2, kernel_bandwidth_grid), ref(D2, kernel_bandwidth_grid))
 })
