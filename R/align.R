@@ -287,8 +287,13 @@ dba_with_drops <- function(recs, L, engine, max_iter, tol, max_stall, window,
     rownames(bw) <- names(recs)[kept[bad]]
     dropped_warps <- rbind(dropped_warps, bw)
     kept <- kept[!bad]
-    run <- subset_run(run, !bad)
-    if (length(kept) < 2L) break
+    # (the next round aligns the kept recordings again and replaces the run:
+    # only the last round's run is cut to them, not a type's whole warped
+    # curves copied every round)
+    if (length(kept) < 2L || round == max_rounds) {
+      run <- subset_run(run, !bad)
+      break
+    }
     if (restart) {
       template <- mean_linear_template(recs[kept], L)
       budget <- max_iter
@@ -344,22 +349,15 @@ constrain_degenerate <- function(fit, recs, L, engine, max_stall) {
   all <- c(fit$kept, flagged)
   ord <- order(all)
   run <- fit$run
-  run$warped <- abind_first(run$warped, extra$warped)[ord, , , drop = FALSE]
+  # (stacked and ordered in one compiled pass, src/array-rows.c: the type's
+  # whole warped curves were copied twice for its few recordings aligned alone)
+  run$warped <- .Call(hm_rows_of_two, run$warped, extra$warped, ord)
   run$warps <- rbind(run$warps, extra$warps)[ord, , drop = FALSE]
   run$distance <- c(run$distance, extra$distance)[ord]
   fit$run <- run
   fit$kept <- all[ord]
   fit$degenerate$fallback <- how
   fit
-}
-
-# Two arrays [n1, L, p] and [n2, L, p] stacked along the first dimension.
-abind_first <- function(a, b) {
-  d <- dim(a)
-  out <- array(0, c(d[1] + dim(b)[1], d[2], d[3]))
-  out[seq_len(d[1]), , ] <- a
-  out[d[1] + seq_len(dim(b)[1]), , ] <- b
-  out
 }
 
 subset_run <- function(run, keep) {

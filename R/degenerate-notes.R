@@ -90,7 +90,7 @@ alignment_degeneracies <- function(al, recs, window) {
     notes <- add_degenerate_note(notes, "one_frame", as.character(cli::pluralize(
       "{single} of {length(recs)} recordings {cli::qty(single)}ha{?s/ve} a single frame: no motion to align")))
   }
-  bad <- names(recs)[!vapply(recs, function(r) all(is.finite(r)), logical(1))]
+  bad <- names(recs)[!recordings_finite(recs)]
   if (length(bad)) {
     notes <- add_degenerate_note(notes, "non_finite", as.character(cli::pluralize(paste(
       "{length(bad)} of {length(recs)} recordings {cli::qty(length(bad))}hold{?s/} NaN or infinite values",

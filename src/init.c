@@ -26,7 +26,8 @@
   X(hm_kernel_loo_lse, 2)                             /* kernel-loo.c */   \
   X(hm_kernel_score_lse, 4)                         /* kernel-score.c */   \
   X(hm_stack_values, 2) X(hm_unstack_values, 4)      /* stack-values.c */ \
-  X(hm_recording_faults, 4)                     /* recording-checks.c */
+  X(hm_recording_faults, 4)                     /* recording-checks.c */ \
+  X(hm_rows_of_two, 3)                                /* array-rows.c */
 
 /* the argument lists of n SEXPs */
 #define HM_ARGS_1 SEXP

@@ -425,3 +425,23 @@ test_that("compiled shape features, linear mean and stalls equal the R versions"
   expect_identical(stall_lengths(warps), stall_lengths_r(warps))
   expect_identical(stall_lengths(warps[, 1, drop = FALSE]), rep(1L, 6))
 })
+
+test_that("the compiled merge of two arrays' rows is the R expression it replaced", {
+  stack_r <- function(a, b, ord) {
+    d <- dim(a)
+    out <- array(0, c(d[1] + dim(b)[1], d[-1]))
+    out[seq_len(d[1]), , ] <- a
+    out[d[1] + seq_len(dim(b)[1]), , ] <- b
+    out[ord, , , drop = FALSE]
+  }
+  set.seed(3)
+  a <- array(rnorm(7 * 5 * 3), c(7, 5, 3))
+  for (nb in 0:2) {
+    b <- array(rnorm(nb * 5 * 3), c(nb, 5, 3))
+    ord <- sample.int(7 + nb)
+    expect_identical(.Call(hm_rows_of_two, a, b, ord), stack_r(a, b, ord))
+  }
+  expect_error(.Call(hm_rows_of_two, a, array(0, c(1, 4, 3)), 1:8), "same further dimensions")
+  expect_error(.Call(hm_rows_of_two, a, array(0, c(1, 5, 3)), c(1:7, 9L)), "positions")
+  expect_error(.Call(hm_rows_of_two, a, array(0, c(1, 5, 3)), 1:7), "one position per row")
+})
