@@ -49,7 +49,8 @@ motion_sustain <- 3L         # a departure counts once it lasts 3 frames (spikes
 # floor too: see quantum_floor().
 channel_noise <- function(X, spacing = NA_real_) {
   X <- as_double_matrix(X)
-  noise_from_mad(X, .Call(hm_motion_base, X, 0L, noise_lag(spacing))$mad, spacing)
+  base <- .Call(hm_motion_base, X, 0L, noise_lag(spacing))
+  noise_from_mad(X, base$mad, base$floor, spacing)
 }
 
 # Recorded frames between the points of a second difference: 1 as recorded,
@@ -58,14 +59,18 @@ noise_lag <- function(spacing) if (is.finite(spacing)) max(1L, as.integer(round(
 
 # The noise sd per column from the MAD of its second differences (computed in
 # src/motion-signals.c; Inf for a channel too short to have one), scaled and
-# floored as above.
-noise_from_mad <- function(X, mad, spacing) {
+# floored as above. `floor`: the quantisation floor as recorded, per column
+# (the same C pass); on a resampled grid it is read from the flat frames
+# here (quantum_floor()).
+noise_from_mad <- function(X, mad, floor, spacing) {
   resampled <- is.finite(spacing)
   scale <- if (resampled) resampled_mad(spacing, noise_lag(spacing)) else 1
-  floor <- vapply(seq_len(ncol(X)), function(j) {
-    v <- X[, j]
-    quantum_floor(v[is.finite(v)], resampled)
-  }, numeric(1))
+  if (resampled) {
+    floor <- vapply(seq_len(ncol(X)), function(j) {
+      v <- X[, j]
+      quantum_floor(v[is.finite(v)], resampled)
+    }, numeric(1))
+  }
   stats::setNames(pmax(mad / sqrt(6) / scale, floor), colnames(X))
 }
 
@@ -156,15 +161,20 @@ motion_signals <- function(rec, rate, noise = NULL, spacing = NA_real_) {
   # the noise's MAD, in one compiled pass (src/motion-signals.c)
   base <- .Call(hm_motion_base, rec, rest_frames(rate), noise_lag(spacing))
   S <- base$S
-  if (is.null(noise)) noise <- noise_from_mad(rec, base$mad, spacing)
+  if (is.null(noise)) noise <- noise_from_mad(rec, base$mad, base$floor, spacing)
   n <- nrow(S)
   lag <- rate_lag(rate)
   D <- (S - rep(base$rest, each = n)) / rep(noise, each = n)
   R <- channel_rate(S, lag) / rep(noise * sqrt(2) / (2 * lag), each = n)
   held <- sustained(abs(D))
-  list(S = S, noise = noise, D = D, held = held, move = apply(held, 2, max), lag = lag, R = R,
-       peak_rate = apply(abs(R), 2, max))
+  # (column maxima, as apply(, 2, max), and the walks below in C:
+  # src/motion-walks.c)
+  list(S = S, noise = noise, D = D, held = held, move = col_max(held), lag = lag, R = R,
+       peak_rate = col_max(abs(R)))
 }
+
+# max() of each column of a double matrix.
+col_max <- function(X) stats::setNames(.Call(hm_col_max, X), colnames(X))
 
 # Per column, the smallest of each frame and the next `motion_sustain - 1`
 # frames: the level a departure keeps for `motion_sustain` frames.
@@ -194,24 +204,18 @@ moving_channels <- function(move, peak_rate, min_move) {
 # walk finds the slow start of a smooth reach that is still inside the noise
 # band of any one channel. Returns the onset and the channel that starts it.
 walk_back_onset <- function(sig, use, sure) {
-  a <- vapply(seq_along(use), function(i) {
-    d <- abs(sig$D[, use[i]])
-    t <- sure[i]
-    while (t > 1L && d[t - 1L] > motion_level_z) t <- t - 1L
-    t
-  }, numeric(1))
+  a <- .Call(hm_walk_back, abs(sig$D[, use, drop = FALSE]), as.integer(sure), rep(motion_level_z, length(use)))
   first <- which.min(a)
   # pool the channels that leave rest together with the first (within the
   # rate's half-width): a channel that starts later, such as a pressure pad
   # at contact, is still at rest there and would only dilute the rate
   lead <- which(a <= a[first] + sig$lag)
-  dir <- vapply(lead, function(i) sign(sig$D[sure[i], use[i]]), numeric(1))
+  dir <- sign(sig$D[cbind(sure[lead], use[lead])])
   w <- sig$move[use[lead]] / sqrt(sum(sig$move[use[lead]]^2))
   pooled <- as.numeric(sig$R[, use[lead], drop = FALSE] %*% (dir * w))
-  t <- a[first]
   thr <- max(motion_rate_share * max(pooled), motion_rate_z)
-  while (t > 1L && pooled[t - 1L] > thr) t <- t - 1L
-  list(onset = as.integer(t), lead = use[first])
+  t <- .Call(hm_walk_back, matrix(pooled), a[first], thr)
+  list(onset = t, lead = use[first])
 }
 
 # The end of a motion: for each moving channel, from its last frame at half
@@ -219,16 +223,11 @@ walk_back_onset <- function(sig, use, sure) {
 # its rate stays above `motion_rate_z` noise sds and `motion_rate_share` of its
 # peak; the latest of these. Slow creep while holding is not motion.
 walk_forward_end <- function(sig, use) {
-  n <- nrow(sig$R)
-  ends <- vapply(use, function(j) {
-    r <- abs(sig$R[, j])
-    pk <- max(r)
-    thr <- max(motion_rate_share * pk, motion_rate_z)
-    e <- max(which(r >= 0.5 * pk))
-    while (e < n && r[e + 1L] > thr) e <- e + 1L
-    e
-  }, numeric(1))
-  as.integer(max(ends))
+  r <- abs(sig$R[, use, drop = FALSE])
+  pk <- .Call(hm_col_max, r)
+  from <- .Call(hm_last_at_least, r, 0.5 * pk)
+  ends <- .Call(hm_walk_forward, r, from, pmax(motion_rate_share * pk, motion_rate_z))
+  max(ends)
 }
 
 # The motion of one recording: list(start, end, found, status, lead).
@@ -239,7 +238,7 @@ motion_span <- function(rec, rate, min_move, min_still, spacing = NA_real_) {
   sig <- motion_signals(rec, rate, spacing = spacing)
   use <- moving_channels(sig$move, sig$peak_rate, min_move)
   if (!length(use)) return(none("rest only"))
-  sure <- vapply(use, function(j) which(sig$held[, j] > motion_edge_share * sig$move[j])[1], integer(1))
+  sure <- .Call(hm_first_above, sig$held[, use, drop = FALSE], motion_edge_share * sig$move[use])
   on <- walk_back_onset(sig, use, sure)
   a <- on$onset
   b <- max(walk_forward_end(sig, use), a)

@@ -27,7 +27,9 @@
   X(hm_kernel_score_lse, 4)                         /* kernel-score.c */   \
   X(hm_stack_values, 2) X(hm_unstack_values, 4)      /* stack-values.c */ \
   X(hm_recording_faults, 4)                     /* recording-checks.c */ \
-  X(hm_rows_of_two, 3)                                /* array-rows.c */
+  X(hm_rows_of_two, 3)                                /* array-rows.c */ \
+  X(hm_first_above, 2) X(hm_last_at_least, 2) X(hm_walk_back, 3)          \
+  X(hm_walk_forward, 3) X(hm_col_max, 1)              /* motion-walks.c */
 
 /* the argument lists of n SEXPs */
 #define HM_ARGS_1 SEXP
