@@ -194,10 +194,8 @@ align_checked <- function(recs, L, engine, max_iter, tol, max_stall, window, fea
     # back to data units: the normalisation is affine per recording and DoF,
     # so the mean of the normalised matched frames maps to the raw mean
     # (x * scale + centre for all recordings at once: element [i, l, c]
-    # of the array is scaled by scale[i, c], in the array's own order)
-    per_frame <- rep(seq_len(ncol(norm$scale)), each = L)
-    warped <- warped * as.vector(norm$scale[kept, per_frame, drop = FALSE]) +
-      as.vector(norm$centre[kept, per_frame, drop = FALSE])
+    # of the array is scaled by scale[kept[i], c]; in C, src/dba-prep.c)
+    warped <- .Call(hm_unshape_warped, warped, norm$scale, norm$centre, as.integer(kept))
     template <- matrix(colMeans(warped, dims = 1L), L)
   } else {
     template <- feature_template

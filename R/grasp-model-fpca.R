@@ -5,11 +5,14 @@
 # not vary (a constant DoF or identical warps), so later steps never divide
 # by a zero variance.
 fit_fpca_or_constant <- function(Y, argvals, ncomp, engine, score_rule = "trapezoid") {
-  # total variance over time points (colSums rather than apply(Y, 2, var):
-  # this runs once per DoF and type)
+  # total variance over time points, sum(colSums((Y - rep(colMeans(Y), each
+  # = n))^2)) / (n - 1), and the mean square mean(Y^2), in one compiled pass
+  # (src/curve-spread.c; this runs once per DoF and type)
   n <- nrow(Y)
-  v <- if (n > 1L) sum(colSums((Y - rep(colMeans(Y), each = n))^2)) / (n - 1L) else NA_real_
-  scale <- max(1, mean(Y^2))
+  if (!is.double(Y)) storage.mode(Y) <- "double"
+  spread <- .Call(hm_curve_spread, Y)
+  v <- spread[1]
+  scale <- max(1, spread[2])
   if (!is.finite(v) || v <= 1e-12 * scale) {
     return(new_fpca_fit(mean = colMeans(Y), components = matrix(0, ncol(Y), ncomp),
                         scores = matrix(0, n, ncomp), eigenvalues = rep(0, ncomp),

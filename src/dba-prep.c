@@ -10,7 +10,14 @@
  *     R by linear_warp_function()); returns the L x p sum, R divides by N;
  *   hm_stall_lengths(warps)  per row of an N x L matrix of warping
  *     functions, the longest run of template frames held on one original
- *     frame (stall_lengths()).
+ *     frame (stall_lengths());
+ *   hm_unshape_warped(warped, scale, centre, kept)  the warped shape
+ *     features (n x L x p) back in data units, x * scale + centre with the
+ *     scale and centre of recording kept[i] and DoF c (align_checked(): in R
+ *     two n x Lp matrices expanded from N x p and four array temporaries,
+ *     14 ms a type of ten times the default data); the product and the sum
+ *     are separate passes, as R's two operations, so no compiler fuses them
+ *     into one rounding.
  *
  * Each reproduces the arithmetic of the R code it replaces, operation for
  * operation (long double where colMeans/colSums use it, sums in the same
@@ -156,6 +163,36 @@ SEXP hm_stall_lengths(SEXP warps) {
     }
     po[r] = best;
   }
+  UNPROTECT(1);
+  return out;
+}
+
+SEXP hm_unshape_warped(SEXP warped, SEXP scale, SEXP centre, SEXP kept) {
+  SEXP dim = getAttrib(warped, R_DimSymbol);
+  if (!isReal(warped) || LENGTH(dim) != 3) error("'warped' must be a double n x L x p array");
+  int n = INTEGER(dim)[0], L = INTEGER(dim)[1], p = INTEGER(dim)[2];
+  if (!isReal(scale) || !isReal(centre) || !isMatrix(scale) || !isMatrix(centre) ||
+      ncols(scale) != p || ncols(centre) != p || nrows(centre) != nrows(scale))
+    error("'scale' and 'centre' must be double matrices with one column per DoF");
+  if (!isInteger(kept) || LENGTH(kept) != n) error("'kept' must be integer, one per row of 'warped'");
+  int N = nrows(scale);
+  const int *kp = INTEGER(kept);
+  for (int i = 0; i < n; i++)
+    if (kp[i] == NA_INTEGER || kp[i] < 1 || kp[i] > N) error("'kept' must be rows of 'scale'");
+  const double *w = REAL(warped), *sc = REAL(scale), *ce = REAL(centre);
+  SEXP out = PROTECT(allocVector(REALSXP, XLENGTH(warped)));
+  double *o = REAL(out);
+  for (int c = 0; c < p; c++)
+    for (int l = 0; l < L; l++) {
+      R_xlen_t at = (R_xlen_t) n * ((R_xlen_t) c * L + l);
+      for (int i = 0; i < n; i++) o[at + i] = w[at + i] * sc[(kp[i] - 1) + (R_xlen_t) c * N];
+    }
+  for (int c = 0; c < p; c++)
+    for (int l = 0; l < L; l++) {
+      R_xlen_t at = (R_xlen_t) n * ((R_xlen_t) c * L + l);
+      for (int i = 0; i < n; i++) o[at + i] = o[at + i] + ce[(kp[i] - 1) + (R_xlen_t) c * N];
+    }
+  setAttrib(out, R_DimSymbol, duplicate(dim));
   UNPROTECT(1);
   return out;
 }

@@ -15,7 +15,7 @@
   X(hm_generate_batch, 14)                       /* generate-kernel.c */   \
   X(hm_gmm_em, 6) X(hm_gmm_kmeans, 3)                     /* gmm-em.c */   \
   X(hm_shape_features, 2) X(hm_linear_mean, 3) X(hm_stall_lengths, 1)      \
-                                                        /* dba-prep.c */   \
+  X(hm_unshape_warped, 4)                               /* dba-prep.c */   \
   X(hm_copula_draw, 4)                               /* copula-draw.c */   \
   X(hm_project_batch, 8) X(hm_project_warped, 8)  /* project-kernel.c */   \
   X(hm_lda_w2, 5)                                    /* lda-moments.c */   \
@@ -29,7 +29,8 @@
   X(hm_recording_faults, 4)                     /* recording-checks.c */ \
   X(hm_rows_of_two, 3)                                /* array-rows.c */ \
   X(hm_first_above, 2) X(hm_last_at_least, 2) X(hm_walk_back, 3)          \
-  X(hm_walk_forward, 3) X(hm_col_max, 1)              /* motion-walks.c */
+  X(hm_walk_forward, 3) X(hm_col_max, 1)              /* motion-walks.c */ \
+  X(hm_curve_spread, 1)                             /* curve-spread.c */
 
 /* the argument lists of n SEXPs */
 #define HM_ARGS_1 SEXP

@@ -445,3 +445,16 @@ test_that("the compiled merge of two arrays' rows is the R expression it replace
   expect_error(.Call(hm_rows_of_two, a, array(0, c(1, 5, 3)), c(1:7, 9L)), "positions")
   expect_error(.Call(hm_rows_of_two, a, array(0, c(1, 5, 3)), 1:7), "one position per row")
 })
+
+test_that("warped shape features go back to data units as the R expression took them", {
+  set.seed(8)
+  n_all <- 6; L <- 5; p <- 3
+  kept <- c(1L, 3L, 4L, 6L)
+  warped <- array(rnorm(length(kept) * L * p), c(length(kept), L, p))
+  scale <- matrix(runif(n_all * p, 0.5, 2), n_all, p)
+  centre <- matrix(rnorm(n_all * p), n_all, p)
+  per_frame <- rep(seq_len(p), each = L)
+  want <- warped * as.vector(scale[kept, per_frame, drop = FALSE]) + as.vector(centre[kept, per_frame, drop = FALSE])
+  expect_identical(.Call(hm_unshape_warped, warped, scale, centre, kept), want)
+  expect_error(.Call(hm_unshape_warped, warped, scale, centre, c(1L, 3L, 4L, 7L)), "rows of 'scale'")
+})

@@ -10,3 +10,16 @@ test_that("the sign convention makes refits on subsets comparable", {
     expect_gt(inner, 0.9)
   }
 })
+
+test_that("the compiled curve spread is the R expressions it replaced, to the bit", {
+  set.seed(21)
+  for (n in c(1L, 2L, 7L, 300L)) {
+    Y <- matrix(rnorm(n * 9, sd = 3) + 50, n, 9)
+    got <- .Call(hm_curve_spread, Y)
+    v <- if (n > 1L) sum(colSums((Y - rep(colMeans(Y), each = n))^2)) / (n - 1L) else NA_real_
+    expect_identical(got, c(v, mean(Y^2)))
+  }
+  # a constant DoF has no variance: the zero-component stand-in
+  fit <- fit_fpca_or_constant(matrix(2L, 5, 4), seq(0, 1, length.out = 4), 2, "fast")
+  expect_true(fit$constant)
+})
