@@ -17,46 +17,42 @@
 #include <R.h>
 #include <Rinternals.h>
 
-static void check_columns(SEXP X, SEXP v, const char *what) {
+static void check_columns(SEXP X, SEXP v, SEXPTYPE type, const char *what) {
   if (TYPEOF(X) != REALSXP || !isMatrix(X)) error("'X' must be a double matrix");
-  if (XLENGTH(v) != ncols(X)) error("'%s' must have one value per column of 'X'", what);
+  if (TYPEOF(v) != type || XLENGTH(v) != ncols(X))
+    error("'%s' must be %s, one value per column of 'X'", what, type == REALSXP ? "double" : "integer");
 }
 
-SEXP hm_first_above(SEXP X_, SEXP thr_) {
-  check_columns(X_, thr_, "thr");
+/* Per column, the first frame above thr (from_end 0) or the last frame at
+ * or above it (from_end 1); NA where there is none. */
+static SEXP find_frame(SEXP X_, SEXP thr_, int from_end) {
+  check_columns(X_, thr_, REALSXP, "thr");
   int n = nrows(X_), p = ncols(X_);
   const double *X = REAL(X_), *thr = REAL(thr_);
   SEXP out = PROTECT(allocVector(INTSXP, p));
   for (int j = 0; j < p; j++) {
     const double *x = X + (R_xlen_t) j * n;
     int at = NA_INTEGER;
-    for (int i = 0; i < n; i++) if (x[i] > thr[j]) { at = i + 1; break; }
+    for (int q = 0; q < n; q++) {
+      int i = from_end ? n - 1 - q : q;
+      if (from_end ? x[i] >= thr[j] : x[i] > thr[j]) {
+        at = i + 1;
+        break;
+      }
+    }
     INTEGER(out)[j] = at;
   }
   UNPROTECT(1);
   return out;
 }
 
-SEXP hm_last_at_least(SEXP X_, SEXP thr_) {
-  check_columns(X_, thr_, "thr");
-  int n = nrows(X_), p = ncols(X_);
-  const double *X = REAL(X_), *thr = REAL(thr_);
-  SEXP out = PROTECT(allocVector(INTSXP, p));
-  for (int j = 0; j < p; j++) {
-    const double *x = X + (R_xlen_t) j * n;
-    int at = NA_INTEGER;
-    for (int i = n - 1; i >= 0; i--) if (x[i] >= thr[j]) { at = i + 1; break; }
-    INTEGER(out)[j] = at;
-  }
-  UNPROTECT(1);
-  return out;
-}
+SEXP hm_first_above(SEXP X_, SEXP thr_) { return find_frame(X_, thr_, 0); }
+SEXP hm_last_at_least(SEXP X_, SEXP thr_) { return find_frame(X_, thr_, 1); }
 
 /* step -1: back, +1: forward */
 static SEXP walk(SEXP X_, SEXP start_, SEXP thr_, int step) {
-  check_columns(X_, start_, "start");
-  check_columns(X_, thr_, "thr");
-  if (TYPEOF(start_) != INTSXP) error("'start' must be integer");
+  check_columns(X_, start_, INTSXP, "start");
+  check_columns(X_, thr_, REALSXP, "thr");
   int n = nrows(X_), p = ncols(X_);
   const double *X = REAL(X_), *thr = REAL(thr_);
   const int *start = INTEGER(start_);
