@@ -192,7 +192,7 @@ distance_softmax <- function(d, temperature) {
   # (each row's largest by max.col(), not apply(): the temperature's search
   # takes this softmax some 30 times over its sample's distances, 0.1 s of
   # the serial end of a fit of the default data with apply())
-  top <- if (nrow(s)) s[cbind(seq_len(nrow(s)), max.col(s, ties.method = "first"))] else numeric(0)
+  top <- s[cbind(seq_len(nrow(s)), max.col(s, ties.method = "first"))]
   e <- exp(s - top)
   p <- e / rowSums(e)
   p[!is.finite(top), ] <- NA_real_

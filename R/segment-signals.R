@@ -224,7 +224,8 @@ walk_back_onset <- function(sig, use, sure) {
 # peak; the latest of these. Slow creep while holding is not motion.
 walk_forward_end <- function(sig, use) {
   r <- abs(sig$R[, use, drop = FALSE])
-  pk <- .Call(hm_col_max, r)
+  # (each channel's peak rate, max(abs(R[, j])), as motion_signals() found it)
+  pk <- unname(sig$peak_rate[use])
   from <- .Call(hm_last_at_least, r, 0.5 * pk)
   ends <- .Call(hm_walk_forward, r, from, pmax(motion_rate_share * pk, motion_rate_z))
   max(ends)
